@@ -1,0 +1,5 @@
+"""``python -m agrirecipe`` runs the command-line interface."""
+
+from agrirecipe.cli import main
+
+raise SystemExit(main())

@@ -1,0 +1,111 @@
+"""``generate()`` and :class:`Scene`: a recipe plus everything compiled from it."""
+
+from __future__ import annotations
+
+import functools
+from collections.abc import Sequence
+from pathlib import Path
+from typing import TYPE_CHECKING, Literal
+
+from agrirecipe._errors import ConfigurationError
+from agrirecipe._files import write_atomic
+from agrirecipe.recipe import SceneRecipe, dump_recipe, load_recipe
+
+if TYPE_CHECKING:
+    from agrirecipe.hierarchy import Hierarchy
+    from agrirecipe.knowledge import KnowledgeBase
+    from agrirecipe.layout import Layout
+    from agrirecipe.resolve import Explanation, Resolver
+
+__all__ = ["DEFAULT_BACKENDS", "ResolverName", "Scene", "generate"]
+
+ResolverName = Literal["auto", "rules", "embedding", "llm", "hybrid"]
+#: Backends ``Scene.write`` runs when none are named.
+DEFAULT_BACKENDS: tuple[str, ...] = ("unreal", "blender", "usd", "annotations")
+
+
+class Scene:
+    """A validated :class:`SceneRecipe` and its compiled outputs (computed on demand)."""
+
+    def __init__(self, recipe: SceneRecipe, *, explanation: Explanation | None = None) -> None:
+        self.recipe = recipe
+        self.explanation = explanation
+
+    @classmethod
+    def from_file(cls, path: str | Path, *, hierarchy: Hierarchy | None = None) -> Scene:
+        """A scene from a recipe file (validated; see :func:`agrirecipe.recipe.load_recipe`)."""
+        return cls(load_recipe(path, hierarchy=hierarchy))
+
+    @functools.cached_property
+    def layout(self) -> Layout:
+        """Every plant of every field, placed by the seeded layout kernel."""
+        from agrirecipe.layout import layout_scene
+
+        return layout_scene(self.recipe)
+
+    def script(self, backend: str) -> str:
+        """The generated script of a script backend (``"unreal"`` or ``"blender"``)."""
+        from agrirecipe.backends import get_backend
+
+        return get_backend(backend).script(self)
+
+    def write(
+        self,
+        directory: str | Path,
+        *,
+        backends: Sequence[str] | None = None,
+    ) -> list[Path]:
+        """Write ``recipe.json`` and every backend's outputs into ``directory``.
+
+        Each file is written atomically; the folder is created if needed.
+        """
+        from agrirecipe.backends import get_backend
+
+        names = tuple(DEFAULT_BACKENDS if backends is None else backends)
+        resolved = [get_backend(name) for name in names]  # unknown names fail before writing
+        folder = Path(directory)
+        if folder.exists() and not folder.is_dir():
+            raise ConfigurationError(
+                f"output path {str(folder)!r} exists and is not a folder", stage="write"
+            )
+        written = [write_atomic(folder / "recipe.json", dump_recipe(self.recipe))]
+        for backend in resolved:
+            written.extend(backend.write(self, folder))
+        return written
+
+    def __repr__(self) -> str:
+        crops = ", ".join(f"{f.variety} {f.crop}" for f in self.recipe.fields)
+        return f"Scene({len(self.recipe.fields)} field(s): {crops})"
+
+
+def generate(
+    prompt: str,
+    *,
+    seed: int = 0,
+    resolver: ResolverName | Resolver = "auto",
+    hierarchy: Hierarchy | str | Path | None = None,
+    knowledge: KnowledgeBase | str | Path | None = None,
+    latitude_deg: float | None = None,
+    explain: bool = False,
+) -> Scene:
+    """Turn a natural-language request into a :class:`Scene`.
+
+    ``resolver`` names the strategy ("rules", "embedding", "llm", "hybrid";
+    "auto" picks the best available offline) or is a resolver object.
+    ``hierarchy``/``knowledge`` default to the shipped files; a path loads a
+    user's own. ``latitude_deg`` places the scene (default: Belgium, 50.9 N)
+    unless the prompt says otherwise. With ``explain=True`` the scene's
+    ``explanation`` shows what each stage produced.
+    """
+    from agrirecipe.resolve import resolve
+
+    resolution = resolve(
+        prompt,
+        seed=seed,
+        resolver=resolver,
+        hierarchy=hierarchy,
+        knowledge=knowledge,
+        latitude_deg=latitude_deg,
+        explain=explain,
+    )
+    return Scene(resolution.recipe, explanation=resolution.explanation)
