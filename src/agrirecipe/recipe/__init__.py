@@ -1,4 +1,4 @@
-"""The scene recipe schema and its file format."""
+"""The scene recipe schema, its file format, and builders from resolved attributes."""
 
 from agrirecipe.recipe._io import (
     check_recipe,
