@@ -34,9 +34,7 @@ def register(subparsers: Any) -> None:
     )
     parser.add_argument("--hierarchy", type=Path, help="a custom hierarchy.yaml")
     parser.add_argument("--latitude", type=float, default=None, help="scene latitude in degrees")
-    parser.add_argument(
-        "--explain", action="store_true", help="show what each stage produced"
-    )
+    parser.add_argument("--explain", action="store_true", help="show what each stage produced")
     parser.set_defaults(handler=run)
 
 

@@ -203,7 +203,9 @@ class Hierarchy:
             ("seasons", list(self.seasons)),
             ("health", list(self.health)),
         ]
-        groups += [(f"varieties of {c.name}", [v.name for v in c.varieties]) for c in self.crops.values()]
+        groups += [
+            (f"varieties of {c.name}", [v.name for v in c.varieties]) for c in self.crops.values()
+        ]
         for label, names in groups:
             seen: dict[str, str] = {}
             for name in names:
@@ -311,9 +313,7 @@ class Hierarchy:
         try:
             spec = _HierarchyFile.model_validate(spec.model_dump())
         except ValidationError as exc:
-            raise HierarchyError(
-                _first_error(exc), stage="hierarchy", path="content_root"
-            ) from exc
+            raise HierarchyError(_first_error(exc), stage="hierarchy", path="content_root") from exc
         return Hierarchy(spec, source=self.source)
 
     @functools.cached_property

@@ -78,14 +78,20 @@ class KnowledgeEntry:
 def _deep_merge(base: dict[str, Any], override: Mapping[str, Any]) -> dict[str, Any]:
     merged = copy.deepcopy(base)
     for name, value in override.items():
-        if isinstance(value, Mapping) and isinstance(merged.get(name), dict) and "value" not in value:
+        if (
+            isinstance(value, Mapping)
+            and isinstance(merged.get(name), dict)
+            and "value" not in value
+        ):
             merged[name] = _deep_merge(merged[name], value)
         else:
             merged[name] = copy.deepcopy(value)
     return merged
 
 
-def _blend(a: tuple[float, float, float], b: tuple[float, float, float], t: float) -> tuple[float, float, float]:
+def _blend(
+    a: tuple[float, float, float], b: tuple[float, float, float], t: float
+) -> tuple[float, float, float]:
     return (
         round(a[0] + (b[0] - a[0]) * t, 4),
         round(a[1] + (b[1] - a[1]) * t, 4),
@@ -96,7 +102,9 @@ def _blend(a: tuple[float, float, float], b: tuple[float, float, float], t: floa
 class KnowledgeBase:
     """Crop knowledge for every crop of a hierarchy."""
 
-    def __init__(self, raw_files: Mapping[str, dict[str, Any]], hierarchy: Hierarchy, *, source: str) -> None:
+    def __init__(
+        self, raw_files: Mapping[str, dict[str, Any]], hierarchy: Hierarchy, *, source: str
+    ) -> None:
         self.hierarchy = hierarchy
         self.source = source
         self._raw = dict(raw_files)
@@ -176,7 +184,9 @@ class KnowledgeBase:
         first = self.hierarchy.crop(crop).varieties[0].name
         return self._files[(crop, first)].default_variety.value
 
-    def plausible_stages(self, crop: str, season: str, variety: str | None = None) -> tuple[Stage, ...]:
+    def plausible_stages(
+        self, crop: str, season: str, variety: str | None = None
+    ) -> tuple[Stage, ...]:
         """Stages the crop is plausibly in during ``season`` (typical first); may be empty."""
         entry = self.crop_file(crop, variety)
         return entry.seasons[_season(season)].stages
@@ -270,9 +280,18 @@ class KnowledgeBase:
         deciduous = entry.leaf_habit == "deciduous"
         if deciduous and key.season == "Winter":
             foliage, foliage_rgb = "leafless", _BARK_RGB
-        elif deciduous and key.season == "Fall" and key.stage != "Reproductive" and colours.autumn_rgb:
+        elif (
+            deciduous
+            and key.season == "Fall"
+            and key.stage != "Reproductive"
+            and colours.autumn_rgb
+        ):
             foliage, foliage_rgb = "autumn", colours.autumn_rgb.value
-        elif key.stage == "Reproductive" and colours.flower_rgb and key.season in ("Spring", "Summer"):
+        elif (
+            key.stage == "Reproductive"
+            and colours.flower_rgb
+            and key.season in ("Spring", "Summer")
+        ):
             foliage = "flowering"
         elif key.stage == "Maturation" and colours.mature_rgb:
             foliage, foliage_rgb = "senescent", colours.mature_rgb.value
@@ -282,7 +301,7 @@ class KnowledgeBase:
             foliage = "budding"
         else:
             foliage = "leafy"
-        height = entry.max_height_m.value * entry.stage_height_fraction[key.stage].value
+        height = entry.max_height_m.value * entry.stage_height_fraction[_stage(key.stage)].value
         disease = sign = None
         if key.health == "Ill":
             tint = _CHLOROTIC_RGB if entry.disease.ill_tint == "chlorotic" else _NECROTIC_RGB
@@ -300,7 +319,7 @@ class KnowledgeBase:
                     entry.max_height_m,
                     entry.canopy_width_m,
                     entry.kc_mid,
-                    entry.stage_height_fraction[key.stage],
+                    entry.stage_height_fraction[_stage(key.stage)],
                 )
                 for part in value.source.split(",")
             }
@@ -335,6 +354,16 @@ class KnowledgeBase:
         return f"KnowledgeBase({self.source!r}, {len(self.hierarchy.crops)} crops)"
 
 
+def _stage(value: str) -> Stage:
+    if value not in ("Vegetative", "Reproductive", "Maturation"):
+        raise KnowledgeBaseError(
+            f"{value!r} is not a growth stage",
+            stage="knowledge",
+            hint="Vegetative, Reproductive, Maturation",
+        )
+    return value  # type: ignore[return-value]
+
+
 def _season(value: str) -> Season:
     if value not in ("Spring", "Summer", "Fall", "Winter"):
         raise KnowledgeBaseError(
@@ -350,7 +379,9 @@ def load_knowledge_base(
     hierarchy = hierarchy or default_hierarchy()
     folder = Path(crops_dir) if crops_dir is not None else data_path("crops")
     if not folder.is_dir():
-        raise KnowledgeBaseError(f"crop knowledge folder {str(folder)!r} does not exist", stage="knowledge")
+        raise KnowledgeBaseError(
+            f"crop knowledge folder {str(folder)!r} does not exist", stage="knowledge"
+        )
     raw_files: dict[str, dict[str, Any]] = {}
     for file in sorted(folder.glob("*.yaml")):
         try:

@@ -36,7 +36,16 @@ class Sourced(_Strict, Generic[T]):
     @field_validator("source")
     @classmethod
     def _known_source(cls, source: str) -> str:
-        allowed_words = {"est.", "n/a", "F11", "F12", "AQ", "crops.md A", "crops.md B", "crops.md C"}
+        allowed_words = {
+            "est.",
+            "n/a",
+            "F11",
+            "F12",
+            "AQ",
+            "crops.md A",
+            "crops.md B",
+            "crops.md C",
+        }
         parts = [part.strip() for part in source.split(",")]
         for part in parts:
             if part not in allowed_words and not part.isdigit():
@@ -121,4 +130,3 @@ class CropFile(_Strict):
         if missing:
             raise ValueError(f"missing stages: {', '.join(sorted(missing))}")
         return value
-

@@ -9,7 +9,11 @@ __all__ = ["cache_dir"]
 
 
 def cache_dir(override: str | Path | None = None) -> Path:
-    """The cache folder: the argument, else ``AGRIRECIPE_CACHE_DIR``, else ``~/.cache/agrirecipe``."""
+    """The cache folder.
+
+    The argument, else ``AGRIRECIPE_CACHE_DIR``, else ``$XDG_CACHE_HOME/agrirecipe``
+    (``~/.cache/agrirecipe``).
+    """
     if override is not None:
         path = Path(override)
     elif os.environ.get("AGRIRECIPE_CACHE_DIR"):

@@ -79,7 +79,7 @@ class SentenceTransformerEmbedder:
 
     @property
     def model_id(self) -> str:
-        """Model folder name plus a hash of its weights' size and config (stable across machines)."""
+        """Model folder name plus a hash of its config and weight sizes (stable across machines)."""
         path = self.path
         config = path / "config.json"
         weights = sorted(path.glob("*.safetensors")) or sorted(path.glob("*.bin"))
@@ -114,9 +114,7 @@ class SentenceTransformerEmbedder:
                     hint="pip install 'agrirecipe[embedding]'",
                 ) from exc
             try:
-                self._model = SentenceTransformer(
-                    str(path), device="cpu", local_files_only=True
-                )
+                self._model = SentenceTransformer(str(path), device="cpu", local_files_only=True)
             except (OSError, ValueError, RuntimeError) as exc:
                 raise ModelError(
                     f"could not load the embedding model at {str(path)!r}: {exc}", stage="embedding"

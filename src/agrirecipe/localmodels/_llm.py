@@ -129,7 +129,7 @@ class LlamaCppModel:
     def _grammar(self, grammar: str) -> Any:
         cached = self._grammars.get(grammar)
         if cached is None:
-            from llama_cpp import LlamaGrammar
+            from llama_cpp.llama_grammar import LlamaGrammar
 
             try:
                 cached = LlamaGrammar.from_string(grammar, verbose=False)

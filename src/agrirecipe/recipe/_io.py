@@ -30,7 +30,9 @@ __all__ = [
     "schema_text",
 ]
 
-_SUBPATH = re.compile(r"^(?:Value error, )?([A-Za-z_][\w]*(?:\[\d+\])?(?:\.[A-Za-z_]\w*(?:\[\d+\])?)*): (.*)$", re.S)
+_SUBPATH = re.compile(
+    r"^(?:Value error, )?([A-Za-z_][\w]*(?:\[\d+\])?(?:\.[A-Za-z_]\w*(?:\[\d+\])?)*): (.*)$", re.S
+)
 
 
 def recipe_json_schema() -> dict[str, Any]:

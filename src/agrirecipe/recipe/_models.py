@@ -62,7 +62,9 @@ PlantingPattern = Literal[
 ]
 GrowthForm = Literal["tree", "vine", "bush", "row_crop", "leafy_head", "cereal"]
 LeafHabit = Literal["deciduous", "evergreen", "perennial", "annual", "biennial"]
-FoliageState = Literal["leafless", "budding", "leafy", "flowering", "fruiting", "autumn", "senescent"]
+FoliageState = Literal[
+    "leafless", "budding", "leafy", "flowering", "fruiting", "autumn", "senescent"
+]
 AttributeName = Literal["category", "crop", "variety", "stage", "season", "health", "size"]
 RelationKind = Literal["north_of", "south_of", "east_of", "west_of", "next_to", "between"]
 
@@ -239,9 +241,7 @@ class FieldSpec(_Frozen):
             )
         overlap = set(self.stated) & set(self.inferred)
         if overlap:
-            raise ValueError(
-                f"stated: {sorted(overlap)} cannot be both stated and inferred"
-            )
+            raise ValueError(f"stated: {sorted(overlap)} cannot be both stated and inferred")
         return self
 
     @property
@@ -253,8 +253,8 @@ class FieldSpec(_Frozen):
         bed_span = agronomy.bed_row_spacing_m * (agronomy.rows_per_bed - 1)
         usable_w = width - 2 * headland - bed_span
         usable_l = length - 2 * headland
-        beds = int(math.floor(usable_w / agronomy.row_spacing_m + 1e-9)) + 1
-        per_row = int(math.floor(usable_l / agronomy.in_row_spacing_m + 1e-9)) + 1
+        beds = math.floor(usable_w / agronomy.row_spacing_m + 1e-9) + 1
+        per_row = math.floor(usable_l / agronomy.in_row_spacing_m + 1e-9) + 1
         return beds * agronomy.rows_per_bed * per_row
 
 
@@ -263,7 +263,9 @@ class Relation(_Frozen):
 
     kind: RelationKind
     subject: str = Field(pattern=_FIELD_ID)
-    objects: tuple[Annotated[str, Field(pattern=_FIELD_ID)], ...] = Field(min_length=1, max_length=2)
+    objects: tuple[Annotated[str, Field(pattern=_FIELD_ID)], ...] = Field(
+        min_length=1, max_length=2
+    )
 
     @model_validator(mode="after")
     def _arity(self) -> Relation:
@@ -278,7 +280,7 @@ class Relation(_Frozen):
 class SceneRecipe(_Frozen):
     """A complete, validated description of an agricultural scene."""
 
-    schema_version: Literal["1.0"] = SCHEMA_VERSION
+    schema_version: Literal["1.0"] = "1.0"
     prompt: str = Field(description="The request this recipe was generated from.")
     seed: int = Field(ge=0, lt=2**63)
     units: Literal["metres"] = "metres"
