@@ -1,0 +1,45 @@
+"""Prompt -> recipe: decompose, normalise, retrieve, validate, enrich.
+
+:func:`resolve` is what :func:`agrirecipe.generate` calls. A strategy
+(:class:`Resolver`, chosen by name: "rules", "embedding", "llm", "hybrid",
+"auto") turns the prompt into a :class:`SceneIntent`; the shared pipeline
+turns that into a validated :class:`~agrirecipe.recipe.SceneRecipe`.
+"""
+
+from agrirecipe.resolve._explain import Explanation
+from agrirecipe.resolve._intent import (
+    Candidate,
+    FieldIntent,
+    Hemisphere,
+    RelationIntent,
+    ResolveContext,
+    Resolver,
+    SceneIntent,
+    SizeIntent,
+    TraceStep,
+)
+from agrirecipe.resolve._registry import (
+    BUILTIN_RESOLVERS,
+    available_resolvers,
+    get_resolver,
+    register_resolver,
+    resolve_resolver_name,
+)
+
+__all__ = [
+    "BUILTIN_RESOLVERS",
+    "Candidate",
+    "Explanation",
+    "FieldIntent",
+    "Hemisphere",
+    "RelationIntent",
+    "ResolveContext",
+    "Resolver",
+    "SceneIntent",
+    "SizeIntent",
+    "TraceStep",
+    "available_resolvers",
+    "get_resolver",
+    "register_resolver",
+    "resolve_resolver_name",
+]
