@@ -1,0 +1,204 @@
+"""Every plant of a recipe, placed by the shared kernel (fast numpy path, identical results).
+
+:func:`field_parameters` turns a recipe into one JSON-able dict per field: all
+that :func:`~agrirecipe.layout._kernel.place_field` needs. Engine scripts embed
+those dicts and the kernel's source (:func:`kernel_source`); the library runs
+the same computation vectorised with numpy. The numpy path reproduces the
+kernel bit for bit: it starts numpy's Mersenne Twister from the exact state of
+``random.Random(seed)`` (the legacy ``RandomState.random_sample`` builds a
+double from two 32-bit words exactly like ``random.random``), draws the same
+numbers in the same order, and evaluates the same IEEE-754 expressions with the
+same grouping. Trigonometry is only done on scalars with :mod:`math`, as in the
+kernel. The tests compare the two paths for equality, not closeness.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import inspect
+import math
+import random
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from agrirecipe._errors import RecipeValidationError
+from agrirecipe.layout import _kernel
+from agrirecipe.recipe import FieldSpec, SceneRecipe
+
+__all__ = [
+    "FieldPlants",
+    "Layout",
+    "field_parameters",
+    "field_seed",
+    "kernel_source",
+    "layout_scene",
+    "place_field_array",
+]
+
+FloatArray = NDArray[np.float64]
+
+
+def field_seed(recipe_seed: int, field_id: str) -> int:
+    """The 64-bit kernel seed of one field: stable across processes (SHA-256, not ``hash()``)."""
+    digest = hashlib.sha256(f"agrirecipe/layout/{recipe_seed}/{field_id}".encode()).digest()
+    return int.from_bytes(digest[:8], "big")
+
+
+def _parameters(spec: FieldSpec, recipe_seed: int) -> dict[str, Any]:
+    geometry, agronomy, placement = spec.geometry, spec.agronomy, spec.placement
+    return {
+        "id": spec.id,
+        "seed": field_seed(recipe_seed, spec.id),
+        "origin_m": [geometry.origin_m[0], geometry.origin_m[1]],
+        "size_m": [geometry.size_m[0], geometry.size_m[1]],
+        "rotation_deg": geometry.rotation_deg,
+        "headland_m": geometry.headland_m,
+        "pattern": agronomy.planting_pattern,
+        "row_spacing_m": agronomy.row_spacing_m,
+        "rows_per_bed": agronomy.rows_per_bed,
+        "bed_row_spacing_m": agronomy.bed_row_spacing_m,
+        "in_row_spacing_m": agronomy.in_row_spacing_m,
+        "plant_height_m": agronomy.plant_height_m,
+        "jitter_m": placement.jitter_m,
+        "missing_rate": placement.missing_rate,
+        "size_variation": placement.size_variation,
+        "yaw_variation_deg": placement.yaw_variation_deg,
+    }
+
+
+def field_parameters(recipe: SceneRecipe) -> list[dict[str, Any]]:
+    """One JSON-able dict per field, in recipe order: the kernel's whole input.
+
+    Each dict carries the field's ``"id"`` and its ``"seed"`` (:func:`field_seed`).
+    """
+    return [_parameters(spec, recipe.seed) for spec in recipe.fields]
+
+
+def kernel_source() -> str:
+    """The placement kernel's source text, to inline verbatim into engine scripts.
+
+    Executing it in a fresh namespace defines ``place_field``,
+    ``iter_field_plants`` and ``plant_grid`` (standard library only).
+    """
+    return inspect.getsource(_kernel)
+
+
+def place_field_array(
+    params: dict[str, Any],
+) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
+    """:func:`place_field` vectorised: ``(xyz (n, 3), yaw_rad, scale, height_m)``, bit-identical."""
+    beds, rows_per_bed, per_row, x_start, y_start = _kernel.plant_grid(params)
+    row_spacing = float(params["row_spacing_m"])
+    bed_row_spacing = float(params["bed_row_spacing_m"])
+    in_row = float(params["in_row_spacing_m"])
+    origin_x, origin_y = float(params["origin_m"][0]), float(params["origin_m"][1])
+    rotation = math.radians(float(params["rotation_deg"]))
+    cos_r, sin_r = math.cos(rotation), math.sin(rotation)
+    jitter = float(params["jitter_m"])
+    missing_rate = float(params["missing_rate"])
+    size_variation = float(params["size_variation"])
+    yaw_max = math.radians(float(params["yaw_variation_deg"]))
+    plant_height = float(params["plant_height_m"])
+
+    count = beds * rows_per_bed * per_row
+    draws = _random_stream(int(params["seed"]), count * _kernel.KERNEL_DRAWS_PER_POSITION)
+    draws = draws.reshape(count, _kernel.KERNEL_DRAWS_PER_POSITION)
+    kept = draws[:, 0] >= missing_rate  # the kernel skips u_missing < missing_rate
+    u_x, u_y, u_yaw, u_scale = (draws[kept, column] for column in range(1, 5))
+    del draws
+
+    # local_x = x_start + bed * row_spacing + row * bed_row_spacing, in that order.
+    bed_index = np.arange(beds, dtype=np.float64)[:, None]
+    row_index = np.arange(rows_per_bed, dtype=np.float64)[None, :]
+    row_x = ((x_start + bed_index * row_spacing) + row_index * bed_row_spacing).ravel()
+    step_y = y_start + np.arange(per_row, dtype=np.float64) * in_row
+    local_x = np.repeat(row_x, per_row)[kept]
+    local_y = np.tile(step_y, beds * rows_per_bed)[kept]
+
+    px = local_x + (2.0 * u_x - 1.0) * jitter
+    py = local_y + (2.0 * u_y - 1.0) * jitter
+    xyz = np.zeros((px.shape[0], 3), dtype=np.float64)
+    xyz[:, 0] = origin_x + (px * cos_r - py * sin_r)
+    xyz[:, 1] = origin_y + (px * sin_r + py * cos_r)
+    yaw = rotation + (2.0 * u_yaw - 1.0) * yaw_max
+    scale = 1.0 + size_variation * ((2.0 * u_scale - 1.0) * _kernel._KERNEL_SQRT3)
+    scale = np.maximum(scale, _kernel.KERNEL_MIN_SCALE)
+    height = plant_height * scale
+    return xyz, yaw, scale, height
+
+
+def _random_stream(seed: int, size: int) -> FloatArray:
+    """``[random.Random(seed).random() for _ in range(size)]``, computed by numpy."""
+    _version, internal, _gauss = random.Random(seed).getstate()
+    state = np.random.RandomState()
+    key = np.array(internal[:624], dtype=np.uint32)
+    state.set_state(("MT19937", key, int(internal[624]), 0, 0.0))
+    return state.random_sample(size)
+
+
+@dataclass(frozen=True, eq=False)
+class FieldPlants:
+    """The plants of one field: world metres, right-handed, Z up (arrays are read-only)."""
+
+    field_id: str
+    spec: FieldSpec
+    #: Positions, shape (n, 3).
+    xyz: FloatArray
+    #: Rotation about Z, radians, counter-clockwise seen from above.
+    yaw_rad: FloatArray
+    #: Uniform scale of the plant relative to its asset.
+    scale: FloatArray
+    #: Plant height, metres (``agronomy.plant_height_m * scale``).
+    height_m: FloatArray
+
+    @property
+    def plant_count(self) -> int:
+        """Plants present (nominal positions minus missing plants)."""
+        return int(self.xyz.shape[0])
+
+    @property
+    def nominal_plant_count(self) -> int:
+        """Planting positions before missing plants were removed."""
+        return self.spec.nominal_plant_count
+
+
+@dataclass(frozen=True, eq=False)
+class Layout:
+    """Every plant of every field of a recipe, in recipe order."""
+
+    recipe: SceneRecipe
+    fields: tuple[FieldPlants, ...]
+
+    @property
+    def plant_count(self) -> int:
+        """Plants in all fields."""
+        return sum(field.plant_count for field in self.fields)
+
+    def field(self, field_id: str) -> FieldPlants:
+        """The plants of the field with this id."""
+        for plants in self.fields:
+            if plants.field_id == field_id:
+                return plants
+        raise RecipeValidationError(
+            f"no field {field_id!r} in this layout",
+            stage="layout",
+            hint="fields: " + ", ".join(plants.field_id for plants in self.fields),
+        )
+
+
+def layout_scene(recipe: SceneRecipe) -> Layout:
+    """Place every plant of ``recipe`` (deterministic in the recipe and its seed)."""
+    placed = []
+    for spec, params in zip(recipe.fields, field_parameters(recipe), strict=True):
+        xyz, yaw, scale, height = place_field_array(params)
+        for array in (xyz, yaw, scale, height):
+            array.flags.writeable = False
+        placed.append(
+            FieldPlants(
+                field_id=spec.id, spec=spec, xyz=xyz, yaw_rad=yaw, scale=scale, height_m=height
+            )
+        )
+    return Layout(recipe=recipe, fields=tuple(placed))
