@@ -6,10 +6,13 @@ from agrirecipe.knowledge._base import (
     default_knowledge_base,
     load_knowledge_base,
 )
+from agrirecipe.knowledge._retrieval import KnowledgeRetriever, RetrievalHit
 
 __all__ = [
     "KnowledgeBase",
     "KnowledgeEntry",
+    "KnowledgeRetriever",
+    "RetrievalHit",
     "default_knowledge_base",
     "load_knowledge_base",
 ]
