@@ -137,7 +137,7 @@ class Crop:
         raise HierarchyError(
             f"{name!r} is not a variety of {self.name}",
             stage="hierarchy",
-            hint="known varieties: " + ", ".join(v.name for v in self.varieties),
+            hint=_known_hint(name, [v.name for v in self.varieties], "varieties"),
         )
 
 
@@ -241,7 +241,7 @@ class Hierarchy:
             raise HierarchyError(
                 f"{name!r} is not a crop of this hierarchy",
                 stage="hierarchy",
-                hint="known crops: " + ", ".join(self.crops),
+                hint=_known_hint(name, list(self.crops), "crops"),
             ) from None
 
     def __len__(self) -> int:
@@ -356,6 +356,19 @@ class Hierarchy:
         )
 
 
+def _known_hint(name: str, known: list[str], label: str) -> str:
+    """``"nearest: Apple; known crops: Apple, Pear, ..."`` for an error's hint."""
+    from rapidfuzz import fuzz, process, utils
+
+    matches = process.extract(
+        name, known, scorer=fuzz.WRatio, processor=utils.default_process, limit=3, score_cutoff=70
+    )
+    listing = f"known {label}: " + ", ".join(known)
+    if not matches:
+        return listing
+    return "nearest: " + ", ".join(str(match[0]) for match in matches) + "; " + listing
+
+
 def _format_path(root: str, key: AssetKey) -> str:
     segments = [
         pascal_case(name)
@@ -386,6 +399,10 @@ def load_hierarchy(path: str | Path | None = None, *, content_root: str | None =
             raise HierarchyError(
                 f"hierarchy file {str(source)!r} does not exist", stage="hierarchy"
             ) from None
+        except (OSError, UnicodeDecodeError) as exc:
+            raise HierarchyError(
+                f"hierarchy file {str(source)!r} cannot be read: {exc}", stage="hierarchy"
+            ) from exc
         except yaml.YAMLError as exc:
             raise HierarchyError(
                 f"hierarchy file {str(source)!r} is not valid YAML: {exc}", stage="hierarchy"

@@ -290,7 +290,10 @@ class KnowledgeBase:
         elif (
             key.stage == "Reproductive"
             and colours.flower_rgb
-            and key.season in ("Spring", "Summer")
+            # Deciduous crops flower in spring and summer only; evergreen,
+            # perennial and annual crops flower whenever they are reproductive
+            # (bananas shoot in autumn, late tomatoes still flower in September).
+            and (key.season in ("Spring", "Summer") or not deciduous)
         ):
             foliage = "flowering"
         elif key.stage == "Maturation" and colours.mature_rgb:

@@ -30,6 +30,7 @@ __all__ = [
     "schema_text",
 ]
 
+_ROOT = "<recipe>"
 _SUBPATH = re.compile(
     r"^(?:Value error, )?([A-Za-z_][\w]*(?:\[\d+\])?(?:\.[A-Za-z_]\w*(?:\[\d+\])?)*): (.*)$", re.S
 )
@@ -64,15 +65,24 @@ def _join_path(loc: tuple[int | str, ...]) -> str:
 
 
 def _pydantic_problems(exc: ValidationError) -> list[tuple[str, str]]:
+    errors = exc.errors(include_url=False)
+    locations = [tuple(error["loc"]) for error in errors]
     problems: list[tuple[str, str]] = []
-    for error in exc.errors(include_url=False):
-        path = _join_path(tuple(error["loc"]))
+    for error in errors:
+        loc = tuple(error["loc"])
+        # pydantic also calls a tuple "too short" when its items failed validation;
+        # the item errors already say what is wrong.
+        if error["type"] == "too_short" and any(
+            len(other) > len(loc) and other[: len(loc)] == loc for other in locations
+        ):
+            continue
+        path = _join_path(loc)
         message = str(error["msg"])
         match = _SUBPATH.match(message)
         if match:
             sub, message = match.group(1), match.group(2)
             path = f"{path}.{sub}" if path else sub
-        problems.append((path or "<recipe>", message))
+        problems.append((path or _ROOT, message))
     return problems
 
 
@@ -80,29 +90,81 @@ def _schema_problems(data: Any) -> list[tuple[str, str]]:
     import jsonschema
 
     validator = jsonschema.Draft202012Validator(recipe_json_schema())
-    problems = []
-    for error in sorted(validator.iter_errors(data), key=lambda e: list(map(str, e.path))):
-        problems.append((_join_path(tuple(error.absolute_path)) or "<recipe>", error.message))
-    return problems
+    return [
+        (_join_path(tuple(error.absolute_path)) or _ROOT, error.message)
+        for error in validator.iter_errors(data)
+    ]
+
+
+def _covers(reported: str, path: str) -> bool:
+    """True when a problem at ``reported`` already explains one at ``path`` (same or inside)."""
+    if path == _ROOT or reported == path:
+        return True
+    return reported.startswith((f"{path}.", f"{path}["))
+
+
+def _path_order(problem: tuple[str, str]) -> tuple[tuple[int, int | str], ...]:
+    """Document order: ``fields[2]`` before ``fields[10]``, the whole recipe first."""
+    path = problem[0]
+    if path == _ROOT:
+        return ()
+    parts = re.findall(r"\[(\d+)\]|([^.\[\]]+)", path)
+    return tuple((0, int(index)) if index else (1, name) for index, name in parts)
 
 
 def check_recipe(recipe: SceneRecipe, hierarchy: Hierarchy | None = None) -> list[tuple[str, str]]:
-    """Checks that need the hierarchy: every field's attributes and asset path are in it."""
+    """Checks that need the hierarchy: every field's attributes and asset path are in it.
+
+    Each problem names the attribute at fault (``fields[1].variety``), or the
+    asset path when the attributes are fine but the path does not match them.
+    """
     from agrirecipe._errors import HierarchyError
 
     hierarchy = hierarchy or default_hierarchy()
     problems: list[tuple[str, str]] = []
     for index, spec in enumerate(recipe.fields):
-        key = AssetKey(spec.category, spec.crop, spec.variety, spec.stage, spec.season, spec.health)
+        where = f"fields[{index}]"
         try:
-            expected = hierarchy.asset_path(key)
+            crop = hierarchy.crop(spec.crop)
         except HierarchyError as exc:
-            problems.append((f"fields[{index}]", str(exc)))
+            problems.append((f"{where}.crop", str(exc)))
             continue
+        found: list[tuple[str, str]] = []
+        if spec.category != crop.category:
+            found.append(
+                (
+                    f"{where}.category",
+                    f"{spec.category!r} does not match crop {crop.name} "
+                    f"(which is in {crop.category!r})",
+                )
+            )
+        try:
+            crop.variety(spec.variety)
+        except HierarchyError as exc:
+            found.append((f"{where}.variety", str(exc)))
+        for name, allowed in (
+            ("stage", hierarchy.stages),
+            ("season", hierarchy.seasons),
+            ("health", hierarchy.health),
+        ):
+            value = getattr(spec, name)
+            if value not in allowed:
+                found.append(
+                    (
+                        f"{where}.{name}",
+                        f"{value!r} is not a {name} of this hierarchy "
+                        f"(accepted: {', '.join(allowed)})",
+                    )
+                )
+        if found:
+            problems.extend(found)
+            continue
+        key = AssetKey(spec.category, spec.crop, spec.variety, spec.stage, spec.season, spec.health)
+        expected = hierarchy.asset_path(key)
         if spec.asset_path != expected:
             problems.append(
                 (
-                    f"fields[{index}].asset_path",
+                    f"{where}.asset_path",
                     f"{spec.asset_path!r} does not match the field's attributes; "
                     f"expected {expected!r}",
                 )
@@ -116,17 +178,25 @@ def check_recipe_data(
     hierarchy: Hierarchy | None = None,
     max_plants: int = DEFAULT_MAX_PLANTS,
 ) -> tuple[SceneRecipe | None, list[tuple[str, str]]]:
-    """Validate decoded JSON; return the recipe (when valid) and every problem found."""
-    problems = _schema_problems(data)
+    """Validate decoded JSON; return the recipe (when valid) and every problem found.
+
+    Problems come from the pydantic models (which also run the cross-field
+    checks), then from the JSON Schema for anything the models did not already
+    report at the same place, then from the hierarchy; they are listed in
+    document order, each as ``(path, message)``.
+    """
+    problems: list[tuple[str, str]] = []
     recipe: SceneRecipe | None = None
     try:
         recipe = SceneRecipe.model_validate(data, context={"max_plants": max_plants})
     except ValidationError as exc:
-        for problem in _pydantic_problems(exc):
-            if problem not in problems:
-                problems.append(problem)
+        problems.extend(_pydantic_problems(exc))
+    for path, message in _schema_problems(data):
+        if not any(_covers(reported, path) for reported, _ in problems):
+            problems.append((path, message))
     if recipe is not None:
         problems.extend(check_recipe(recipe, hierarchy))
+    problems.sort(key=_path_order)
     return (recipe if not problems else None), problems
 
 
@@ -143,7 +213,7 @@ def parse_recipe(
     except json.JSONDecodeError as exc:
         raise RecipeValidationError(
             f"{source} is not valid JSON: {exc.msg} at line {exc.lineno} column {exc.colno}",
-            problems=[("<recipe>", exc.msg)],
+            problems=[(_ROOT, exc.msg)],
             hint="a recipe is the JSON written by `agrirecipe generate` or dump_recipe()",
         ) from exc
     recipe, problems = check_recipe_data(data, hierarchy=hierarchy, max_plants=max_plants)
