@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
+import contextlib
 import os
 import tempfile
+from collections.abc import Iterator
 from pathlib import Path
 
-__all__ = ["write_atomic"]
+__all__ = ["atomic_path", "write_atomic"]
 
 
 def write_atomic(path: str | Path, data: str | bytes) -> Path:
@@ -27,3 +29,31 @@ def write_atomic(path: str | Path, data: str | bytes) -> Path:
         Path(temporary).unlink(missing_ok=True)
         raise
     return target
+
+
+@contextlib.contextmanager
+def atomic_path(path: str | Path, *, suffix: str = ".tmp") -> Iterator[Path]:
+    """A temporary path beside ``path`` to write to; renamed onto ``path`` on success.
+
+    For outputs too large to hold in memory or written by a foreign library
+    (e.g. ``pxr`` exporting a stage): write to the yielded path, and the file
+    appears at ``path`` only once complete. On an exception the temporary file
+    is removed. ``suffix`` lets libraries that pick a format from the file
+    extension (``".usda"``) see the right one.
+    """
+    target = Path(path)
+    target.parent.mkdir(parents=True, exist_ok=True)
+    handle, temporary = tempfile.mkstemp(
+        dir=target.parent, prefix=f".{target.name}.", suffix=suffix
+    )
+    os.close(handle)
+    # mkstemp makes the file private (0600); an output file should be readable like any other.
+    Path(temporary).chmod(0o644)
+    try:
+        yield Path(temporary)
+        with Path(temporary).open("rb+") as stream:
+            os.fsync(stream.fileno())
+        Path(temporary).replace(target)
+    except BaseException:
+        Path(temporary).unlink(missing_ok=True)
+        raise
