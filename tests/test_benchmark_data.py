@@ -1,0 +1,70 @@
+"""The checked-in benchmark files are valid and cover what the evaluation claims."""
+
+from __future__ import annotations
+
+import collections
+
+from agrirecipe.evaluation import PROMPT_TYPES, load_benchmark, load_knowledge_queries
+from agrirecipe.hierarchy import default_hierarchy
+
+
+def test_benchmark_has_enough_prompts_of_every_type() -> None:
+    benchmark = load_benchmark()
+    assert len(benchmark) >= 150
+    counts = collections.Counter(p.type for p in benchmark.prompts)
+    for prompt_type in PROMPT_TYPES:
+        assert counts[prompt_type] >= 25, (prompt_type, counts)
+
+
+def test_benchmark_covers_every_hard_case_tag() -> None:
+    tags = collections.Counter(t for p in load_benchmark().prompts for t in p.tags)
+    for tag in ("paraphrase", "alias", "typo", "ambiguous", "size_relation", "month_season"):
+        assert tags[tag] >= 15, (tag, tags)
+    assert tags["implausible"] >= 1
+
+
+def test_truth_names_exist_in_the_hierarchy_and_every_category_is_represented() -> None:
+    hierarchy = default_hierarchy()
+    varieties = {(v.crop, v.name) for v in hierarchy.varieties}
+    categories_seen: set[str] = set()
+    crops_seen: set[str] = set()
+    for prompt in load_benchmark().prompts:
+        for field in prompt.fields:
+            for category in field.category or ():
+                assert category in hierarchy.categories
+            for crop in field.crop or ():
+                assert crop in hierarchy.crops
+                crops_seen.add(crop)
+            if field.crop and len(field.crop) == 1:
+                categories_seen.add(hierarchy.crops[field.crop[0]].category)
+            for variety in field.variety or ():
+                assert any((crop, variety) in varieties for crop in field.crop or ()), variety
+    assert categories_seen == set(hierarchy.categories)
+    assert crops_seen == set(hierarchy.crops)
+
+
+def test_invalid_prompts_name_an_error_class_of_the_error_tree() -> None:
+    import agrirecipe
+
+    invalid = [p for p in load_benchmark().prompts if p.invalid]
+    for prompt in invalid:
+        assert prompt.error is not None
+        error_class = getattr(agrirecipe, prompt.error)
+        assert issubclass(error_class, agrirecipe.AgrirecipeError)
+    texts = {p.prompt.strip() for p in invalid}
+    assert "" in texts  # the empty prompt is in the benchmark
+
+
+def test_prompts_are_unique() -> None:
+    prompts = [p.prompt.lower() for p in load_benchmark().prompts]
+    assert len(prompts) == len(set(prompts))
+
+
+def test_knowledge_queries_name_catalogue_assets_and_cover_every_crop() -> None:
+    hierarchy = default_hierarchy()
+    queries = load_knowledge_queries()
+    assert len(queries) >= 100
+    for query in queries:
+        hierarchy.check_key(query.key)
+    assert {q.key.crop for q in queries} == set(hierarchy.crops)
+    assert len({q.query.lower() for q in queries}) == len(queries)
