@@ -287,15 +287,12 @@ class KnowledgeBase:
             and colours.autumn_rgb
         ):
             foliage, foliage_rgb = "autumn", colours.autumn_rgb.value
-        elif (
-            key.stage == "Reproductive"
-            and colours.flower_rgb
-            # Deciduous crops flower in spring and summer only; evergreen,
-            # perennial and annual crops flower whenever they are reproductive
-            # (bananas shoot in autumn, late tomatoes still flower in September).
-            and (key.season in ("Spring", "Summer") or not deciduous)
-        ):
+        elif key.stage == "Reproductive" and colours.flower_rgb and _in_flower(entry, key.season):
             foliage = "flowering"
+        elif key.stage == "Reproductive" and colours.fruit_rgb:
+            # Reproductive outside the flowering season: fruit is setting or growing
+            # (an apple orchard in July).
+            foliage = "fruiting"
         elif key.stage == "Maturation" and colours.mature_rgb:
             foliage, foliage_rgb = "senescent", colours.mature_rgb.value
         elif key.stage == "Maturation" and colours.fruit_rgb:
@@ -365,6 +362,15 @@ def _stage(value: str) -> Stage:
             hint="Vegetative, Reproductive, Maturation",
         )
     return value  # type: ignore[return-value]
+
+
+def _in_flower(entry: CropFile, season: str) -> bool:
+    """Whether a reproductive plant of this crop shows flowers in ``season``."""
+    if entry.flowering is not None:
+        return season in entry.flowering.seasons
+    # Without data: deciduous crops flower in spring and summer; evergreen,
+    # perennial and annual crops whenever they are reproductive.
+    return season in ("Spring", "Summer") or entry.leaf_habit != "deciduous"
 
 
 def _season(value: str) -> Season:

@@ -98,6 +98,16 @@ class _SeasonStages(_Strict):
     note: str | None = None
 
 
+class _Flowering(_Strict):
+    seasons: tuple[Season, ...] = Field(
+        min_length=1,
+        description="Seasons in which a reproductive plant shows flowers; outside them it "
+        "shows setting or growing fruit.",
+    )
+    source: str
+    note: str | None = None
+
+
 class CropFile(_Strict):
     """One crop's knowledge after variety overrides are merged in."""
 
@@ -114,6 +124,11 @@ class CropFile(_Strict):
     colours: _Colours
     seasons: dict[Season, _SeasonStages]
     stage_height_fraction: dict[Stage, Sourced[float]]
+    flowering: _Flowering | None = Field(
+        default=None,
+        description="When flowers show; when absent, deciduous crops flower in spring and "
+        "summer and all others whenever they are reproductive.",
+    )
 
     @field_validator("seasons")
     @classmethod
