@@ -1,0 +1,380 @@
+"""The OpenUSD backend: ``scene.usda``, one ``PointInstancer`` per field.
+
+The stage opens in usdview, Isaac Sim, Omniverse and Unreal's USD importer
+without our asset pack: every prototype carries a simple proxy mesh sized like
+the plant (canopy width x height at this stage) and coloured like its foliage,
+and names the Unreal asset it stands for. Layout::
+
+    /World                       Xform, default prim, kind = assembly
+        Sun                      DistantLight from the recipe's sun
+        Surroundings             grass plane under the whole farm (z slightly below 0)
+        Fields/<field id>        Xform with the field's attributes (agrirecipe:*)
+            Ground               soil quad over the field rectangle, z = 0
+            Plants               PointInstancer: positions, orientations, scales, protoIndices
+                Prototypes/<SM_...>  the asset: assetInfo, agrirecipe:assetPath, crop attributes
+                    Proxy        Mesh
+
+Units and axes: ``metersPerUnit = 1``, ``upAxis = Z``, right-handed, X east,
+Y north, exactly the recipe's frame. Instance ``i`` of a field's instancer is
+the field's ``i``-th row of ``plants.csv``. Orientations are half-precision
+quaternions (the schema's ``quath[]``) for a yaw about Z; positions and scales
+are single precision, as the schema stores them.
+
+``pxr`` (PyPI ``usd-core``, extra ``agrirecipe[usd]``) is imported on first
+use; its errors become :class:`~agrirecipe.BackendError`.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from pathlib import Path
+from typing import TYPE_CHECKING, Any, ClassVar
+
+import numpy as np
+
+from agrirecipe import __version__
+from agrirecipe._errors import BackendError
+from agrirecipe._files import atomic_path
+from agrirecipe.backends._base import Backend
+
+if TYPE_CHECKING:
+    from agrirecipe._scene import Scene
+    from agrirecipe.layout import FieldPlants
+    from agrirecipe.recipe import FieldSpec, GrowthForm, SceneRecipe
+
+__all__ = ["STAGE_NAME", "UsdBackend", "proxy_mesh", "yaw_quaternions"]
+
+#: The file :meth:`UsdBackend.write` creates.
+STAGE_NAME = "scene.usda"
+
+_SOIL_RGB = (0.42, 0.31, 0.21)
+_GRASS_RGB = (0.33, 0.45, 0.22)
+_BARK_RGB = (0.36, 0.27, 0.20)
+_SEGMENTS = 8
+# Proxy silhouettes by growth form: (radius, height) pairs from the ground up, as
+# fractions of half the canopy width and of the plant height, revolved about Z.
+# The fraction of the height below which the proxy is drawn as stem/trunk follows.
+_PROFILES: dict[str, tuple[tuple[tuple[float, float], ...], float]] = {
+    "tree": (
+        ((0.0, 0.0), (0.1, 0.0), (0.1, 0.35), (0.8, 0.45), (1.0, 0.7), (0.6, 0.92), (0.0, 1.0)),
+        0.4,
+    ),
+    "vine": (((0.0, 0.0), (0.15, 0.0), (0.15, 0.3), (1.0, 0.5), (1.0, 0.9), (0.0, 1.0)), 0.35),
+    "bush": (((0.0, 0.0), (0.6, 0.0), (1.0, 0.4), (0.8, 0.85), (0.0, 1.0)), 0.0),
+    "row_crop": (((0.0, 0.0), (0.3, 0.0), (1.0, 0.5), (0.7, 0.9), (0.0, 1.0)), 0.0),
+    "leafy_head": (((0.0, 0.0), (0.8, 0.0), (1.0, 0.35), (0.7, 0.85), (0.0, 1.0)), 0.0),
+    "cereal": (((0.0, 0.0), (0.25, 0.0), (1.0, 0.8), (0.9, 1.0), (0.0, 1.0)), 0.0),
+}
+
+
+def yaw_quaternions(yaw_rad: np.ndarray[Any, np.dtype[np.float64]]) -> np.ndarray[Any, Any]:
+    """Rotations about +Z as an (n, 4) float16 array.
+
+    Columns are x, y, z, w: the order ``Vt.QuathArray.FromNumpy`` expects (``Gf.Quath``
+    and ``.usda`` text put the real part first).
+    """
+    quaternions = np.zeros((yaw_rad.shape[0], 4), dtype=np.float16)
+    quaternions[:, 2] = np.sin(yaw_rad * 0.5)
+    quaternions[:, 3] = np.cos(yaw_rad * 0.5)
+    return quaternions
+
+
+def proxy_mesh(
+    growth_form: GrowthForm,
+    height_m: float,
+    canopy_width_m: float,
+    foliage_rgb: tuple[float, float, float],
+) -> tuple[
+    list[tuple[float, float, float]], list[int], list[int], list[tuple[float, float, float]]
+]:
+    """A closed lathe mesh standing on z = 0, ``height_m`` tall and ``canopy_width_m`` wide.
+
+    Returns ``(points, face vertex counts, face vertex indices, vertex colours)``.
+    """
+    profile, stem_fraction = _PROFILES[growth_form]
+    radius = canopy_width_m / 2.0
+    points: list[tuple[float, float, float]] = []
+    colours: list[tuple[float, float, float]] = []
+    rings: list[list[int]] = []
+    for radius_fraction, height_fraction in profile:
+        z = height_fraction * height_m
+        colour = _BARK_RGB if height_fraction < stem_fraction else foliage_rgb
+        start = len(points)
+        if radius_fraction == 0.0:
+            points.append((0.0, 0.0, z))
+            colours.append(colour)
+        else:
+            for segment in range(_SEGMENTS):
+                angle = 2.0 * math.pi * segment / _SEGMENTS
+                r = radius_fraction * radius
+                points.append((r * math.cos(angle), r * math.sin(angle), z))
+                colours.append(colour)
+        rings.append(list(range(start, len(points))))
+    counts: list[int] = []
+    indices: list[int] = []
+    for lower, upper in itertools.pairwise(rings):
+        for segment in range(_SEGMENTS):
+            following = (segment + 1) % _SEGMENTS
+            # Counter-clockwise seen from outside: the right-handed default orientation.
+            face = [
+                lower[segment % len(lower)],
+                lower[following % len(lower)],
+                upper[following % len(upper)],
+                upper[segment % len(upper)],
+            ]
+            face = [v for k, v in enumerate(face) if v not in face[:k]]  # poles: triangles
+            counts.append(len(face))
+            indices.extend(face)
+    return points, counts, indices, colours
+
+
+class UsdBackend(Backend):
+    """Writes ``scene.usda``: metres, Z up, one ``UsdGeom.PointInstancer`` per field."""
+
+    name: ClassVar[str] = "usd"
+    outputs: ClassVar[tuple[str, ...]] = (STAGE_NAME,)
+
+    def write(self, scene: Scene, directory: Path) -> list[Path]:
+        """Build the stage in memory and export it atomically to ``directory/scene.usda``."""
+        tf = _import_pxr()
+        target = Path(directory) / STAGE_NAME
+        try:
+            stage = _build_stage(scene)
+            with atomic_path(target, suffix=".usda") as temporary:
+                if not stage.GetRootLayer().Export(str(temporary)):
+                    raise BackendError(
+                        f"pxr could not export the stage to {str(target)!r}", stage="compile"
+                    )
+        except (tf.ErrorException, OSError) as exc:
+            raise BackendError(
+                f"OpenUSD failed while writing {str(target)!r}: {exc}",
+                stage="compile",
+                hint="check the output folder is writable",
+            ) from exc
+        return [target]
+
+    def stage(self, scene: Scene) -> Any:
+        """The scene as an in-memory ``Usd.Stage`` (for callers who add to it before saving)."""
+        tf = _import_pxr()
+        try:
+            return _build_stage(scene)
+        except tf.ErrorException as exc:
+            raise BackendError(
+                f"OpenUSD failed building the stage: {exc}", stage="compile"
+            ) from exc
+
+
+def _import_pxr() -> Any:
+    """``pxr.Tf`` (whose ``ErrorException`` we convert), or a BackendError saying how to install."""
+    try:
+        from pxr import Tf, Usd, UsdGeom, UsdLux  # noqa: F401 - fail here, not midway
+
+        return Tf
+    except ImportError as exc:
+        raise BackendError(
+            f"the USD backend needs OpenUSD's Python module pxr ({exc})",
+            stage="compile",
+            hint="pip install 'agrirecipe[usd]' (installs usd-core)",
+        ) from exc
+
+
+def _build_stage(scene: Scene) -> Any:
+    from pxr import Kind, Sdf, Usd, UsdGeom
+
+    recipe = scene.recipe
+    stage = Usd.Stage.CreateInMemory()
+    UsdGeom.SetStageUpAxis(stage, UsdGeom.Tokens.z)
+    UsdGeom.SetStageMetersPerUnit(stage, UsdGeom.LinearUnits.meters)
+    layer = stage.GetRootLayer()
+    layer.documentation = f"agrirecipe {__version__} scene (recipe seed {recipe.seed})"
+    layer.customLayerData = {
+        "agrirecipe": {
+            "version": __version__,
+            "schemaVersion": recipe.schema_version,
+            "seed": recipe.seed,
+            "prompt": recipe.prompt,
+            "resolver": recipe.resolver,
+            "season": recipe.environment.season,
+            "latitudeDeg": recipe.environment.latitude_deg,
+        }
+    }
+    world = UsdGeom.Xform.Define(stage, "/World")
+    stage.SetDefaultPrim(world.GetPrim())
+    Usd.ModelAPI(world.GetPrim()).SetKind(Kind.Tokens.assembly)
+
+    _add_sun(stage, recipe)
+    _add_surroundings(stage, recipe)
+    UsdGeom.Scope.Define(stage, "/World/Fields")
+    for plants in scene.layout.fields:
+        spec = plants.spec
+        field_path = Sdf.Path("/World/Fields").AppendChild(spec.id)
+        field_prim = UsdGeom.Xform.Define(stage, field_path).GetPrim()
+        _set_attributes(field_prim, _field_attributes(spec, plants))
+        _add_ground(stage, field_path.AppendChild("Ground"), spec)
+        _add_instancer(stage, field_path.AppendChild("Plants"), plants)
+    return stage
+
+
+def _field_attributes(spec: FieldSpec, plants: FieldPlants) -> dict[str, object]:
+    agronomy = spec.agronomy
+    return {
+        "fieldId": spec.id,
+        "label": spec.label,
+        "category": spec.category,
+        "crop": spec.crop,
+        "variety": spec.variety,
+        "stage": spec.stage,
+        "season": spec.season,
+        "health": spec.health,
+        "assetPath": spec.asset_path,
+        "plantingPattern": agronomy.planting_pattern,
+        "growthForm": agronomy.growth_form,
+        "rowSpacingM": agronomy.row_spacing_m,
+        "inRowSpacingM": agronomy.in_row_spacing_m,
+        "plantHeightM": agronomy.plant_height_m,
+        "foliage": agronomy.foliage,
+        "headlandM": spec.geometry.headland_m,
+        "plantCount": plants.plant_count,
+        "nominalPlantCount": plants.nominal_plant_count,
+    }
+
+
+def _set_attributes(prim: Any, values: dict[str, object]) -> None:
+    """Typed custom ``agrirecipe:*`` attributes (shown in usdview's property panel)."""
+    from pxr import Sdf
+
+    names = Sdf.ValueTypeNames
+    for key, value in values.items():
+        if isinstance(value, bool) or not isinstance(value, str | int | float):
+            raise TypeError(f"unsupported attribute value for {key}: {value!r}")  # a bug
+        value_type = (
+            names.String
+            if isinstance(value, str)
+            else names.Int
+            if isinstance(value, int)
+            else names.Double
+        )
+        prim.CreateAttribute(f"agrirecipe:{key}", value_type, custom=True).Set(value)
+
+
+def _add_sun(stage: Any, recipe: SceneRecipe) -> None:
+    """A distant light whose +Z axis points at the sun (the light shines along -Z)."""
+    from pxr import Gf, UsdGeom, UsdLux
+
+    sun = recipe.environment.sun
+    elevation, azimuth = math.radians(sun.elevation_deg), math.radians(sun.azimuth_deg)
+    # Compass azimuth is clockwise from north (+Y); east is +X.
+    toward_sun = Gf.Vec3d(
+        math.sin(azimuth) * math.cos(elevation),
+        math.cos(azimuth) * math.cos(elevation),
+        math.sin(elevation),
+    )
+    light = UsdLux.DistantLight.Define(stage, "/World/Sun")
+    light.CreateIntensityAttr(3000.0 if sun.elevation_deg > 0 else 50.0)
+    light.CreateAngleAttr(0.53)
+    rotation = Gf.Rotation(Gf.Vec3d(0.0, 0.0, 1.0), toward_sun)
+    light.AddOrientOp(UsdGeom.XformOp.PrecisionFloat).Set(Gf.Quatf(rotation.GetQuat()))
+    light.GetPrim().SetCustomDataByKey(
+        "agrirecipe", {"elevationDeg": sun.elevation_deg, "azimuthDeg": sun.azimuth_deg}
+    )
+
+
+def _quad(
+    stage: Any,
+    path: Any,
+    corners: list[tuple[float, float]],
+    z: float,
+    rgb: tuple[float, float, float],
+) -> None:
+    from pxr import Gf, Usd, UsdGeom
+
+    mesh = UsdGeom.Mesh.Define(stage, path)
+    points = [Gf.Vec3f(x, y, z) for x, y in corners]
+    mesh.CreatePointsAttr(points)
+    mesh.CreateFaceVertexCountsAttr([4])
+    mesh.CreateFaceVertexIndicesAttr([0, 1, 2, 3])
+    mesh.CreateNormalsAttr([Gf.Vec3f(0.0, 0.0, 1.0)] * 4)
+    mesh.SetNormalsInterpolation(UsdGeom.Tokens.vertex)
+    mesh.CreateSubdivisionSchemeAttr(UsdGeom.Tokens.none)
+    mesh.CreateDoubleSidedAttr(True)
+    mesh.CreateDisplayColorAttr([Gf.Vec3f(*rgb)])
+    mesh.CreateExtentAttr(UsdGeom.Boundable.ComputeExtentFromPlugins(mesh, Usd.TimeCode.Default()))
+
+
+def _add_ground(stage: Any, path: Any, spec: FieldSpec) -> None:
+    _quad(stage, path, list(spec.geometry.corners_m()), 0.0, _SOIL_RGB)
+
+
+def _add_surroundings(stage: Any, recipe: SceneRecipe) -> None:
+    corners = [corner for spec in recipe.fields for corner in spec.geometry.corners_m()]
+    xs, ys = [x for x, _ in corners], [y for _, y in corners]
+    margin = 0.1 * max(max(xs) - min(xs), max(ys) - min(ys)) + 10.0
+    x0, x1, y0, y1 = min(xs) - margin, max(xs) + margin, min(ys) - margin, max(ys) + margin
+    # A few centimetres below the fields so the soil quads never z-fight with it.
+    _quad(
+        stage,
+        "/World/Surroundings",
+        [(x0, y0), (x1, y0), (x1, y1), (x0, y1)],
+        -0.02,
+        _GRASS_RGB,
+    )
+
+
+def _add_instancer(stage: Any, path: Any, plants: FieldPlants) -> None:
+    from pxr import Gf, Sdf, Tf, Usd, UsdGeom, Vt
+
+    spec = plants.spec
+    agronomy = spec.agronomy
+    instancer = UsdGeom.PointInstancer.Define(stage, path)
+    prototypes = UsdGeom.Scope.Define(stage, path.AppendChild("Prototypes"))
+    asset_name = Tf.MakeValidIdentifier(spec.asset_path.rsplit(".", 1)[-1])
+    prototype_path = prototypes.GetPath().AppendChild(asset_name)
+    prototype = UsdGeom.Xform.Define(stage, prototype_path).GetPrim()
+    prototype.SetAssetInfoByKey("name", asset_name)
+    prototype.SetAssetInfoByKey("identifier", Sdf.AssetPath(spec.asset_path))
+    _set_attributes(
+        prototype,
+        {
+            "assetPath": spec.asset_path,
+            "category": spec.category,
+            "crop": spec.crop,
+            "variety": spec.variety,
+            "stage": spec.stage,
+            "season": spec.season,
+            "health": spec.health,
+            "growthForm": agronomy.growth_form,
+            "heightM": agronomy.plant_height_m,
+            "canopyWidthM": agronomy.canopy_width_m,
+        },
+    )
+    points, counts, indices, colours = proxy_mesh(
+        agronomy.growth_form, agronomy.plant_height_m, agronomy.canopy_width_m, agronomy.foliage_rgb
+    )
+    mesh = UsdGeom.Mesh.Define(stage, prototype_path.AppendChild("Proxy"))
+    mesh.CreatePointsAttr([Gf.Vec3f(*p) for p in points])
+    mesh.CreateFaceVertexCountsAttr(counts)
+    mesh.CreateFaceVertexIndicesAttr(indices)
+    mesh.CreateSubdivisionSchemeAttr(UsdGeom.Tokens.none)
+    colour = mesh.CreateDisplayColorPrimvar(UsdGeom.Tokens.vertex)
+    colour.Set([Gf.Vec3f(*c) for c in colours])
+    mesh.CreateExtentAttr(UsdGeom.Boundable.ComputeExtentFromPlugins(mesh, Usd.TimeCode.Default()))
+
+    instancer.CreatePrototypesRel().SetTargets([prototype_path])
+    count = plants.plant_count
+    instancer.CreateProtoIndicesAttr(Vt.IntArray.FromNumpy(np.zeros(count, dtype=np.int32)))
+    instancer.CreatePositionsAttr(Vt.Vec3fArray.FromNumpy(plants.xyz.astype(np.float32)))
+    instancer.CreateOrientationsAttr(Vt.QuathArray.FromNumpy(yaw_quaternions(plants.yaw_rad)))
+    scales = np.repeat(plants.scale.astype(np.float32)[:, None], 3, axis=1)
+    instancer.CreateScalesAttr(Vt.Vec3fArray.FromNumpy(scales))
+    # Extent: every instance's proxy fits in a cylinder of the canopy radius, scaled.
+    reach = agronomy.canopy_width_m / 2.0 * float(plants.scale.max()) if count else 0.0
+    low = plants.xyz.min(axis=0) - reach if count else np.zeros(3)
+    high = plants.xyz.max(axis=0) + reach if count else np.zeros(3)
+    top = agronomy.plant_height_m * (float(plants.scale.max()) if count else 1.0)
+    instancer.CreateExtentAttr(
+        [
+            Gf.Vec3f(float(low[0]), float(low[1]), 0.0),
+            Gf.Vec3f(float(high[0]), float(high[1]), top),
+        ]
+    )
