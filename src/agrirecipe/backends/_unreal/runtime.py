@@ -1,0 +1,281 @@
+# ---------------------------------------------------------------------------
+# agrirecipe Unreal Engine 5 runtime: builds the scene described by SCENE_JSON.
+#
+# This code runs inside the Unreal Editor's Python, never in the library: the
+# Unreal backend inlines it verbatim into every generated unreal_build.py,
+# after the placement kernel, so the engine computes the plant positions
+# itself (the script stays proportional to fields, not plants). It uses only
+# the standard library and the `unreal` module, and only API names that the
+# tests check against the UE 5.6 API stub.
+#
+# Conventions (see agrirecipe.backends.unreal):
+# - the recipe is right-handed, Z up, metres; Unreal is left-handed, Z up,
+#   centimetres: (x, y, z) m -> (100 x, -100 y, 100 z) cm and a yaw of a
+#   radians -> yaw = -degrees(a);
+# - engine basic shapes are 100 cm with their pivot at the centre, so a
+#   scale of 1.0 is one metre and a placeholder is lifted by half its height.
+# ---------------------------------------------------------------------------
+import json
+import math
+from collections.abc import Callable, Iterable
+from typing import Any
+
+import unreal
+
+PlantSource = Callable[[dict[str, Any]], Iterable[tuple[float, float, float, float, float, float]]]
+
+
+def build_scene(scene: dict[str, Any], plants: PlantSource) -> dict[str, Any]:
+    """Build every field, its ground and the light as one undo step.
+
+    ``plants(kernel_parameters)`` yields ``(x, y, z, yaw_rad, scale, height_m)``
+    per plant (the inlined placement kernel). Returns a summary: instances
+    placed per field and whether the user cancelled.
+    """
+    header = scene["scene"]
+    editor_actors = unreal.get_editor_subsystem(unreal.EditorActorSubsystem)
+    subobjects = unreal.get_engine_subsystem(unreal.SubobjectDataSubsystem)
+    meshes: dict[str, Any] = {}
+    summary: dict[str, Any] = {"fields": {}, "instances": 0, "cancelled": False}
+    unreal.log(header["log_start"])
+    # One undo step for the whole scene; the slow task shows progress and a Cancel button.
+    with (
+        unreal.ScopedEditorTransaction(header["transaction"]),
+        unreal.ScopedSlowTask(float(header["work"]), header["title"]) as task,
+    ):
+        task.make_dialog(True)
+        task.enter_progress_frame(1.0, header["environment_progress"])
+        build_environment(editor_actors, scene["environment"])
+        for field in scene["fields"]:
+            if task.should_cancel():
+                summary["cancelled"] = True
+                break
+            placed, cancelled = build_field(
+                editor_actors, subobjects, task, scene["engine"], field, plants, meshes
+            )
+            summary["fields"][field["id"]] = placed
+            summary["instances"] += placed
+            if cancelled:
+                summary["cancelled"] = True
+                break
+    if summary["cancelled"]:
+        built = len(summary["fields"])
+        unreal.log_warning(
+            f"{header['log_cancelled']} ({summary['instances']} plants in {built} of "
+            f"{len(scene['fields'])} fields were placed; Edit > Undo removes them)"
+        )
+    else:
+        unreal.log(f"{header['log_done']} ({summary['instances']} plants placed)")
+    return summary
+
+
+def build_field(
+    editor_actors: unreal.EditorActorSubsystem,
+    subobjects: unreal.SubobjectDataSubsystem,
+    task: unreal.ScopedSlowTask,
+    engine: dict[str, Any],
+    field: dict[str, Any],
+    plants: PlantSource,
+    meshes: dict[str, Any],
+) -> tuple[int, bool]:
+    """One field: an actor holding an instanced static mesh, its plants, its ground.
+
+    Returns ``(instances placed, cancelled)``.
+    """
+    task.enter_progress_frame(1.0, field["progress_setup"])
+    mesh = load_project_mesh(field["asset_path"], meshes)
+    placeholder_canopy_m = None
+    if mesh is None:
+        # Without the asset pack a user still gets a visible, correctly laid-out
+        # scene: an engine basic shape sized like the plant, tinted like its foliage.
+        unreal.log_warning(field["log_missing_asset"])
+        mesh = load_engine_asset(field["fallback_mesh"], meshes)
+        placeholder_canopy_m = float(field["canopy_width_m"])
+
+    actor = editor_actors.spawn_actor_from_class(
+        unreal.Actor, to_vector(field["location_cm"]), unreal.Rotator(roll=0.0, pitch=0.0, yaw=0.0)
+    )
+    actor.set_actor_label(field["label"])
+    actor.set_folder_path(field["folder"])
+    component = add_instanced_mesh_component(subobjects, actor)
+    # A plain Actor has no root until the component above becomes it; only now
+    # does moving the actor stick. Instances are then given in world space.
+    actor.set_actor_location(to_vector(field["location_cm"]), False, True)
+    component.set_collision_enabled(unreal.CollisionEnabled.NO_COLLISION)
+    if mesh is not None:
+        component.set_static_mesh(mesh)
+    if placeholder_canopy_m is not None:
+        tint(component, engine, field["foliage_rgb"], meshes)
+
+    placed = 0
+    cancelled = False
+    chunk: list[Any] = []
+    chunk_size = int(engine["chunk_size"])
+    for plant in plants(field["kernel"]):
+        chunk.append(plant_transform(plant, placeholder_canopy_m))
+        if len(chunk) >= chunk_size:
+            if task.should_cancel():
+                cancelled = True
+                break
+            task.enter_progress_frame(float(len(chunk)), field["progress_plants"])
+            component.add_instances(chunk, False, world_space=True)
+            placed += len(chunk)
+            chunk = []
+    if chunk and not cancelled:
+        task.enter_progress_frame(float(len(chunk)), field["progress_plants"])
+        component.add_instances(chunk, False, world_space=True)
+        placed += len(chunk)
+    if not cancelled:
+        task.enter_progress_frame(1.0, field["progress_ground"])
+        build_ground(editor_actors, engine, field["ground"], field["folder"], meshes)
+    return placed, cancelled
+
+
+def plant_transform(
+    plant: tuple[float, float, float, float, float, float], placeholder_canopy_m: float | None
+) -> unreal.Transform:
+    """The world transform (cm, left-handed) of one kernel plant."""
+    x, y, z, yaw_rad, scale, height_m = plant
+    rotation = unreal.Rotator(roll=0.0, pitch=0.0, yaw=-math.degrees(yaw_rad))
+    if placeholder_canopy_m is None:
+        location = unreal.Vector(x * 100.0, -y * 100.0, z * 100.0)
+        size = unreal.Vector(scale, scale, scale)
+    else:
+        # Basic shapes are 1 m at scale 1 and centred on their pivot.
+        width_m = placeholder_canopy_m * scale
+        location = unreal.Vector(x * 100.0, -y * 100.0, (z + height_m / 2.0) * 100.0)
+        size = unreal.Vector(width_m, width_m, height_m)
+    return unreal.Transform(location=location, rotation=rotation, scale=size)
+
+
+def add_instanced_mesh_component(
+    subobjects: unreal.SubobjectDataSubsystem, actor: unreal.Actor
+) -> unreal.InstancedStaticMeshComponent:
+    """Add an InstancedStaticMeshComponent to a spawned actor (it becomes the root)."""
+    root = subobjects.k2_gather_subobject_data_for_instance(actor)[0]
+    handle, failure = subobjects.add_new_subobject(
+        unreal.AddNewSubobjectParams(
+            parent_handle=root,
+            new_class=unreal.InstancedStaticMeshComponent,
+            blueprint_context=None,
+        )
+    )
+    if not failure.is_empty():
+        raise RuntimeError(f"agrirecipe: could not add an instanced mesh component: {failure}")
+    created = unreal.SubobjectDataBlueprintFunctionLibrary.get_object(
+        unreal.SubobjectDataBlueprintFunctionLibrary.get_data(handle)
+    )
+    return unreal.InstancedStaticMeshComponent.cast(created)
+
+
+def load_project_mesh(path: str, meshes: dict[str, Any]) -> Any:
+    """The static mesh at a project asset path, or None when it is missing or not a mesh."""
+    if path not in meshes:
+        mesh = None
+        if unreal.EditorAssetLibrary.does_asset_exist(path):
+            asset = unreal.EditorAssetLibrary.load_asset(path)
+            if isinstance(asset, unreal.StaticMesh):
+                mesh = asset
+        meshes[path] = mesh
+    return meshes[path]
+
+
+def load_engine_asset(path: str, meshes: dict[str, Any]) -> Any:
+    """An engine content asset (basic shape, basic material), cached; None if it fails to load."""
+    if path not in meshes:
+        asset = unreal.load_asset(path)
+        if asset is None:
+            unreal.log_error(f"agrirecipe: engine asset {path} could not be loaded")
+        meshes[path] = asset
+    return meshes[path]
+
+
+def tint(
+    component: unreal.StaticMeshComponent,
+    engine: dict[str, Any],
+    rgb: list[float],
+    meshes: dict[str, Any],
+) -> None:
+    """Colour a basic-shape mesh through the engine's BasicShapeMaterial colour parameter."""
+    material = load_engine_asset(engine["basic_shape_material"], meshes)
+    if not isinstance(material, unreal.MaterialInterface):
+        return
+    instance = component.create_dynamic_material_instance(0, material)
+    instance.set_vector_parameter_value(
+        engine["colour_parameter"], unreal.LinearColor(r=rgb[0], g=rgb[1], b=rgb[2], a=1.0)
+    )
+
+
+def build_ground(
+    editor_actors: unreal.EditorActorSubsystem,
+    engine: dict[str, Any],
+    ground: dict[str, Any],
+    folder: str,
+    meshes: dict[str, Any],
+) -> None:
+    """A soil-coloured plane under a field (the 100 cm engine plane, scaled to the field)."""
+    actor = editor_actors.spawn_actor_from_class(
+        unreal.StaticMeshActor,
+        to_vector(ground["location_cm"]),
+        unreal.Rotator(roll=0.0, pitch=0.0, yaw=float(ground["yaw_deg"])),
+    )
+    actor.set_actor_label(ground["label"])
+    actor.set_folder_path(folder)
+    actor.set_actor_scale3d(to_vector(ground["scale"]))
+    component = actor.static_mesh_component
+    plane = load_engine_asset(engine["ground_mesh"], meshes)
+    if plane is not None:
+        component.set_static_mesh(plane)
+    tint(component, engine, engine["soil_rgb"], meshes)
+
+
+def build_environment(
+    editor_actors: unreal.EditorActorSubsystem, environment: dict[str, Any]
+) -> None:
+    """The sun as a DirectionalLight (and optionally a sky atmosphere and sky light)."""
+    sun = environment["sun"]
+    light = editor_actors.spawn_actor_from_class(
+        unreal.DirectionalLight,
+        to_vector(sun["location_cm"]),
+        unreal.Rotator(roll=0.0, pitch=float(sun["pitch_deg"]), yaw=float(sun["yaw_deg"])),
+    )
+    light.set_actor_label(sun["label"])
+    light.set_folder_path(environment["folder"])
+    sun_component = unreal.DirectionalLightComponent.cast(light.light_component)
+    sun_component.set_atmosphere_sun_light(True)
+    if environment["sky"]:
+        atmosphere = editor_actors.spawn_actor_from_class(
+            unreal.SkyAtmosphere,
+            to_vector(sun["location_cm"]),
+            unreal.Rotator(roll=0.0, pitch=0.0, yaw=0.0),
+        )
+        atmosphere.set_actor_label(environment["sky_atmosphere_label"])
+        atmosphere.set_folder_path(environment["folder"])
+        sky_light = editor_actors.spawn_actor_from_class(
+            unreal.SkyLight,
+            to_vector(sun["location_cm"]),
+            unreal.Rotator(roll=0.0, pitch=0.0, yaw=0.0),
+        )
+        sky_light.set_actor_label(environment["sky_light_label"])
+        sky_light.set_folder_path(environment["folder"])
+        sky_light.light_component.set_real_time_capture(True)
+
+
+def to_vector(values: list[float]) -> unreal.Vector:
+    """An unreal.Vector from three numbers (already in Unreal's frame and units)."""
+    return unreal.Vector(float(values[0]), float(values[1]), float(values[2]))
+
+
+def save_current_level() -> bool:
+    """Save the level the scene was built into (headless runs would lose it otherwise)."""
+    return bool(unreal.get_editor_subsystem(unreal.LevelEditorSubsystem).save_current_level())
+
+
+def run(scene_json: str, plants: PlantSource) -> dict[str, Any]:
+    """Parse the scene description, build it, and save the level when it asks to."""
+    scene = json.loads(scene_json)
+    summary = build_scene(scene, plants)
+    saving = scene["scene"]["save_level"] and not summary["cancelled"]
+    if saving and not save_current_level():
+        unreal.log_error("agrirecipe: the level could not be saved")
+    return summary
