@@ -18,6 +18,7 @@ from agrirecipe.resolve._intent import (
     SizeIntent,
     TraceStep,
 )
+from agrirecipe.resolve._pipeline import Resolution, build_recipe, resolve
 from agrirecipe.resolve._registry import (
     BUILTIN_RESOLVERS,
     available_resolvers,
@@ -33,13 +34,16 @@ __all__ = [
     "FieldIntent",
     "Hemisphere",
     "RelationIntent",
+    "Resolution",
     "ResolveContext",
     "Resolver",
     "SceneIntent",
     "SizeIntent",
     "TraceStep",
     "available_resolvers",
+    "build_recipe",
     "get_resolver",
     "register_resolver",
+    "resolve",
     "resolve_resolver_name",
 ]

@@ -1,0 +1,346 @@
+"""Decomposition: from role-tagged items to field mentions, their attributes and relations.
+
+The prompt is cut into *clauses* at separators, conjunctions and relation
+words. Inside a clause, consecutive compatible *heads* (crop, variety,
+category and plot words) form one *mention* ("a healthy Pink Lady apple
+orchard"); an incompatible head starts another ("an apple orchard with a
+carrot field"). Attributes (stage, season, month, health, size) attach to the
+mention of their clause; a clause without a head ("..., all in autumn",
+"..., ripe and healthy") attaches to every field when it says so ("all",
+"both"), else to its neighbour. A plural mention can be refined by the
+clauses after it ("Two orchards: one of Gala, one of Fuji"). Relation words
+link the mentions on either side ("north of", "next to", "between X and Y").
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+from agrirecipe._errors import PromptError, UnknownCropError
+from agrirecipe.resolve._intent import SizeIntent
+from agrirecipe.resolve._lexicon import Item
+
+__all__ = ["Clause", "Mention", "decompose"]
+
+_BOUNDARIES = ("separator", "conjunction", "relation", "between", "trailer")
+_HEADS = ("head", "plot", "other_crop")
+# Roles that may stand right before a head as part of its noun phrase.
+_PRE_HEAD = (
+    "number",
+    "quantity",
+    "distinct",
+    "other",
+    "stage",
+    "health",
+    "negation",
+    "weak_variety",
+    "size",
+    "filler",
+    "unknown",
+    "reference",
+    "container",
+    "season",
+)
+
+Interpretation = tuple[str, str | None, bool]  # (crop, variety or None, weak)
+
+
+@dataclass
+class Mention:
+    """A field request being read: heads, attributes, count, refinements."""
+
+    items: list[Item] = field(default_factory=list)
+    heads: list[Item] = field(default_factory=list)
+    interpretations: list[Interpretation] | None = None
+    category: str | None = None
+    plot: dict[str, Any] | None = None
+    count: int | None = None
+    distinct: bool = False
+    other: bool = False
+    clause: int = 0
+    refinements: list[Mention] = field(default_factory=list)
+    rest: Mention | None = None
+    is_refinement: bool = False
+
+    @property
+    def text(self) -> str:
+        """The mention's words as typed."""
+        ordered = sorted(self.items, key=lambda item: item.start)
+        return " ".join(item.raw for item in ordered)
+
+    @property
+    def has_crop(self) -> bool:
+        """Whether a crop was named (a strong interpretation exists)."""
+        return bool(self.interpretations) and any(
+            not weak for _, _, weak in self.interpretations or ()
+        )
+
+    def attributes(self, role: str) -> list[Item]:
+        """This mention's items of one attribute role."""
+        return [item for item in self.items if item.role == role]
+
+
+@dataclass
+class Clause:
+    """Items between two boundaries, with the boundary before it."""
+
+    items: list[Item]
+    link: Item | None
+    index: int
+    mentions: list[Mention] = field(default_factory=list)
+    loose: list[Item] = field(default_factory=list)
+    refined_parent: Mention | None = None
+
+    @property
+    def headless(self) -> bool:
+        """No mention in this clause."""
+        return not self.mentions
+
+
+def split_clauses(items: Sequence[Item]) -> list[Clause]:
+    """Cut the items at separators, conjunctions and relation words."""
+    clauses: list[Clause] = []
+    current: list[Item] = []
+    link: Item | None = None
+    for item in items:
+        if item.role in _BOUNDARIES:
+            clauses.append(Clause(current, link, len(clauses)))
+            current, link = [], item
+        else:
+            current.append(item)
+    clauses.append(Clause(current, link, len(clauses)))
+    return clauses
+
+
+def _interpretations(item: Item) -> list[Interpretation]:
+    result: list[Interpretation] = []
+    for sense in item.senses:
+        if sense.kind == "crop":
+            result.append((str(sense.value), None, False))
+        elif sense.kind == "variety" and sense.crop is not None:
+            result.append((sense.crop, str(sense.value), sense.weak))
+    return result
+
+
+def _combine(
+    left: list[Interpretation] | None, right: list[Interpretation]
+) -> list[Interpretation] | None:
+    """Interpretations both sides allow; None when they cannot be the same field."""
+    if left is None:
+        return list(right)
+    if not right:
+        return list(left)
+    combined: list[Interpretation] = []
+    for crop_a, variety_a, weak_a in left:
+        for crop_b, variety_b, weak_b in right:
+            if crop_a != crop_b:
+                continue
+            if variety_a and variety_b and variety_a != variety_b:
+                continue
+            entry = (crop_a, variety_a or variety_b, weak_a and weak_b)
+            if entry not in combined:
+                combined.append(entry)
+    return combined or None
+
+
+class _MentionBuilder:
+    """Reads one clause's items into mentions."""
+
+    def __init__(self, crop_categories: dict[str, str]) -> None:
+        self.crop_categories = crop_categories
+
+    def compatible(self, mention: Mention, item: Item) -> bool:
+        if item.role == "other_crop":
+            return (
+                mention.interpretations is None
+                and mention.category is None
+                and not any(h.role == "other_crop" for h in mention.heads)
+            )
+        if any(h.role == "other_crop" for h in mention.heads):
+            return item.role == "plot"
+        if item.role == "plot":
+            spec = item.data["value"]
+            if mention.plot is not None and mention.interpretations is None:
+                return False  # "a field orchard": two plots, two fields
+            if mention.has_crop and spec["options"] and len(spec["options"]) == 1:
+                return any(c == spec["options"][0] for c, _, _ in mention.interpretations or ())
+            return True
+        interpretations = _interpretations(item)
+        categories = [str(s.value) for s in item.senses_of("category")]
+        if categories and not interpretations:
+            if mention.category is not None and mention.category not in categories:
+                return False
+            if mention.has_crop:
+                return any(
+                    self.crop_categories.get(c) in categories
+                    for c, _, weak in mention.interpretations or ()
+                    if not weak
+                )
+            return True
+        if mention.category is not None:
+            interpretations = [
+                i for i in interpretations if self.crop_categories.get(i[0]) == mention.category
+            ]
+            if not interpretations:
+                return False
+        if mention.plot is not None:
+            options = mention.plot["options"]
+            if len(options) == 1 and not any(c == options[0] for c, _, _ in interpretations):
+                return False
+        return _combine(mention.interpretations, interpretations) is not None
+
+    def add_head(self, mention: Mention, item: Item) -> None:
+        mention.heads.append(item)
+        mention.items.append(item)
+        if item.role == "plot":
+            spec = item.data["value"]
+            if mention.plot is None or spec["narrows"]:
+                mention.plot = spec
+            return
+        if item.role == "other_crop":
+            return
+        categories = [str(s.value) for s in item.senses_of("category")]
+        interpretations = _interpretations(item)
+        if categories and not interpretations:
+            mention.category = categories[0]
+            if mention.interpretations is not None:
+                mention.interpretations = [
+                    i
+                    for i in mention.interpretations
+                    if self.crop_categories.get(i[0]) == mention.category
+                ] or mention.interpretations
+            return
+        if mention.category is not None:
+            interpretations = [
+                i for i in interpretations if self.crop_categories.get(i[0]) == mention.category
+            ] or interpretations
+        combined = _combine(mention.interpretations, interpretations)
+        mention.interpretations = combined if combined is not None else interpretations
+
+    def read(self, clause: Clause) -> None:
+        current: Mention | None = None
+        pending: list[Item] = []
+        for item in clause.items:
+            if item.role not in _HEADS:
+                pending.append(item)
+                continue
+            if current is None:
+                current = Mention(clause=clause.index)
+                self._absorb(current, pending, before_head=True)
+            elif self.compatible(current, item):
+                self._absorb(current, pending, before_head=False, counts=item.role == "head")
+            else:
+                _check_adjacent_variety(current, item, pending)
+                cut = _pre_head_start(pending)
+                self._absorb(current, pending[:cut], before_head=False)
+                clause.mentions.append(current)
+                current = Mention(clause=clause.index)
+                self._absorb(current, pending[cut:], before_head=True)
+            pending = []
+            self.add_head(current, item)
+        if current is not None:
+            self._absorb(current, pending, before_head=False)
+            clause.mentions.append(current)
+        else:
+            clause.loose = pending
+        for mention in clause.mentions:
+            _resolve_weak_varieties(mention)
+
+    @staticmethod
+    def _absorb(
+        mention: Mention, items: Sequence[Item], *, before_head: bool, counts: bool = True
+    ) -> None:
+        for item in items:
+            mention.items.append(item)
+            if item.role == "number" and (before_head or counts):
+                value = float(item.data.get("value", 1))
+                if before_head or item.norm not in ("a", "an"):
+                    mention.count = _count(value, item)
+            elif item.role == "quantity" and (before_head or counts):
+                mention.count = int(item.data["value"])
+            elif item.role == "distinct":
+                mention.distinct = True
+            elif item.role == "other":
+                mention.other = True
+
+
+def _count(value: float, item: Item) -> int:
+    if value != int(value) or value < 1:
+        raise PromptError(
+            f"cannot make {item.raw!r} fields",
+            stage="resolve",
+            hint="say how many fields as a whole number, e.g. 'two carrot fields'",
+        )
+    if value > 64:
+        raise PromptError(
+            f"{int(value)} fields is more than a scene holds",
+            stage="resolve",
+            hint="ask for at most 64 fields",
+        )
+    return int(value)
+
+
+def _pre_head_start(pending: Sequence[Item]) -> int:
+    """Where the next head's own noun phrase starts inside ``pending``."""
+    cut = len(pending)
+    while cut > 0 and pending[cut - 1].role in _PRE_HEAD:
+        cut -= 1
+        if pending[cut].role == "number" or pending[cut].norm in ("a", "an", "the"):
+            break
+    return cut
+
+
+def _check_adjacent_variety(mention: Mention, item: Item, pending: Sequence[Item]) -> None:
+    """'Nantes apples': a variety right before another crop's name is an unknown variety."""
+    if pending or not mention.heads or item.role != "head":
+        return
+    last = mention.heads[-1]
+    crops = [str(s.value) for s in item.senses_of("crop")]
+    varieties = [s for s in last.senses_of("variety") if not s.weak]
+    if crops and varieties and not last.senses_of("crop"):
+        owner = varieties[0].crop or ""
+        raise UnknownCropError(
+            f"{last.raw!r} is a variety of {owner}, not of {crops[0]}: "
+            f"no {crops[0]} variety is called {last.raw!r}",
+            requested=f"{last.raw} {item.raw}",
+            stage="resolve",
+            hint=f"did you mean {last.raw} {owner.lower()}s, or another {crops[0]} variety?",
+        )
+
+
+def _resolve_weak_varieties(mention: Mention) -> None:
+    """A weak name ("golden", "navel") names a variety only next to its crop's name."""
+    weak_items = [item for item in mention.items if item.role == "weak_variety"]
+    if not weak_items:
+        return
+    strong_crops = {c for c, _, weak in mention.interpretations or () if not weak}
+    for item in weak_items:
+        options: list[Interpretation] = [
+            (s.crop, str(s.value), False)
+            for s in item.senses_of("variety")
+            if s.crop in strong_crops
+        ]
+        if options and mention.interpretations is not None:
+            combined = _combine(mention.interpretations, options)
+            if combined:
+                mention.interpretations = combined
+                item.role = "head"
+                mention.heads.append(item)
+                continue
+        item.role = "filler"
+
+
+def decompose(items: Sequence[Item], crop_categories: dict[str, str]) -> list[Clause]:
+    """Clauses with their mentions (refinements not yet applied)."""
+    clauses = split_clauses(items)
+    builder = _MentionBuilder(crop_categories)
+    for clause in clauses:
+        builder.read(clause)
+    return clauses
+
+
+def size_of(mention: Mention) -> list[SizeIntent]:
+    """The sizes stated in a mention."""
+    return [item.data["size"] for item in mention.items if item.role == "size"]

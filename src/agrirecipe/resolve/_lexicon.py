@@ -1,0 +1,481 @@
+"""Tokens and the phrase lexicon: what each word or phrase of a prompt can mean.
+
+The lexicon joins three sources: the hierarchy (crop, variety and category
+names and aliases), the knowledge base (disease names, read as "Ill"), and
+the vocabulary files under ``resolve/data/`` (stages, seasons, health,
+months, numbers, units, relations, plot nouns, places, crops we do not hold).
+Matching is exact on normalised tokens, longest phrase first; fuzzy matching
+of typos (rapidfuzz) is a separate, explicit step (:meth:`Lexicon.fuzzy`).
+"""
+
+from __future__ import annotations
+
+import functools
+import re
+import unicodedata
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING, Any, Literal
+
+import yaml
+
+from agrirecipe.recipe import HealthState, RelationKind, Season, Stage
+
+if TYPE_CHECKING:
+    from agrirecipe.hierarchy import Hierarchy
+    from agrirecipe.knowledge import KnowledgeBase
+
+__all__ = [
+    "Item",
+    "Lexicon",
+    "Sense",
+    "Token",
+    "build_lexicon",
+    "normalise",
+    "tokenize",
+    "vocabulary",
+]
+
+DATA_DIR = Path(__file__).resolve().parent / "data"
+
+SenseKind = Literal[
+    "crop",
+    "variety",
+    "category",
+    "other_crop",
+    "plot",
+    "container",
+    "stage",
+    "season",
+    "season_modifier",
+    "month",
+    "health",
+    "negation",
+    "number",
+    "quantity",
+    "fraction",
+    "area_unit",
+    "length_unit",
+    "dimension_joiner",
+    "side",
+    "relation",
+    "relation_trailer",
+    "conjunction",
+    "separator",
+    "reference",
+    "all",
+    "distinct",
+    "other",
+    "of",
+    "hemisphere",
+    "place",
+    "non_agricultural",
+    "filler",
+]
+
+
+@dataclass(frozen=True, slots=True)
+class Sense:
+    """One meaning of a phrase; ``value`` depends on ``kind`` (a crop, a stage, a number...)."""
+
+    kind: SenseKind
+    value: Any = None
+    crop: str | None = None
+    weak: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class Token:
+    """A word, number or punctuation mark of the prompt, with its place in the original text."""
+
+    norm: str
+    raw: str
+    start: int
+    end: int
+
+    @property
+    def capitalised(self) -> bool:
+        """Written with a capital first letter (a hint that it is a name)."""
+        return self.raw[:1].isupper()
+
+
+@dataclass(slots=True)
+class Item:
+    """A run of tokens read as one phrase, with every sense the lexicon knows for it."""
+
+    tokens: tuple[Token, ...]
+    senses: tuple[Sense, ...]
+    fuzzy_score: float | None = None
+    fuzzy_phrase: str | None = None
+    role: str = ""
+    data: dict[str, Any] = field(default_factory=dict)
+
+    @property
+    def norm(self) -> str:
+        """The normalised words."""
+        return " ".join(token.norm for token in self.tokens)
+
+    @property
+    def raw(self) -> str:
+        """The words as typed."""
+        return " ".join(token.raw for token in self.tokens)
+
+    @property
+    def start(self) -> int:
+        """Character offset of the first token in the prompt."""
+        return self.tokens[0].start
+
+    @property
+    def end(self) -> int:
+        """Character offset just past the last token."""
+        return self.tokens[-1].end
+
+    def senses_of(self, *kinds: str) -> list[Sense]:
+        """The senses of the given kinds, in lexicon order."""
+        return [sense for sense in self.senses if sense.kind in kinds]
+
+    def has(self, *kinds: str) -> bool:
+        """Whether any sense is of one of ``kinds``."""
+        return any(sense.kind in kinds for sense in self.senses)
+
+
+def normalise(text: str) -> str:
+    """Lower case with accents folded to ASCII: ``"Doyenné"`` -> ``"doyenne"``."""
+    folded = unicodedata.normalize("NFKD", text)
+    return "".join(c for c in folded if not unicodedata.combining(c)).lower()
+
+
+# Numbers (with a decimal point or comma), words, and single punctuation marks.
+# Hyphens and apostrophes are dropped so "harvest-ready" == "harvest ready".
+_TOKEN = re.compile(r"\d+(?:[.,]\d+)*|[^\W\d_]+|[^\w\s'’\-]")
+
+
+def tokenize(prompt: str) -> list[Token]:
+    """The prompt's tokens; ``"50x100m"`` is ``50``, ``x``, ``100``, ``m``."""
+    text = prompt.replace("²", "2")
+    tokens = []
+    for match in _TOKEN.finditer(text):
+        raw = match.group()
+        norm = normalise(raw)
+        if re.fullmatch(r"\d+(?:[.,]\d+)*", raw):
+            norm = _number_text(raw)
+        tokens.append(Token(norm, prompt[match.start() : match.end()], match.start(), match.end()))
+    return tokens
+
+
+def _number_text(raw: str) -> str:
+    """``"10,000"`` -> ``"10000"``, ``"2,5"`` -> ``"2.5"``: a comma before 3 digits groups."""
+    parts = re.split(r"([.,])", raw)
+    digits = parts[0]
+    for index in range(1, len(parts), 2):
+        mark, group = parts[index], parts[index + 1]
+        if mark == "," and len(group) == 3 and "." not in digits:
+            digits += group
+        else:
+            digits += "." + group
+    return digits
+
+
+def number_value(text: str) -> float | None:
+    """The value of a numeric token's normalised text, or None."""
+    try:
+        return float(text)
+    except ValueError:
+        return None
+
+
+@functools.lru_cache(maxsize=4)
+def _load(name: str) -> dict[str, Any]:
+    data = yaml.safe_load((DATA_DIR / name).read_text(encoding="utf-8"))
+    assert isinstance(data, dict), name
+    return data
+
+
+def vocabulary() -> dict[str, Any]:
+    """The parsed ``vocabulary.yaml``."""
+    return _load("vocabulary.yaml")
+
+
+def _plurals(phrase: str) -> list[str]:
+    """Plural forms of a phrase's last word (``"cherry tomato"`` -> ``"cherry tomatoes"``)."""
+    head, _, last = phrase.rpartition(" ")
+    prefix = f"{head} " if head else ""
+    if not last.isalpha() or len(last) < 3:
+        return []
+    forms = [last + "s"]
+    if last.endswith(("s", "x", "ch", "sh", "o")):
+        forms.append(last + "es")
+    if last.endswith("y") and last[-2] not in "aeiou":
+        forms.append(last[:-1] + "ies")
+    return [prefix + form for form in forms]
+
+
+class Lexicon:
+    """Phrases (tuples of normalised words) and their senses."""
+
+    def __init__(self) -> None:
+        self.phrases: dict[tuple[str, ...], list[Sense]] = {}
+        self.max_words = 1
+        self.fuzzy_choices: list[str] = []
+        self._fuzzy_senses: dict[str, tuple[Sense, ...]] = {}
+
+    def add(self, phrase: str, sense: Sense, *, derived: bool = False) -> None:
+        """Add a sense to a phrase; a derived form (a plural) never shadows a real entry."""
+        words = tuple(normalise(phrase).split())
+        if not words:
+            return
+        senses = self.phrases.setdefault(words, [])
+        if derived and any(s.kind == sense.kind for s in senses):
+            return
+        if sense not in senses:
+            senses.append(sense)
+        self.max_words = max(self.max_words, len(words))
+
+    def add_with_plurals(self, phrase: str, sense: Sense) -> None:
+        """Add a phrase and the plural forms of its last word."""
+        self.add(phrase, sense)
+        for plural in _plurals(normalise(phrase)):
+            self.add(plural, sense, derived=True)
+
+    def lookup(self, words: Sequence[str]) -> list[Sense]:
+        """Senses of exactly these words (empty when unknown)."""
+        return self.phrases.get(tuple(words), [])
+
+    def tag(self, tokens: Sequence[Token]) -> list[Item]:
+        """Greedy longest-match of the tokens against the lexicon; unknown words get no sense."""
+        items: list[Item] = []
+        index = 0
+        while index < len(tokens):
+            for width in range(min(self.max_words, len(tokens) - index), 0, -1):
+                words = [t.norm for t in tokens[index : index + width]]
+                senses = self.phrases.get(tuple(words))
+                if senses:
+                    items.append(Item(tuple(tokens[index : index + width]), tuple(senses)))
+                    index += width
+                    break
+            else:
+                items.append(Item((tokens[index],), ()))
+                index += 1
+        return items
+
+    def prepare_fuzzy(self, kinds: Iterable[str]) -> None:
+        """Choose which phrases typos may be matched to (only phrases of 4+ letters)."""
+        wanted = set(kinds)
+        choices: dict[str, tuple[Sense, ...]] = {}
+        for words, senses in self.phrases.items():
+            text = " ".join(words)
+            kept = tuple(s for s in senses if s.kind in wanted)
+            if (
+                kept
+                and len(text.replace(" ", "")) >= 4
+                and not any(s.kind == "filler" for s in senses)
+            ):
+                choices[text] = kept
+        self.fuzzy_choices = sorted(choices)
+        self._fuzzy_senses = choices
+
+    def fuzzy(self, text: str) -> tuple[str, float, tuple[Sense, ...]] | None:
+        """The phrase a possibly misspelt ``text`` most likely means, or None.
+
+        rapidfuzz's normalised Indel similarity, with a cut-off that rises as
+        words get shorter (a typo in a 4-letter word is a different word).
+        """
+        from rapidfuzz import fuzz, process
+
+        letters = len(text.replace(" ", ""))
+        if letters < 4 or not self.fuzzy_choices:
+            return None
+        cutoff = 88.0 if letters <= 4 else 80.0
+        match = process.extractOne(text, self.fuzzy_choices, scorer=fuzz.ratio, score_cutoff=cutoff)
+        if match is None:
+            return None
+        phrase, score = str(match[0]), float(match[1])
+        return phrase, score, self._fuzzy_senses[phrase]
+
+
+@dataclass(frozen=True, slots=True)
+class OtherCrop:
+    """A crop people ask for that the hierarchy does not hold."""
+
+    name: str
+    category: str
+    like: tuple[str, ...]
+
+
+def other_crops(hierarchy: Hierarchy) -> dict[str, OtherCrop]:
+    """``other_crops.yaml`` less the crops this hierarchy does hold."""
+    known = {normalise(name) for name in hierarchy.crops}
+    known |= {normalise(alias) for crop in hierarchy.crops.values() for alias in crop.aliases}
+    result = {}
+    for name, entry in _load("other_crops.yaml")["crops"].items():
+        if normalise(name) in known or normalise(name) + "s" in known:
+            continue
+        like = tuple(crop for crop in entry.get("like", ()) if crop in hierarchy.crops)
+        result[name] = OtherCrop(name, str(entry["category"]), like)
+    return result
+
+
+def build_lexicon(
+    hierarchy: Hierarchy,
+    knowledge: KnowledgeBase,
+    *,
+    crop_names: bool = True,
+) -> Lexicon:
+    """The lexicon for a hierarchy and knowledge base (cached per pair).
+
+    With ``crop_names=False`` the hierarchy's crop and variety names are left
+    out, for strategies that map those by other means (embedding retrieval).
+    """
+    return _build_lexicon(hierarchy, knowledge, crop_names)
+
+
+@functools.lru_cache(maxsize=8)
+def _build_lexicon(hierarchy: Hierarchy, knowledge: KnowledgeBase, crop_names: bool) -> Lexicon:
+    vocab = vocabulary()
+    lexicon = Lexicon()
+    add = lexicon.add
+    weak_words = {normalise(w) for w in vocab["weak_variety_words"]}
+
+    # Vocabulary first, hierarchy names after: both senses are kept for a shared phrase.
+    for word in vocab["filler"]:
+        add(str(word), Sense("filler"))
+    stage: Stage
+    for stage, phrases in vocab["stages"].items():
+        for phrase in phrases:
+            add(phrase, Sense("stage", stage))
+    season: Season
+    for season, phrases in vocab["seasons"].items():
+        for phrase in phrases:
+            add(phrase, Sense("season", season))
+            for modifier in vocab["season_modifiers"]:
+                add(f"{modifier} {phrase}", Sense("season", season))
+    weak_months = {normalise(m) for m in vocab["weak_months"]}
+    for month, phrases in vocab["months"].items():
+        for phrase in phrases:
+            add(phrase, Sense("month", int(month), weak=normalise(phrase) in weak_months))
+            for modifier in vocab["season_modifiers"]:
+                add(f"{modifier} {phrase}", Sense("month", int(month)))
+    health: HealthState
+    for health, phrases in vocab["health"].items():
+        for phrase in phrases:
+            add(phrase, Sense("health", health))
+    for crop in hierarchy.crops.values():
+        disease = knowledge.crop_file(crop.name).disease.name
+        for name in _disease_names(disease):
+            add(name, Sense("health", "Ill"))
+    for phrase in vocab["negations"]:
+        add(phrase, Sense("negation"))
+    for phrase, value in vocab["numbers"].items():
+        add(phrase, Sense("number", int(value)))
+    for phrase, value in vocab["quantities"].items():
+        add(phrase, Sense("quantity", int(value)))
+    for phrase, value in vocab["fractions"].items():
+        add(phrase, Sense("fraction", float(value)))
+    for phrase, value in vocab["area_units"].items():
+        add(phrase, Sense("area_unit", float(value)))
+    for phrase, value in vocab["length_units"].items():
+        add(phrase, Sense("length_unit", float(value)))
+    for phrase in vocab["dimension_joiners"]:
+        add(phrase, Sense("dimension_joiner"))
+    for side, phrases in vocab["side_words"].items():
+        for phrase in phrases:
+            add(phrase, Sense("side", side))
+    kind: RelationKind
+    for kind, phrases in vocab["relations"].items():
+        for phrase in phrases:
+            add(phrase, Sense("relation", kind))
+    for kind, phrases in vocab["relation_trailers"].items():
+        for phrase in phrases:
+            add(phrase, Sense("relation_trailer", kind))
+    for phrase in vocab["conjunctions"]:
+        add(phrase, Sense("conjunction"))
+    for phrase in vocab["separators"]:
+        add(phrase, Sense("separator"))
+    for phrase, value in vocab["references"].items():
+        add(phrase, Sense("reference", value))
+    for phrase in vocab["all_words"]:
+        add(phrase, Sense("all"))
+    for phrase in vocab["distinct_words"]:
+        add(phrase, Sense("distinct"))
+    for phrase in vocab["other_words"]:
+        add(phrase, Sense("other"))
+    for phrase in vocab["of_words"]:
+        add(phrase, Sense("of"))
+    for phrase, spec in vocab["plot_nouns"].items():
+        add(phrase, Sense("plot", _plot_spec(phrase, spec or {}, hierarchy, knowledge)))
+    for phrase in vocab["containers"]["words"]:
+        add(phrase, Sense("container"))
+    for phrase in vocab["non_agricultural"]:
+        add(phrase, Sense("non_agricultural", phrase))
+    places = _load("places.yaml")
+    for hemisphere, spec in places["hemispheres"].items():
+        for phrase in spec["phrases"]:
+            add(phrase, Sense("hemisphere", (hemisphere, float(spec["latitude_deg"]))))
+    for phrase, latitude in places["places"].items():
+        add(phrase, Sense("place", (phrase, float(latitude))))
+    for name, other in other_crops(hierarchy).items():
+        lexicon.add_with_plurals(name, Sense("other_crop", other))
+
+    for category in hierarchy.categories.values():
+        for phrase in (category.name, *category.aliases):
+            lexicon.add_with_plurals(phrase, Sense("category", category.name))
+    if crop_names:
+        for crop in hierarchy.crops.values():
+            for phrase in (crop.name, *crop.aliases):
+                lexicon.add_with_plurals(phrase, Sense("crop", crop.name))
+            for variety in crop.varieties:
+                for phrase in (variety.name, *variety.aliases):
+                    weak = normalise(phrase) in weak_words
+                    lexicon.add_with_plurals(
+                        phrase, Sense("variety", variety.name, crop=crop.name, weak=weak)
+                    )
+                # "Nantes carrots": the variety followed by its crop's name.
+    lexicon.prepare_fuzzy(
+        ("crop", "variety", "category", "plot", "stage", "season", "month", "health")
+    )
+    return lexicon
+
+
+def _singular(word: str) -> str:
+    if word.endswith(("ches", "shes")):
+        return word[:-2]
+    if word.endswith("s") and not word.endswith("ss"):
+        return word[:-1]
+    return word
+
+
+def _disease_names(disease: str) -> list[str]:
+    """``"citrus greening (HLB)"`` -> ``["citrus greening (hlb)", "citrus greening", "hlb"]``."""
+    names = [disease]
+    inner = re.findall(r"\(([^)]*)\)", disease)
+    outer = re.sub(r"\([^)]*\)", "", disease).strip()
+    names += [outer, *inner]
+    return [name for name in names if name]
+
+
+def _plot_spec(
+    phrase: str, spec: dict[str, Any], hierarchy: Hierarchy, knowledge: KnowledgeBase
+) -> dict[str, Any]:
+    """A plot noun's meaning: its label noun, plurality and the crops it allows."""
+    options: list[str] = [c for c in spec.get("crops", ()) if c in hierarchy.crops]
+    forms = set(spec.get("growth_forms", ()))
+    if forms:
+        excluded = set(spec.get("exclude", ()))
+        options += [
+            crop
+            for crop in hierarchy.crops
+            if crop not in excluded
+            and crop not in options
+            and knowledge.crop_file(crop).growth_form in forms
+        ]
+    category = spec.get("category")
+    if category is not None and category not in hierarchy.categories:
+        category = None
+    return {
+        "noun": spec.get("noun") or _singular(phrase.split()[-1]),
+        "plural": bool(spec.get("plural", False)),
+        "options": tuple(options),
+        "category": category,
+        "narrows": bool(options) or category is not None,
+    }

@@ -1,0 +1,710 @@
+"""The lexical reader: a prompt to a :class:`SceneIntent`, shared by the rules, embedding
+and hybrid strategies.
+
+Strategies differ in how they read words the lexicon does not know exactly
+(typos, unseen names) and how they find the crops nearest to an unknown one:
+they pass those two functions in. Everything else (decomposition, attribute
+attachment, months and hemispheres, counts, refinements, relations, and the
+errors for what cannot be honoured) is the same reading of the same words.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from typing import Any, cast
+
+from agrirecipe._errors import PromptError, UnknownCropError
+from agrirecipe.recipe import HealthState, Season, Stage
+from agrirecipe.resolve._decompose import Clause, Mention, decompose
+from agrirecipe.resolve._intent import (
+    Candidate,
+    FieldIntent,
+    Hemisphere,
+    RelationIntent,
+    ResolveContext,
+    SceneIntent,
+    SizeIntent,
+    TraceStep,
+)
+from agrirecipe.resolve._lexicon import Item, Lexicon, OtherCrop, tokenize, vocabulary
+from agrirecipe.resolve._scan import assign_roles, read_latitude, read_sizes
+
+__all__ = ["NearestCrops", "PromptReader", "UnknownWords"]
+
+#: Reads unknown words in place (typos, unseen names); returns the new items and trace steps.
+UnknownWords = Callable[[list[Item], Lexicon], tuple[list[Item], list[TraceStep]]]
+#: The known crops nearest to a name the hierarchy does not hold, best first.
+NearestCrops = Callable[[str, Sequence[str]], tuple[str, ...]]
+
+_EXAMPLES = (
+    "'a healthy Pink Lady apple orchard in summer', "
+    "'two carrot fields next to a wheat field', 'some fruit and vegetable fields'"
+)
+_ATTRIBUTE_ROLES = ("stage", "season", "month", "health", "negation", "size", "all")
+
+
+@dataclass
+class _Field:
+    """A field being assembled from its mention, its refinement and scene-wide words."""
+
+    mention: Mention
+    items: list[Item]
+    interpretations: list[tuple[str, str | None, bool]] | None
+    category: str | None
+    plot: dict[str, Any] | None
+    group: int | None = None
+    extra: dict[str, Any] = field(default_factory=dict)
+
+
+class PromptReader:
+    """Reads prompts for one hierarchy and knowledge base with one strategy's word readers."""
+
+    def __init__(
+        self,
+        context: ResolveContext,
+        lexicon: Lexicon,
+        *,
+        unknown_words: UnknownWords,
+        nearest_crops: NearestCrops,
+        strategy: str,
+    ) -> None:
+        self.context = context
+        self.lexicon = lexicon
+        self.unknown_words = unknown_words
+        self.nearest_crops = nearest_crops
+        self.strategy = strategy
+        self.crop_categories = {c.name: c.category for c in context.hierarchy.crops.values()}
+        self.trace: list[TraceStep] = []
+        self.warnings: list[str] = []
+
+    # --- the whole reading ---
+
+    def read(self, prompt: str) -> SceneIntent:
+        """What ``prompt`` asks for."""
+        if not isinstance(prompt, str) or not prompt.strip():
+            raise PromptError(
+                "the prompt is empty",
+                stage="resolve",
+                hint=f"describe the fields you want, e.g. {_EXAMPLES}",
+            )
+        tokens = tokenize(prompt)
+        items = self.lexicon.tag(tokens)
+        items, steps = self.unknown_words(items, self.lexicon)
+        self.trace.extend(steps)
+        assign_roles(items)
+        prompt_latitude, latitude_text, items = read_latitude(prompt, items)
+        items = read_sizes(items)
+        self._reject_other_crops(items)
+        clauses = decompose(items, self.crop_categories)
+        mentions = self._apply_refinements(clauses)
+        scene_items = self._attach_loose(clauses, mentions)
+        latitude, hemisphere, place = self._place(items, prompt_latitude, latitude_text)
+        if not mentions:
+            mentions = self._container_fields(items, clauses)
+        self._reject_unknown_names(items, mentions)
+        fields = self._expand(mentions)
+        relations = self._relations(clauses, mentions, fields)
+        scene_season = self._apply_scene_items(scene_items, fields, hemisphere)
+        intents = [self._field_intent(f, hemisphere) for f in fields]
+        for index, intent in enumerate(intents):
+            self.trace.append(
+                TraceStep(
+                    stage="decompose",
+                    subject=f"field {index + 1}",
+                    detail=f"{intent.text!r} -> " + _describe(intent),
+                )
+            )
+        ignored = sorted({i.raw for i in items if i.role == "non_agricultural"})
+        if ignored:
+            self.warnings.append(
+                "ignored " + ", ".join(repr(w) for w in ignored) + ": agrirecipe builds crop "
+                "fields, not other scenery"
+            )
+        return SceneIntent(
+            prompt=prompt,
+            fields=tuple(intents),
+            relations=tuple(relations),
+            season=scene_season,
+            hemisphere=hemisphere,
+            latitude_deg=latitude,
+            place=place,
+            warnings=tuple(self.warnings),
+            trace=tuple(self.trace),
+            resolver=self.strategy,
+        )
+
+    # --- unknown and non-agricultural requests ---
+
+    def _reject_other_crops(self, items: Sequence[Item]) -> None:
+        for item in items:
+            if item.role != "other_crop":
+                continue
+            other: OtherCrop = item.senses_of("other_crop")[0].value
+            nearest = self.nearest_crops(other.name, other.like)
+            raise UnknownCropError(
+                f"{item.raw!r} is not a crop of the asset hierarchy ({other.name} is unknown)",
+                requested=item.raw,
+                nearest=nearest,
+                stage="resolve",
+            )
+
+    def _reject_unknown_names(self, items: Sequence[Item], mentions: Sequence[Mention]) -> None:
+        """Unknown words where a crop or variety name belongs are unknown crops, not fillers."""
+        position = {id(item): index for index, item in enumerate(items)}
+        for mention in mentions:
+            for sub in (mention, *mention.refinements):
+                plots = [h for h in sub.heads if h.role == "plot"]
+                named = sub.has_crop or sub.category is not None
+                if plots and not named and not plots[0].data["value"]["narrows"]:
+                    word = _word_before(items, position.get(id(plots[0])))
+                    word = word or _word_after_of(items, position.get(id(plots[0])))
+                    if word is not None:
+                        self._unknown_crop(word.raw)
+                crops = [h for h in sub.heads if h.role == "head" and h.senses_of("crop")]
+                if crops and not any(h.senses_of("variety") for h in sub.heads):
+                    word = _word_before(items, position.get(id(crops[0])))
+                    if word is not None and word.tokens[0].capitalised and position[id(word)] > 0:
+                        crop = str(crops[0].senses_of("crop")[0].value)
+                        varieties = [v.name for v in self.context.hierarchy.crop(crop).varieties]
+                        raise UnknownCropError(
+                            f"{word.raw!r} is not one of the {crop} varieties of the hierarchy",
+                            requested=f"{word.raw} {crops[0].raw}",
+                            nearest=_by_spelling(word.raw, varieties),
+                            stage="resolve",
+                            hint=f"{crop} varieties: " + ", ".join(varieties),
+                        )
+
+    def _unknown_crop(self, word: str) -> None:
+        nearest = self.nearest_crops(word, ())
+        raise UnknownCropError(
+            f"{word!r} is not a crop of the asset hierarchy",
+            requested=word,
+            nearest=nearest,
+            stage="resolve",
+        )
+
+    def _container_fields(self, items: Sequence[Item], clauses: Sequence[Clause]) -> list[Mention]:
+        """No field named: "a mixed farm" stands for a few fields; anything else is an error."""
+        non_agricultural = [item.raw for item in items if item.role == "non_agricultural"]
+        if non_agricultural:
+            raise PromptError(
+                f"{non_agricultural[0]!r} is not an agricultural scene",
+                stage="resolve",
+                hint=f"agrirecipe builds fields of crops, e.g. {_EXAMPLES}",
+            )
+        containers = [item for item in items if item.role == "container"]
+        if not containers:
+            words = [i.raw for i in items if i.role == "unknown"]
+            detail = (
+                f" (did not understand {', '.join(repr(w) for w in words[:5])})" if words else ""
+            )
+            raise PromptError(
+                f"no crop or field found in the prompt{detail}",
+                stage="resolve",
+                hint="name a crop, a variety or a kind of field, e.g. " + _EXAMPLES,
+            )
+        mention = Mention(items=[i for c in clauses for i in c.loose], clause=0)
+        mention.heads.append(containers[0])
+        mention.count = int(vocabulary()["containers"]["default_fields"])
+        numbers = [i for i in mention.items if i.role in ("number", "quantity")]
+        if numbers and numbers[-1].norm not in ("a", "an"):
+            mention.count = int(float(numbers[-1].data["value"]))
+        mention.distinct = True
+        for clause in clauses:
+            clause.loose = []
+        self.trace.append(
+            TraceStep(
+                stage="decompose",
+                subject=containers[0].raw,
+                detail=f"no crop named: {mention.count} fields of different crops",
+            )
+        )
+        return [mention]
+
+    # --- structure ---
+
+    def _apply_refinements(self, clauses: Sequence[Clause]) -> list[Mention]:
+        """Fold "one of Gala, one of Fuji" into the plural mention before them."""
+        top: list[Mention] = []
+        parent: Mention | None = None
+        for clause in clauses:
+            first = next(
+                (i for i in clause.items if i.role != "filler" or i.norm not in ("the",)), None
+            )
+            is_reference = first is not None and (
+                first.role == "reference"
+                or (first.role == "number" and bool(first.data.get("reference")))
+            )
+            link = clause.link.role if clause.link is not None else None
+            if (
+                is_reference
+                and parent is not None
+                and link in ("separator", "conjunction")
+                and len(clause.mentions) <= 1
+            ):
+                sub = (
+                    clause.mentions[0]
+                    if clause.mentions
+                    else Mention(items=list(clause.loose), clause=clause.index)
+                )
+                if _fits(sub, parent, self.crop_categories) and _room(parent):
+                    assert first is not None
+                    sub.is_refinement = True
+                    if first.data.get("value") == "rest":
+                        parent.rest = sub
+                    else:
+                        parent.refinements.append(sub)
+                    clause.mentions, clause.loose = [], []
+                    clause.refined_parent = parent
+                    continue
+            top.extend(clause.mentions)
+            if clause.mentions:
+                last = clause.mentions[-1]
+                parent = last if (last.count or 1) >= 2 else None
+        return top
+
+    def _attach_loose(self, clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list[Item]:
+        """Give each head-less clause's attributes to its field(s); return scene-wide items."""
+        scene: list[Item] = []
+        for position, clause in enumerate(clauses):
+            attributes = [i for i in clause.loose if i.role in _ATTRIBUTE_ROLES]
+            if not attributes or not mentions:
+                continue
+            before = [m for c in clauses[:position] for m in c.mentions]
+            refined = clauses[position - 1].refined_parent if position else None
+            after = [m for c in clauses[position + 1 :] for m in c.mentions]
+            says_all = any(i.role == "all" for i in attributes)
+            seasons = [i for i in attributes if i.role in ("season", "month")]
+            others = [i for i in attributes if i.role not in ("season", "month", "all")]
+            if says_all:
+                scene.extend(attributes)
+                continue
+            if not before or (len(mentions) > 1 and not after):
+                # Opening words ("In autumn, ...") or closing words after several fields:
+                # a time of year belongs to the whole scene.
+                scene.extend(seasons)
+                seasons = []
+            target: Mention | None
+            forward = after[0] if after else None
+            next_link = clauses[position + 1].link if position + 1 < len(clauses) else None
+            starts_bare = (
+                position + 1 < len(clauses)
+                and bool(clauses[position + 1].items)
+                and clauses[position + 1].items[0].role not in ("number", "quantity", "filler")
+            )
+            if not before or (
+                next_link is not None
+                and next_link.role == "conjunction"
+                and forward is not None
+                and forward.clause == position + 1
+                and starts_bare
+            ):
+                target = forward
+            elif refined is not None and refined.refinements:
+                target = refined.refinements[-1]
+            else:
+                target = before[-1]
+            if target is not None:
+                target.items.extend(seasons + others)
+        return scene
+
+    def _place(
+        self, items: Sequence[Item], prompt_latitude: float | None, latitude_text: str | None
+    ) -> tuple[float | None, Hemisphere | None, str | None]:
+        place = next((i for i in items if i.role == "place"), None)
+        hemisphere_item = next((i for i in items if i.role == "hemisphere"), None)
+        latitude: float | None = None
+        name: str | None = None
+        if prompt_latitude is not None:
+            latitude, name = prompt_latitude, latitude_text
+        elif place is not None:
+            name, latitude = place.data["value"]
+        elif hemisphere_item is not None:
+            latitude = float(hemisphere_item.data["value"][1])
+            name = hemisphere_item.raw
+        if self.context.latitude_deg is not None:
+            if latitude is not None and (latitude < 0) != (self.context.latitude_deg < 0):
+                self.warnings.append(
+                    f"the prompt says {name!r} but latitude_deg={self.context.latitude_deg:g} "
+                    "was given; the argument wins"
+                )
+            latitude = self.context.latitude_deg
+        hemisphere: Hemisphere | None = None
+        if latitude is not None:
+            hemisphere = "south" if latitude < 0 else "north"
+            self.trace.append(
+                TraceStep(
+                    stage="normalise",
+                    subject=name or "latitude_deg",
+                    detail=f"latitude {latitude:g}, {hemisphere}ern hemisphere",
+                )
+            )
+        return latitude, hemisphere, name
+
+    # --- fields ---
+
+    def _expand(self, mentions: Sequence[Mention]) -> list[_Field]:
+        fields: list[_Field] = []
+        groups: dict[int, int] = {}
+        next_group = 0
+        for mention in mentions:
+            count = max(mention.count or 1, len(mention.refinements))
+            members: list[_Field] = []
+            for index in range(count):
+                sub = (
+                    mention.refinements[index] if index < len(mention.refinements) else mention.rest
+                )
+                members.append(self._member(mention, sub))
+            if mention.distinct and count > 1:
+                for member in members:
+                    member.group = next_group
+                next_group += 1
+            if mention.other and fields:
+                group = next((f.group for f in fields if f.group is not None), None)
+                if group is None:
+                    group, next_group = next_group, next_group + 1
+                for member in fields + members:
+                    if member.group is None or member.group == group:
+                        member.group = group
+                    else:
+                        groups[member.group] = group
+            fields.extend(members)
+        for member in fields:
+            while member.group is not None and member.group in groups:
+                member.group = groups[member.group]
+        return fields
+
+    def _member(self, mention: Mention, sub: Mention | None) -> _Field:
+        interpretations = mention.interpretations
+        category, plot = mention.category, mention.plot
+        items = list(mention.items)
+        if sub is not None:
+            if sub.interpretations is not None:
+                crops = {c for c, _, _ in interpretations or ()}
+                narrowed = [i for i in sub.interpretations if not crops or i[0] in crops]
+                interpretations = narrowed or sub.interpretations
+            category = sub.category or category
+            if sub.plot is not None and sub.plot["narrows"]:
+                plot = sub.plot
+            items = (
+                [i for i in items if i.role not in _ATTRIBUTE_ROLES]
+                + sub.items
+                + [i for i in items if i.role in _ATTRIBUTE_ROLES]
+            )
+        return _Field(mention, items, interpretations, category, plot)
+
+    def _apply_scene_items(
+        self, scene_items: Sequence[Item], fields: Sequence[_Field], hemisphere: Hemisphere | None
+    ) -> Season | None:
+        if not scene_items:
+            return None
+        says_all = any(i.role == "all" for i in scene_items)
+        seasons = _values(scene_items, ("season", "month"), hemisphere)
+        if len(set(seasons)) > 1:
+            raise PromptError(
+                "the scene is said to be in " + " and ".join(sorted(set(seasons))),
+                stage="resolve",
+                hint="a scene shows one moment: state one season (fields may differ if "
+                "each says its own)",
+            )
+        if says_all:
+            for item in scene_items:
+                if item.role not in ("season", "month", "all"):
+                    for member in fields:
+                        member.items.append(item)
+            for member in fields:
+                own = _values(member.items, ("season", "month"), hemisphere)
+                if own and seasons and own[0] != seasons[0]:
+                    raise PromptError(
+                        f"{member.mention.text!r} is said to be in {own[0]} but all fields "
+                        f"in {seasons[0]}",
+                        stage="resolve",
+                        hint="state the season once for all fields or per field",
+                    )
+        return cast(Season, seasons[0]) if seasons else None
+
+    def _field_intent(self, member: _Field, hemisphere: Hemisphere | None) -> FieldIntent:
+        text = member.mention.text
+        for sub in member.mention.refinements or []:
+            if any(item in member.items for item in sub.items):
+                text = f"{text} ({sub.text})"
+        stage: Stage | None = _single(member.items, ("stage",), "stage", text, hemisphere)  # type: ignore[assignment]
+        season: Season | None = _single(
+            member.items, ("season", "month"), "season", text, hemisphere
+        )  # type: ignore[assignment]
+        health: HealthState | None = _health(member.items, text)
+        sizes = [item.data["size"] for item in member.items if item.role == "size"]
+        size = _single_size(sizes, text)
+        interpretations = member.interpretations or []
+        strong = [i for i in interpretations if not i[2]] or []
+        crop = variety = None
+        if strong:
+            crop = strong[0][0]
+            varieties = {v for c, v, _ in strong if c == crop and v is not None}
+            variety = varieties.pop() if len(varieties) == 1 else None
+            self._trace_choice(member, crop, variety, strong)
+        plot = member.plot or {}
+        options: tuple[str, ...] = tuple(plot.get("options", ()))
+        category = member.category
+        if category is not None:
+            options = tuple(o for o in options if self.crop_categories.get(o) == category)
+        if crop is None and len(options) == 1:
+            crop = options[0]
+        heads = [h for h in member.mention.heads if h.role in ("head", "plot")]
+        mention_words = " ".join(h.raw for h in heads) or None
+        noun = plot.get("noun") if plot else None
+        return FieldIntent(
+            text=text,
+            mention=mention_words,
+            noun=noun,
+            category=category if crop is None else self.crop_categories.get(crop),
+            crop=crop,
+            variety=variety,
+            stage=stage,
+            season=season,
+            health=health,
+            size=size,
+            generic=crop is None,
+            crop_options=options if crop is None else (),
+            distinct_group=member.group,
+        )
+
+    def _trace_choice(
+        self,
+        member: _Field,
+        crop: str,
+        variety: str | None,
+        strong: Sequence[tuple[str, str | None, bool]],
+    ) -> None:
+        candidates: list[Candidate] = []
+        for head in member.mention.heads:
+            score = head.fuzzy_score if head.fuzzy_score is not None else 100.0
+            source = head.data.get("source", "fuzzy" if head.fuzzy_score is not None else "lexicon")
+            for c, v, _ in strong:
+                value = f"{c}/{v}" if v else c
+                if all(x.value != value for x in candidates):
+                    candidates.append(Candidate(value=value, score=score, source=source))
+        self.trace.append(
+            TraceStep(
+                stage="normalise",
+                subject=member.mention.text,
+                detail=f"crop {crop}" + (f", variety {variety}" if variety else ""),
+                candidates=tuple(candidates),
+            )
+        )
+
+    # --- relations ---
+
+    def _relations(
+        self, clauses: Sequence[Clause], mentions: Sequence[Mention], fields: Sequence[_Field]
+    ) -> list[RelationIntent]:
+        members: dict[int, list[int]] = {}
+        for index, member in enumerate(fields):
+            members.setdefault(id(member.mention), []).append(index)
+        relations: list[RelationIntent] = []
+        for position, clause in enumerate(clauses):
+            link = clause.link
+            if link is None or link.role not in ("relation", "between", "trailer"):
+                continue
+            before = [m for c in clauses[:position] for m in c.mentions]
+            after = [m for c in clauses[position:] for m in c.mentions]
+            pairs = self._relation_mentions(link, before, after)
+            if pairs is None:
+                self.warnings.append(f"ignored {link.raw!r}: it needs a field on each side")
+                continue
+            kind, subject, objects = pairs
+            subject_fields = members.get(id(subject), [])
+            object_fields = [members.get(id(o), []) for o in objects]
+            if not subject_fields or not all(object_fields):
+                continue
+            if kind == "between":
+                pair = (object_fields[0][0], object_fields[1][0])
+                relations.append(
+                    RelationIntent(
+                        kind="between", subject=subject_fields[0], objects=pair, text=link.raw
+                    )
+                )
+            else:
+                for s in subject_fields:
+                    for o in object_fields[0]:
+                        relations.append(
+                            RelationIntent(kind=kind, subject=s, objects=(o,), text=link.raw)
+                        )
+            self.trace.append(
+                TraceStep(
+                    stage="decompose",
+                    subject=link.raw,
+                    detail=f"{subject.text!r} {kind} "
+                    + " and ".join(repr(o.text) for o in objects),
+                )
+            )
+        return relations
+
+    @staticmethod
+    def _relation_mentions(
+        link: Item, before: Sequence[Mention], after: Sequence[Mention]
+    ) -> tuple[Any, Mention, tuple[Mention, ...]] | None:
+        kind = link.data.get("value", "between") if link.role != "between" else "between"
+        if link.role == "between":
+            if len(after) < 2:
+                return None
+            if before:
+                return "between", before[-1], (after[0], after[1])
+            if len(after) >= 3:
+                return "between", after[2], (after[0], after[1])
+            return None
+        if link.role == "trailer":
+            if len(before) >= 2 and before[-1].clause == before[-2].clause:
+                return kind, before[-1], (before[-2],)
+            if before and after:
+                return kind, after[0], (before[-1],)
+            if len(before) >= 2:
+                return kind, before[-1], (before[-2],)
+            return None
+        if before and after:
+            return kind, before[-1], (after[0],)
+        if len(after) >= 2:
+            return kind, after[1], (after[0],)
+        return None
+
+
+# --- helpers ---
+
+
+def _fits(sub: Mention, parent: Mention, crop_categories: dict[str, str]) -> bool:
+    """Whether a refinement clause can describe members of ``parent``."""
+    if sub.interpretations is None:
+        return sub.category is None or sub.category == parent.category or parent.category is None
+    parent_crops = {c for c, _, _ in parent.interpretations or ()}
+    sub_crops = {c for c, _, weak in sub.interpretations if not weak}
+    if parent_crops:
+        return bool(parent_crops & sub_crops)
+    if parent.category is not None:
+        return any(crop_categories.get(c) == parent.category for c in sub_crops)
+    if parent.plot is not None and parent.plot["options"]:
+        return bool(set(parent.plot["options"]) & sub_crops)
+    return True
+
+
+def _room(parent: Mention) -> bool:
+    return parent.rest is None and len(parent.refinements) < (parent.count or 1)
+
+
+def _word_before(items: Sequence[Item], index: int | None) -> Item | None:
+    if index is None or index == 0:
+        return None
+    word = items[index - 1]
+    return word if word.role == "unknown" else None
+
+
+def _word_after_of(items: Sequence[Item], index: int | None) -> Item | None:
+    if index is None or index + 2 >= len(items):
+        return None
+    if items[index + 1].role == "of" and items[index + 2].role == "unknown":
+        return items[index + 2]
+    return None
+
+
+def _by_spelling(word: str, names: Sequence[str], limit: int = 3) -> tuple[str, ...]:
+    from rapidfuzz import fuzz, process
+
+    matches = process.extract(word, list(names), scorer=fuzz.WRatio, limit=limit)
+    return tuple(str(m[0]) for m in matches)
+
+
+def _month_season(month: int, hemisphere: Hemisphere | None) -> Season:
+    table = vocabulary()["month_seasons_north"]
+    season: Season = next(s for s, months in table.items() if month in months)
+    if hemisphere == "south":
+        season = {"Spring": "Fall", "Summer": "Winter", "Fall": "Spring", "Winter": "Summer"}[
+            season
+        ]  # type: ignore[assignment]
+    return season
+
+
+def _values(
+    items: Sequence[Item], roles: tuple[str, ...], hemisphere: Hemisphere | None
+) -> list[str]:
+    values: list[str] = []
+    for item in items:
+        if item.role not in roles:
+            continue
+        if item.role == "month":
+            values.append(_month_season(int(item.data["value"]), hemisphere))
+        else:
+            values.append(str(item.data["value"]))
+    return values
+
+
+def _single(
+    items: Sequence[Item],
+    roles: tuple[str, ...],
+    attribute: str,
+    text: str,
+    hemisphere: Hemisphere | None,
+) -> str | None:
+    values = _values(items, roles, hemisphere)
+    distinct = sorted(set(values))
+    if len(distinct) > 1:
+        words = [i.raw for i in items if i.role in roles]
+        raise PromptError(
+            f"{text!r} is said to be both " + " and ".join(distinct) + f" ({', '.join(words)})",
+            stage="resolve",
+            hint=f"a field has one {attribute}; describe different fields separately",
+        )
+    return distinct[0] if distinct else None
+
+
+def _health(items: Sequence[Item], text: str) -> HealthState | None:
+    ordered = sorted(items, key=lambda item: item.start)
+    values: list[HealthState] = []
+    for index, item in enumerate(ordered):
+        if item.role != "health":
+            continue
+        value: HealthState = item.data["value"]
+        negated = index > 0 and ordered[index - 1].role == "negation"
+        if negated:
+            value = "Healthy"
+        values.append(value)
+    distinct: list[HealthState] = sorted(set(values))
+    if len(distinct) > 1:
+        words = [i.raw for i in ordered if i.role == "health"]
+        raise PromptError(
+            f"{text!r} is said to be both healthy and ill ({', '.join(words)})",
+            stage="resolve",
+            hint="a field is either healthy or ill; describe different fields separately",
+        )
+    return distinct[0] if distinct else None
+
+
+def _single_size(sizes: Sequence[SizeIntent], text: str) -> SizeIntent | None:
+    unique = {(s.width_m, s.length_m, s.area_m2): s for s in sizes}
+    if len(unique) > 1:
+        raise PromptError(
+            f"{text!r} is given two sizes: " + " and ".join(s.text for s in unique.values()),
+            stage="resolve",
+            hint="give one size per field",
+        )
+    return next(iter(unique.values()), None)
+
+
+def _describe(intent: FieldIntent) -> str:
+    parts = [intent.variety or "", intent.crop or f"any {intent.category or 'crop'}"]
+    words = " ".join(p for p in parts if p)
+    stated = [
+        f"{name}={value}"
+        for name, value in (
+            ("stage", intent.stage),
+            ("season", intent.season),
+            ("health", intent.health),
+        )
+        if value is not None
+    ]
+    if intent.size is not None:
+        stated.append(f"size={intent.size.text}")
+    if intent.crop_options:
+        stated.append("options=" + "/".join(intent.crop_options))
+    if intent.distinct_group is not None:
+        stated.append(f"distinct group {intent.distinct_group}")
+    return words + (f" ({', '.join(stated)})" if stated else "")

@@ -1,0 +1,519 @@
+"""``resolve()``: prompt -> :class:`SceneIntent` (a strategy) -> validated :class:`SceneRecipe`.
+
+After the strategy has read the prompt, the same stages run for every
+strategy: *validate* the intent against the hierarchy, *choose* crops for
+generic fields (seeded, honouring categories, distinctness and season),
+*enrich* unstated attributes from the knowledge base (recorded as inferred;
+implausible stated combinations kept and reported as warnings), *lay out* the
+fields (:func:`agrirecipe.layout.pack_fields`) and *build* the recipe.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+import random
+import re
+from collections import Counter
+from collections.abc import Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from pydantic import ValidationError
+
+from agrirecipe._errors import ConfigurationError, PromptError, UnknownCropError
+from agrirecipe.enrich import DEFAULT_LATITUDE_DEG, build_environment, build_field
+from agrirecipe.hierarchy import Hierarchy, default_hierarchy, load_hierarchy
+from agrirecipe.knowledge import KnowledgeBase, default_knowledge_base, load_knowledge_base
+from agrirecipe.recipe import (
+    AttributeName,
+    FieldSpec,
+    HealthState,
+    Relation,
+    SceneRecipe,
+    Season,
+    Stage,
+)
+from agrirecipe.resolve._explain import Explanation
+from agrirecipe.resolve._intent import (
+    Candidate,
+    FieldIntent,
+    ResolveContext,
+    Resolver,
+    SceneIntent,
+    TraceStep,
+)
+from agrirecipe.resolve._registry import get_resolver
+
+if TYPE_CHECKING:
+    from agrirecipe.recipe import FieldGeometry
+
+__all__ = ["Resolution", "build_recipe", "resolve"]
+
+_NOUN_BY_FORM = {"tree": "orchard", "vine": "vineyard"}
+# A stated size keeps a headland of at most this share of its shorter side, so a
+# small plot ("a 10 by 10 m strawberry patch") still holds plants.
+_MAX_HEADLAND_SHARE = 0.1
+
+
+@dataclass(frozen=True, slots=True)
+class Resolution:
+    """What :func:`resolve` returns: the recipe, the strategy's intent and, if asked, why."""
+
+    recipe: SceneRecipe
+    intent: SceneIntent
+    explanation: Explanation | None = None
+
+
+def resolve(
+    prompt: str,
+    *,
+    seed: int = 0,
+    resolver: str | Resolver = "auto",
+    hierarchy: Hierarchy | str | Path | None = None,
+    knowledge: KnowledgeBase | str | Path | None = None,
+    latitude_deg: float | None = None,
+    explain: bool = False,
+) -> Resolution:
+    """Turn a natural-language request into a validated :class:`SceneRecipe`.
+
+    ``resolver`` is a strategy name ("rules", "embedding", "llm", "hybrid",
+    "auto") or a :class:`Resolver`. ``hierarchy`` and ``knowledge`` are objects
+    or paths (the shipped ones when None). ``latitude_deg`` overrides a place
+    named in the prompt. Raises :class:`~agrirecipe.PromptError` (or its
+    subclass :class:`~agrirecipe.UnknownCropError`) for requests that cannot
+    be honoured, :class:`~agrirecipe.ConfigurationError` for bad arguments.
+    """
+    if isinstance(seed, bool) or not isinstance(seed, int) or not 0 <= seed < 2**63:
+        raise ConfigurationError(
+            f"seed must be a whole number from 0 to 2**63 - 1, got {seed!r}", stage="resolve"
+        )
+    if latitude_deg is not None and (
+        isinstance(latitude_deg, bool)
+        or not isinstance(latitude_deg, int | float)
+        or not math.isfinite(latitude_deg)
+        or not -90.0 <= latitude_deg <= 90.0
+    ):
+        raise ConfigurationError(
+            f"latitude_deg must be between -90 and 90 degrees, got {latitude_deg!r}",
+            stage="resolve",
+        )
+    tree = _hierarchy(hierarchy)
+    kb = _knowledge(knowledge, tree)
+    strategy = get_resolver(resolver)
+    context = ResolveContext(
+        hierarchy=tree,
+        knowledge=kb,
+        seed=seed,
+        latitude_deg=None if latitude_deg is None else float(latitude_deg),
+        explain=explain,
+    )
+    intent = strategy.resolve_intent(prompt, context)
+    recipe, steps = build_recipe(intent, context, resolver=strategy.name)
+    explanation = None
+    if explain:
+        explanation = Explanation(
+            prompt=prompt,
+            resolver=strategy.name,
+            seed=seed,
+            steps=(*intent.trace, *steps),
+            warnings=recipe.warnings,
+        )
+    return Resolution(recipe=recipe, intent=intent, explanation=explanation)
+
+
+def _hierarchy(value: Hierarchy | str | Path | None) -> Hierarchy:
+    if value is None:
+        return default_hierarchy()
+    if isinstance(value, Hierarchy):
+        return value
+    if isinstance(value, str | Path):
+        return _load_hierarchy(str(value))
+    raise ConfigurationError(
+        f"hierarchy must be a Hierarchy or a path, not {type(value).__name__}", stage="resolve"
+    )
+
+
+@functools.lru_cache(maxsize=4)
+def _load_hierarchy(path: str) -> Hierarchy:
+    return load_hierarchy(path)
+
+
+def _knowledge(value: KnowledgeBase | str | Path | None, hierarchy: Hierarchy) -> KnowledgeBase:
+    if isinstance(value, KnowledgeBase):
+        return value
+    if value is None:
+        if hierarchy is default_hierarchy():
+            return default_knowledge_base()
+        return _load_knowledge(None, hierarchy)
+    if isinstance(value, str | Path):
+        return _load_knowledge(str(value), hierarchy)
+    raise ConfigurationError(
+        f"knowledge must be a KnowledgeBase or a folder path, not {type(value).__name__}",
+        stage="resolve",
+    )
+
+
+@functools.lru_cache(maxsize=4)
+def _load_knowledge(path: str | None, hierarchy: Hierarchy) -> KnowledgeBase:
+    return load_knowledge_base(path, hierarchy)
+
+
+# --- from intent to recipe ---
+
+
+@dataclass
+class _Plan:
+    """One field's resolved attributes before it is built."""
+
+    intent: FieldIntent
+    crop: str
+    variety: str
+    stage: Stage
+    season: Season
+    health: HealthState
+    stated: list[AttributeName]
+    inferred: list[AttributeName]
+    size_m: tuple[float, float]
+    headland_m: float
+    noun: str
+
+
+def build_recipe(
+    intent: SceneIntent, context: ResolveContext, *, resolver: str
+) -> tuple[SceneRecipe, list[TraceStep]]:
+    """Validate, choose, enrich, lay out and build: the stages after a strategy."""
+    steps: list[TraceStep] = []
+    _validate(intent, context)
+    crops = _choose_crops(intent, context, steps)
+    plans = [
+        _enrich(intent, index, crops[index], context, steps) for index in range(len(intent.fields))
+    ]
+    warnings = list(intent.warnings)
+    ids = _field_ids(plans, context)
+    labels = _labels(plans)
+    for plan, field_id in zip(plans, ids, strict=True):
+        if {"stage", "season"} & set(plan.stated):
+            reason = context.knowledge.implausibility(
+                plan.crop, plan.variety, plan.stage, plan.season, plan.health
+            )
+            if reason is not None:
+                warnings.append(f"{field_id}: {reason} (kept as asked)")
+    relations = tuple(
+        Relation(
+            kind=relation.kind,
+            subject=ids[relation.subject],
+            objects=tuple(ids[o] for o in relation.objects),
+        )
+        for relation in intent.relations
+    )
+    geometry = _layout(plans, ids, relations)
+    fields: list[FieldSpec] = []
+    for plan, field_id, label in zip(plans, ids, labels, strict=True):
+        try:
+            spec = build_field(
+                hierarchy=context.hierarchy,
+                knowledge=context.knowledge,
+                field_id=field_id,
+                label=label,
+                crop=plan.crop,
+                variety=plan.variety,
+                stage=plan.stage,
+                season=plan.season,
+                health=plan.health,
+                geometry=geometry[field_id],
+                stated=plan.stated,
+                inferred=plan.inferred,
+            )
+        except ValidationError as exc:
+            raise PromptError(
+                f"{label}: {_first_message(exc)}",
+                stage="enrich",
+                path=field_id,
+                hint="ask for a larger field",
+            ) from exc
+        fields.append(spec)
+    latitude = context.latitude_deg
+    if latitude is None:
+        latitude = intent.latitude_deg if intent.latitude_deg is not None else DEFAULT_LATITUDE_DEG
+    season = _dominant_season([f.season for f in fields])
+    try:
+        recipe = SceneRecipe(
+            prompt=intent.prompt,
+            seed=context.seed,
+            resolver=resolver,
+            environment=build_environment(season, latitude),
+            fields=tuple(fields),
+            relations=relations,
+            warnings=tuple(warnings),
+        )
+    except ValidationError as exc:
+        raise PromptError(
+            _first_message(exc),
+            stage="validate",
+            hint="ask for fewer or smaller fields",
+        ) from exc
+    steps.append(
+        TraceStep(
+            stage="layout",
+            subject="scene",
+            detail=f"{len(fields)} field(s), environment {season} at {latitude:g} deg",
+        )
+    )
+    return recipe, steps
+
+
+def _first_message(exc: ValidationError) -> str:
+    error = exc.errors()[0]
+    message = str(error["msg"])
+    return message.removeprefix("Value error, ")
+
+
+def _validate(intent: SceneIntent, context: ResolveContext) -> None:
+    """Catch intents that name what the hierarchy does not hold (any strategy can err)."""
+    hierarchy = context.hierarchy
+    for index, field in enumerate(intent.fields):
+        path = f"fields[{index}]"
+        if field.crop is not None and field.crop not in hierarchy.crops:
+            from rapidfuzz import process
+
+            nearest = [
+                str(m[0]) for m in process.extract(field.crop, list(hierarchy.crops), limit=3)
+            ]
+            raise UnknownCropError(
+                f"{field.crop!r} is not a crop of the asset hierarchy",
+                requested=field.crop,
+                nearest=nearest,
+                path=path,
+            )
+        if field.variety is not None and field.crop is not None:
+            crop = hierarchy.crop(field.crop)
+            if field.variety not in {v.name for v in crop.varieties}:
+                raise UnknownCropError(
+                    f"{field.variety!r} is not one of the {field.crop} varieties of the hierarchy",
+                    requested=f"{field.variety} {field.crop}",
+                    nearest=[v.name for v in crop.varieties][:3],
+                    path=path,
+                )
+        if field.category is not None and field.category not in hierarchy.categories:
+            raise PromptError(
+                f"{field.category!r} is not a category of the asset hierarchy",
+                stage="validate",
+                path=path,
+                hint="categories: " + ", ".join(hierarchy.categories),
+            )
+        unknown = [c for c in field.crop_options if c not in hierarchy.crops]
+        if unknown:
+            raise PromptError(
+                f"crop options {unknown} are not in the asset hierarchy",
+                stage="validate",
+                path=path,
+            )
+
+
+def _season_hint(intent: SceneIntent, field: FieldIntent) -> Season | None:
+    if field.season is not None:
+        return field.season
+    if intent.season is not None:
+        return intent.season
+    stated = [f.season for f in intent.fields if f.season is not None]
+    return Counter(stated).most_common(1)[0][0] if stated else None
+
+
+def _choose_crops(
+    intent: SceneIntent, context: ResolveContext, steps: list[TraceStep]
+) -> list[str]:
+    """A crop for every field: the named one, or a seeded choice for a generic field."""
+    rng = random.Random(context.seed)
+    hierarchy, knowledge = context.hierarchy, context.knowledge
+    chosen: list[str | None] = [f.crop for f in intent.fields]
+    for index, field in enumerate(intent.fields):
+        if field.crop is not None:
+            continue
+        if field.crop_options:
+            pool = list(field.crop_options)
+        elif field.category is not None:
+            pool = list(hierarchy.categories[field.category].crops)
+        else:
+            pool = list(hierarchy.crops)
+        if field.distinct_group is not None:
+            taken = {
+                chosen[j]
+                for j, other in enumerate(intent.fields)
+                if j != index and other.distinct_group == field.distinct_group
+            }
+            pool = [crop for crop in pool if crop not in taken]
+            if not pool:
+                size = sum(1 for f in intent.fields if f.distinct_group == field.distinct_group)
+                kind = field.category.lower() if field.category else "crops"
+                raise PromptError(
+                    f"asked for {size} different {kind}, but the asset hierarchy does not "
+                    "hold that many",
+                    stage="resolve",
+                    path=f"fields[{index}]",
+                    hint="ask for fewer different crops",
+                )
+        season = _season_hint(intent, field)
+        preferred = pool
+        if season is not None:
+            preferred = [
+                crop
+                for crop in pool
+                if (stages := knowledge.plausible_stages(crop, season))
+                and (field.stage is None or field.stage in stages)
+            ] or pool
+        unused = [crop for crop in preferred if crop not in chosen] or preferred
+        crop = rng.choice(unused)
+        chosen[index] = crop
+        steps.append(
+            TraceStep(
+                stage="choose",
+                subject=field.text,
+                detail=f"generic field: chose {crop} (seed {context.seed})"
+                + (f", plausible in {season}" if season else ""),
+                candidates=tuple(Candidate(value=c, score=0.0, source="seeded") for c in unused),
+            )
+        )
+    return [crop for crop in chosen if crop is not None]
+
+
+def _enrich(
+    intent: SceneIntent,
+    index: int,
+    crop: str,
+    context: ResolveContext,
+    steps: list[TraceStep],
+) -> _Plan:
+    field = intent.fields[index]
+    knowledge = context.knowledge
+    stated: list[AttributeName] = []
+    inferred: list[AttributeName] = []
+    notes: list[str] = []
+    if field.generic:
+        if field.category is not None:
+            stated.append("category")
+        inferred.append("crop")
+    else:
+        stated.append("crop")
+    if field.variety is not None:
+        variety = field.variety
+        stated.append("variety")
+    else:
+        variety = knowledge.default_variety(crop)
+        inferred.append("variety")
+        notes.append(f"variety {variety} (default)")
+    season: Season
+    if field.season is not None:
+        season = field.season
+        stated.append("season")
+    elif intent.season is not None:
+        season = intent.season
+        stated.append("season")
+    else:
+        others = [f.season for f in intent.fields if f.season is not None]
+        if others:
+            season = Counter(others).most_common(1)[0][0]
+            notes.append(f"season {season} (as the other fields)")
+        elif field.stage is not None:
+            season = knowledge.typical_season(crop, field.stage, variety)
+            notes.append(f"season {season} (typical for {field.stage})")
+        else:
+            season = "Summer"
+            notes.append("season Summer (scene default)")
+        inferred.append("season")
+    stage: Stage
+    if field.stage is not None:
+        stage = field.stage
+        stated.append("stage")
+    else:
+        stage = knowledge.typical_stage(crop, season, variety)
+        inferred.append("stage")
+        notes.append(f"stage {stage} (typical in {season})")
+    health: HealthState
+    if field.health is not None:
+        health = field.health
+        stated.append("health")
+    else:
+        health = "Healthy"
+        inferred.append("health")
+        notes.append("health Healthy (unless said otherwise)")
+    width, length = knowledge.default_field_size_m(crop, variety)
+    headland = knowledge.default_headland_m(crop, variety)
+    if field.size is not None:
+        stated.append("size")
+        if field.size.width_m is not None and field.size.length_m is not None:
+            width, length = field.size.width_m, field.size.length_m
+        elif field.size.area_m2 is not None:
+            scale = math.sqrt(field.size.area_m2 / (width * length))
+            width, length = width * scale, length * scale
+        width, length = round(width, 2), round(length, 2)
+        headland = min(headland, round(_MAX_HEADLAND_SHARE * min(width, length), 2))
+    else:
+        inferred.append("size")
+    noun = field.noun or _NOUN_BY_FORM.get(knowledge.crop_file(crop).growth_form, "field")
+    if notes:
+        steps.append(
+            TraceStep(stage="enrich", subject=field.text, detail="inferred " + "; ".join(notes))
+        )
+    return _Plan(
+        intent=field,
+        crop=crop,
+        variety=variety,
+        stage=stage,
+        season=season,
+        health=health,
+        stated=stated,
+        inferred=inferred,
+        size_m=(width, length),
+        headland_m=headland,
+        noun=noun,
+    )
+
+
+def _slug(text: str) -> str:
+    return re.sub(r"[^a-z0-9]+", "_", text.lower()).strip("_")
+
+
+def _field_ids(plans: Sequence[_Plan], context: ResolveContext) -> list[str]:
+    """``apple_orchard_1``, ``carrot_field_1``, ``carrot_field_2``... (engine-safe)."""
+    ids: list[str] = []
+    counts: Counter[str] = Counter()
+    for plan in plans:
+        stem = f"{_slug(plan.crop)}_{_slug(plan.noun)}"[:56].strip("_") or "field"
+        if not stem[0].isalpha():
+            stem = f"field_{stem}"
+        counts[stem] += 1
+        ids.append(f"{stem}_{counts[stem]}")
+    return ids
+
+
+def _labels(plans: Sequence[_Plan]) -> list[str]:
+    """Readable names: "Pink Lady apple orchard", "Nantes carrot field 2"."""
+    base = [f"{plan.variety} {plan.crop.lower()} {plan.noun}" for plan in plans]
+    totals = Counter(base)
+    seen: Counter[str] = Counter()
+    labels = []
+    for label in base:
+        seen[label] += 1
+        labels.append(f"{label} {seen[label]}" if totals[label] > 1 else label)
+    return labels
+
+
+def _layout(
+    plans: Sequence[_Plan], ids: Sequence[str], relations: Sequence[Relation]
+) -> dict[str, FieldGeometry]:
+    from agrirecipe.layout import FieldRequest, pack_fields
+
+    requests = [
+        FieldRequest(field_id, plan.size_m[0], plan.size_m[1], plan.headland_m)
+        for plan, field_id in zip(plans, ids, strict=True)
+    ]
+    return pack_fields(requests, relations)
+
+
+def _dominant_season(seasons: Sequence[Season]) -> Season:
+    """The most common field season; ties go to the first field's."""
+    counts = Counter(seasons)
+    best = max(counts.values())
+    return next(season for season in seasons if counts[season] == best)

@@ -1,0 +1,276 @@
+"""Reading tagged phrases: each item's role in the sentence, sizes and latitudes.
+
+After :meth:`Lexicon.tag` every item has the senses its words can have; here
+each item gets the one *role* it plays in this prompt ("head", "stage",
+"relation", "number", ...), and number-unit patterns become sizes ("2 ha",
+"50 by 100 m", "half an acre") and latitudes ("35°S", "latitude -33").
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Sequence
+
+from agrirecipe._errors import PromptError
+from agrirecipe.resolve._intent import SizeIntent
+from agrirecipe.resolve._lexicon import Item, Sense, Token, number_value, vocabulary
+
+__all__ = ["assign_roles", "read_latitude", "read_sizes"]
+
+# Sense kinds in the order they win when a phrase has several (a crop name beats
+# its use as a colour; "one" is a number unless decomposition sees a reference).
+_ROLE_ORDER = (
+    "other_crop",
+    "plot",
+    "container",
+    "non_agricultural",
+    "place",
+    "hemisphere",
+    "stage",
+    "season",
+    "month",
+    "health",
+    "negation",
+    "relation",
+    "relation_trailer",
+    "conjunction",
+    "separator",
+    "number",
+    "reference",
+    "quantity",
+    "fraction",
+    "all",
+    "distinct",
+    "other",
+    "of",
+    "area_unit",
+    "length_unit",
+    "dimension_joiner",
+    "side",
+    "filler",
+)
+
+
+def assign_roles(items: Sequence[Item]) -> None:
+    """Give every item its role (in place)."""
+    cues = {str(word) for word in vocabulary()["month_cues"]}
+    previous: Item | None = None
+    for item in items:
+        item.role = _role(item, previous, cues)
+        previous = item
+
+
+def _role(item: Item, previous: Item | None, cues: set[str]) -> str:
+    senses = item.senses
+    if not senses:
+        value = number_value(item.norm)
+        if value is not None:
+            item.data["value"] = value
+            return "number"
+        return "unknown"
+    kinds = {sense.kind for sense in senses}
+    strong_variety = any(s.kind == "variety" and not s.weak for s in senses)
+    if kinds & {"crop", "category"} or strong_variety:
+        return "head"
+    if "variety" in kinds and not kinds & {"stage", "season", "health"}:
+        return "weak_variety"
+    for kind in _ROLE_ORDER:
+        if kind not in kinds:
+            continue
+        sense = next(s for s in senses if s.kind == kind)
+        if (
+            kind == "month"
+            and sense.weak
+            and (previous is None or previous.norm.split()[-1] not in cues)
+        ):
+            continue
+        if kind == "relation" and sense.value == "between":
+            return "between"
+        if kind == "number" and "reference" in kinds:
+            item.data["reference"] = True
+        item.data["value"] = sense.value
+        return {"relation_trailer": "trailer"}.get(kind, kind)
+    return "filler"
+
+
+def _amount(item: Item) -> float | None:
+    """The number an item stands for when a unit follows ("2", "two", "half a", "a")."""
+    if item.role in ("number", "fraction") or item.has("number", "fraction"):
+        if item.senses:
+            sense = item.senses_of("number", "fraction")
+            if sense:
+                return float(sense[0].value)
+        return number_value(item.norm)
+    return None
+
+
+def _unit(item: Item, kind: str) -> float | None:
+    senses = item.senses_of(kind)
+    return float(senses[0].value) if senses else None
+
+
+def read_sizes(items: list[Item]) -> list[Item]:
+    """Replace number-unit patterns with one item of role ``"size"`` (``data["size"]``).
+
+    Understood: ``<n> <area unit>`` ("2 ha", "half a hectare", "1 acre",
+    "5000 m2"), ``<n> [unit] by|x <n> [unit]`` ("50 by 100 m", "50x100m"),
+    and ``<n> <unit> wide/long`` pairs ("40 m wide and 80 m long").
+    """
+    out: list[Item] = []
+    index = 0
+    pending_side: dict[str, float] = {}
+    pending_items: list[Item] = []
+    while index < len(items):
+        matched = _match_area(items, index) or _match_rectangle(items, index)
+        if matched is not None:
+            size, width = matched
+            out.append(_size_item(items[index : index + width], size))
+            index += width
+            continue
+        side = _match_side(items, index)
+        if side is not None:
+            name, metres, width = side
+            pending_side[name] = metres
+            pending_items.extend(items[index : index + width])
+            if len(pending_side) == 2:
+                size = SizeIntent(
+                    width_m=pending_side["width"],
+                    length_m=pending_side["length"],
+                    text=" ".join(i.raw for i in pending_items),
+                )
+                out.append(_size_item(pending_items, size))
+                pending_side, pending_items = {}, []
+            index += width
+            continue
+        out.append(items[index])
+        index += 1
+    if pending_side:
+        # One side only: a square is the least surprising reading ("a 100 m wide field").
+        metres = next(iter(pending_side.values()))
+        size = SizeIntent(
+            width_m=metres, length_m=metres, text=" ".join(i.raw for i in pending_items)
+        )
+        out.append(_size_item(pending_items, size))
+        out.sort(key=lambda item: item.start)
+    return out
+
+
+def _size_item(parts: Sequence[Item], size: SizeIntent) -> Item:
+    tokens: tuple[Token, ...] = tuple(t for part in parts for t in part.tokens)
+    item = Item(tokens, (Sense("filler"),), role="size")
+    item.data["size"] = size
+    return item
+
+
+def _positive(value: float, text: str) -> float:
+    if value <= 0:
+        raise PromptError(
+            f"a field cannot measure {text!r}",
+            stage="resolve",
+            hint="give a positive size such as '2 ha' or '50 by 100 m'",
+        )
+    return value
+
+
+def _match_area(items: Sequence[Item], index: int) -> tuple[SizeIntent, int] | None:
+    amount = _amount(items[index])
+    if amount is None:
+        return None
+    for width in (1, 2):
+        if index + width >= len(items):
+            return None
+        unit_item = items[index + width]
+        factor = _unit(unit_item, "area_unit")
+        if factor is not None:
+            text = " ".join(i.raw for i in items[index : index + width + 1])
+            return SizeIntent(area_m2=_positive(amount * factor, text), text=text), width + 1
+        # "2 square metres" is tagged as one unit; allow one filler word ("2 full hectares").
+        if unit_item.role not in ("filler",):
+            return None
+    return None
+
+
+def _match_rectangle(items: Sequence[Item], index: int) -> tuple[SizeIntent, int] | None:
+    first = _number_at(items, index)
+    if first is None:
+        return None
+    position = index + 1
+    unit_a = _unit(items[position], "length_unit") if position < len(items) else None
+    if unit_a is not None:
+        position += 1
+    if position >= len(items) or not items[position].has("dimension_joiner"):
+        return None
+    position += 1
+    second = _number_at(items, position) if position < len(items) else None
+    if second is None:
+        return None
+    position += 1
+    unit_b = _unit(items[position], "length_unit") if position < len(items) else None
+    if unit_b is not None:
+        position += 1
+    factor_b = unit_b if unit_b is not None else (unit_a if unit_a is not None else 1.0)
+    factor_a = unit_a if unit_a is not None else factor_b
+    text = " ".join(i.raw for i in items[index:position])
+    size = SizeIntent(
+        width_m=_positive(first * factor_a, text),
+        length_m=_positive(second * factor_b, text),
+        text=text,
+    )
+    return size, position - index
+
+
+def _number_at(items: Sequence[Item], index: int) -> float | None:
+    item = items[index]
+    if not item.senses:
+        return number_value(item.norm)
+    numbers = item.senses_of("number")
+    # Articles ("a") are numbers too, but never a side of a rectangle.
+    if numbers and item.norm not in ("a", "an"):
+        return float(numbers[0].value)
+    return None
+
+
+def _match_side(items: Sequence[Item], index: int) -> tuple[str, float, int] | None:
+    amount = _number_at(items, index)
+    if amount is None or index + 2 >= len(items):
+        return None
+    factor = _unit(items[index + 1], "length_unit")
+    sides = items[index + 2].senses_of("side")
+    if factor is None or not sides:
+        return None
+    text = " ".join(i.raw for i in items[index : index + 3])
+    return str(sides[0].value), _positive(amount * factor, text), 3
+
+
+_LATITUDE = re.compile(
+    r"(?:latitude|lat\.?)\s*(?:of\s*)?([-−]?\d+(?:\.\d+)?)\s*°?\s*([ns](?:orth|outh)?\b)?"
+    r"|([-−]?\d+(?:\.\d+)?)\s*(?:°|deg\b|degrees?\b)\s*(?:latitude\s*)?([ns](?:orth|outh)?\b)?",
+    re.IGNORECASE,
+)
+
+
+def read_latitude(prompt: str, items: list[Item]) -> tuple[float | None, str | None, list[Item]]:
+    """A latitude written in the prompt ("at 35°S", "latitude -33.4"), and the items left.
+
+    Returns ``(latitude_deg, text, items)``; the latitude's tokens are removed
+    so that its number is not read as a count.
+    """
+    match = _LATITUDE.search(prompt)
+    if match is None:
+        return None, None, items
+    number = match.group(1) or match.group(3)
+    direction = (match.group(2) or match.group(4) or "").lower()
+    value = float(number.replace("−", "-"))
+    if direction.startswith("s"):
+        value = -abs(value)
+    elif direction.startswith("n"):
+        value = abs(value)
+    if not -90.0 <= value <= 90.0:
+        raise PromptError(
+            f"latitude {value:g} is not on Earth",
+            stage="resolve",
+            hint="a latitude lies between -90 (south) and 90 (north) degrees",
+        )
+    start, end = match.span()
+    kept = [item for item in items if item.end <= start or item.start >= end]
+    return value, match.group().strip(), kept
