@@ -423,10 +423,6 @@ def _define(recording: Recording) -> dict[str, Any]:
         def _world_location(self) -> Vector:
             return self._location if self._location is not None else Vector()
 
-        @property
-        def root_component(self) -> Any:
-            return self._root
-
         def set_actor_label(self, new_actor_label: str, mark_dirty: bool = True) -> None:
             _require(isinstance(new_actor_label, str), "new_actor_label must be a str")
             self._label = new_actor_label
