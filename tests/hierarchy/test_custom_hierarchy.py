@@ -1,4 +1,4 @@
-"""A user's own hierarchy (more crops, other varieties) is used downstream; bad files fail clearly."""
+"""A user's own hierarchy (more crops, other varieties) works downstream; bad files fail."""
 
 from __future__ import annotations
 
