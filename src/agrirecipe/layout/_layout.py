@@ -164,6 +164,12 @@ class FieldPlants:
         """Planting positions before missing plants were removed."""
         return self.spec.nominal_plant_count
 
+    def __repr__(self) -> str:
+        return (
+            f"FieldPlants({self.field_id!r}, {self.spec.variety} {self.spec.crop}, "
+            f"{self.plant_count:,} of {self.nominal_plant_count:,} positions planted)"
+        )
+
 
 @dataclass(frozen=True, eq=False)
 class Layout:
@@ -187,6 +193,9 @@ class Layout:
             stage="layout",
             hint="fields: " + ", ".join(plants.field_id for plants in self.fields),
         )
+
+    def __repr__(self) -> str:
+        return f"Layout({len(self.fields)} field(s), {self.plant_count:,} plants)"
 
 
 def layout_scene(recipe: SceneRecipe) -> Layout:

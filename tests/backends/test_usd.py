@@ -1,0 +1,185 @@
+"""The OpenUSD backend: the stage reopened with pxr matches plants.csv, in metres, Z up."""
+
+from __future__ import annotations
+
+import csv
+import math
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from agrirecipe import BackendError, Scene
+from agrirecipe.backends import get_backend
+from agrirecipe.backends.usd import proxy_mesh, yaw_quaternions
+
+pxr = pytest.importorskip("pxr")
+from pxr import Gf, Usd, UsdGeom  # noqa: E402
+
+EXAMPLES = sorted(
+    Path(__file__).resolve().parents[2].joinpath("examples", "recipes").glob("*.json")
+)
+
+
+def read_plants_csv(path: Path) -> dict[str, np.ndarray]:
+    """Per field: an (n, 5) array of x, y, z, yaw_deg, scale."""
+    rows: dict[str, list[list[float]]] = {}
+    with path.open(encoding="utf-8", newline="") as stream:
+        for row in csv.DictReader(stream):
+            rows.setdefault(row["field_id"], []).append(
+                [float(row[k]) for k in ("x_m", "y_m", "z_m", "yaw_deg", "scale")]
+            )
+    return {field: np.array(values) for field, values in rows.items()}
+
+
+@pytest.fixture(scope="module", params=EXAMPLES, ids=lambda p: p.stem)
+def written(
+    request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory
+) -> tuple[Scene, Path]:
+    scene = Scene.from_file(request.param)
+    folder = tmp_path_factory.mktemp(request.param.stem)
+    scene.write(folder, backends=["usd", "annotations"])
+    return scene, folder
+
+
+def test_examples_exist() -> None:
+    assert len(EXAMPLES) >= 3
+    assert any(
+        f.geometry.rotation_deg != 0 for p in EXAMPLES for f in Scene.from_file(p).recipe.fields
+    ), "one example has a rotated field"
+
+
+def test_stage_is_in_metres_with_z_up(written: tuple[Scene, Path]) -> None:
+    _, folder = written
+    stage = Usd.Stage.Open(str(folder / "scene.usda"))
+    assert UsdGeom.GetStageMetersPerUnit(stage) == 1.0
+    assert UsdGeom.GetStageUpAxis(stage) == UsdGeom.Tokens.z
+    assert stage.HasAuthoredMetadata("metersPerUnit") and stage.HasAuthoredMetadata("upAxis")
+    assert stage.GetDefaultPrim().GetPath() == "/World"
+
+
+def test_instance_transforms_match_plants_csv(written: tuple[Scene, Path]) -> None:
+    scene, folder = written
+    stage = Usd.Stage.Open(str(folder / "scene.usda"))
+    truth = read_plants_csv(folder / "plants.csv")
+    time = Usd.TimeCode.Default()
+    instancers = [p for p in stage.Traverse() if p.IsA(UsdGeom.PointInstancer)]
+    assert len(instancers) == len(scene.recipe.fields)
+    for spec in scene.recipe.fields:
+        instancer = UsdGeom.PointInstancer(stage.GetPrimAtPath(f"/World/Fields/{spec.id}/Plants"))
+        assert instancer, spec.id
+        matrices = instancer.ComputeInstanceTransformsAtTime(time, time)
+        expected = truth[spec.id]
+        assert len(matrices) == len(expected) == scene.layout.field(spec.id).plant_count
+        m = np.array([np.array(matrix) for matrix in matrices])  # (n, 4, 4), row vectors
+        translation = m[:, 3, :3]
+        assert np.allclose(translation, expected[:, :3], atol=2e-3), spec.id
+        # Row 0 is the image of +X: scale * (cos yaw, sin yaw, 0).
+        scale = np.linalg.norm(m[:, 0, :3], axis=1)
+        assert np.allclose(scale, expected[:, 4], rtol=2e-3), spec.id
+        assert np.allclose(np.linalg.norm(m[:, 2, :3], axis=1), expected[:, 4], rtol=2e-3)
+        assert np.allclose(m[:, 0, 2], 0.0, atol=1e-6) and np.allclose(m[:, 2, :2], 0.0, atol=1e-6)
+        yaw = np.arctan2(m[:, 0, 1], m[:, 0, 0])
+        difference = np.angle(np.exp(1j * (yaw - np.radians(expected[:, 3]))))
+        assert np.abs(difference).max() < math.radians(0.25), spec.id  # half-precision quaternions
+
+
+def test_prototypes_name_the_asset_and_are_sized_like_the_plant(
+    written: tuple[Scene, Path],
+) -> None:
+    scene, folder = written
+    stage = Usd.Stage.Open(str(folder / "scene.usda"))
+    for spec in scene.recipe.fields:
+        instancer = UsdGeom.PointInstancer(stage.GetPrimAtPath(f"/World/Fields/{spec.id}/Plants"))
+        (target,) = instancer.GetPrototypesRel().GetTargets()
+        prototype = stage.GetPrimAtPath(target)
+        assert prototype.GetAttribute("agrirecipe:assetPath").Get() == spec.asset_path
+        assert prototype.GetAttribute("agrirecipe:crop").Get() == spec.crop
+        assert prototype.GetAttribute("agrirecipe:variety").Get() == spec.variety
+        assert prototype.GetAssetInfo()["name"] == spec.asset_path.rsplit(".", 1)[1]
+        assert str(target).startswith(str(instancer.GetPath()))  # beneath: not drawn on its own
+        mesh = UsdGeom.Mesh(stage.GetPrimAtPath(target.AppendChild("Proxy")))
+        low, high = (np.array(v) for v in mesh.GetExtentAttr().Get())
+        assert high[2] == pytest.approx(spec.agronomy.plant_height_m, rel=1e-5)
+        assert low[2] == 0.0
+        assert high[0] - low[0] == pytest.approx(spec.agronomy.canopy_width_m, rel=1e-5)
+        assert set(instancer.GetProtoIndicesAttr().Get()) == {0}
+
+
+def test_every_field_has_a_ground_plane(written: tuple[Scene, Path]) -> None:
+    scene, folder = written
+    stage = Usd.Stage.Open(str(folder / "scene.usda"))
+    for spec in scene.recipe.fields:
+        ground = UsdGeom.Mesh(stage.GetPrimAtPath(f"/World/Fields/{spec.id}/Ground"))
+        points = np.array(ground.GetPointsAttr().Get())
+        assert np.allclose(points[:, :2], spec.geometry.corners_m(), atol=1e-4)
+        assert np.allclose(points[:, 2], 0.0)
+        field = stage.GetPrimAtPath(f"/World/Fields/{spec.id}")
+        assert field.GetAttribute("agrirecipe:health").Get() == spec.health
+
+
+def test_stage_is_byte_identical_when_written_again(
+    written: tuple[Scene, Path], tmp_path: Path
+) -> None:
+    scene, folder = written
+    again = get_backend("usd").write(Scene(scene.recipe), tmp_path)
+    assert again == [tmp_path / "scene.usda"]
+    assert (tmp_path / "scene.usda").read_bytes() == (folder / "scene.usda").read_bytes()
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["scene.usda"]  # no temporary left
+
+
+def test_sun_light_points_at_the_sun(written: tuple[Scene, Path]) -> None:
+    scene, folder = written
+    stage = Usd.Stage.Open(str(folder / "scene.usda"))
+    light = UsdGeom.Xformable(stage.GetPrimAtPath("/World/Sun"))
+    matrix = light.ComputeLocalToWorldTransform(Usd.TimeCode.Default())
+    z_axis = matrix.TransformDir(Gf.Vec3d(0, 0, 1))
+    sun = scene.recipe.environment.sun
+    assert math.degrees(math.asin(z_axis[2])) == pytest.approx(sun.elevation_deg, abs=0.01)
+    azimuth = math.degrees(math.atan2(z_axis[0], z_axis[1])) % 360  # clockwise from north
+    assert azimuth == pytest.approx(sun.azimuth_deg, abs=0.01)
+
+
+def test_yaw_quaternions_use_numpy_column_order() -> None:
+    quaternions = yaw_quaternions(np.array([0.0, math.pi / 2]))
+    assert quaternions.dtype == np.float16
+    assert quaternions[0].tolist() == [0.0, 0.0, 0.0, 1.0]  # x, y, z, w
+    rotation = Gf.Rotation(pxr.Vt.QuathArray.FromNumpy(quaternions)[1])
+    assert rotation.TransformDir(Gf.Vec3d(1, 0, 0))[1] == pytest.approx(1.0, abs=1e-3)
+
+
+def test_proxy_meshes_are_closed_for_every_growth_form() -> None:
+    for form in ("tree", "vine", "bush", "row_crop", "leafy_head", "cereal"):
+        points, counts, indices, colours = proxy_mesh(form, 2.0, 1.0, (0.1, 0.5, 0.1))  # type: ignore[arg-type]
+        assert sum(counts) == len(indices) and len(colours) == len(points)
+        assert set(indices) == set(range(len(points)))
+        # Closed surface: every edge is shared by exactly two faces, in opposite directions.
+        edges: dict[tuple[int, int], int] = {}
+        start = 0
+        for count in counts:
+            face = indices[start : start + count]
+            start += count
+            for a, b in zip(face, face[1:] + face[:1], strict=True):
+                edges[(a, b)] = edges.get((a, b), 0) + 1
+        assert all(edges.get((b, a)) == 1 for (a, b) in edges), form
+        assert max(p[2] for p in points) == 2.0 and min(p[2] for p in points) == 0.0
+
+
+def test_missing_pxr_is_a_backend_error(
+    written: tuple[Scene, Path], monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
+    scene, _ = written
+    monkeypatch.setitem(sys.modules, "pxr", None)
+    with pytest.raises(BackendError, match="usd-core"):
+        get_backend("usd").write(scene, tmp_path)
+
+
+def test_unwritable_destination_is_a_backend_error(
+    written: tuple[Scene, Path], tmp_path: Path
+) -> None:
+    scene, _ = written
+    blocker = tmp_path / "a_file"
+    blocker.write_text("not a folder")
+    with pytest.raises(BackendError, match=r"scene\.usda"):
+        get_backend("usd").write(scene, blocker / "out")
