@@ -1,0 +1,101 @@
+"""Running a resolver strategy over the benchmark: one ``generate`` call per prompt, timed."""
+
+from __future__ import annotations
+
+import sys
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+from agrirecipe._errors import AgrirecipeError, ConfigurationError, ModelError
+from agrirecipe.evaluation._benchmark import Benchmark
+from agrirecipe.evaluation._scoring import PredictedScene, PromptScore, score_prompt
+
+if TYPE_CHECKING:
+    from agrirecipe._scene import Scene
+
+__all__ = ["WARMUP_PROMPT", "Generate", "StrategyRun", "run_strategy"]
+
+#: Prompt of the untimed first call: it loads the strategy's models and indexes,
+#: so the timed calls measure a warm process, as a user's second call would be.
+WARMUP_PROMPT = "a healthy Gala apple orchard in summer next to a field of young Nantes carrots"
+
+Generate = Callable[..., "Scene"]
+
+
+@dataclass(frozen=True, slots=True)
+class StrategyRun:
+    """One strategy's scores over a benchmark, or why it could not run."""
+
+    name: str
+    scores: tuple[PromptScore, ...] = ()
+    cold_seconds: float | None = None
+    unavailable: str | None = None
+
+    @property
+    def failures(self) -> tuple[PromptScore, ...]:
+        """The prompts this strategy got wrong, in benchmark order."""
+        return tuple(s for s in self.scores if not s.correct)
+
+
+def run_strategy(
+    benchmark: Benchmark,
+    resolver: str,
+    *,
+    seed: int = 0,
+    progress: bool = True,
+    generate: Generate | None = None,
+    generate_options: dict[str, Any] | None = None,
+) -> StrategyRun:
+    """Resolve every prompt of ``benchmark`` with ``resolver`` and score it.
+
+    The first (warm-up) call is timed separately as ``cold_seconds``; when it
+    fails because the strategy cannot run here (a missing optional dependency
+    or model), the run is returned as unavailable with the reason. Every other
+    exception a prompt raises is scored (for an invalid prompt only an
+    :class:`AgrirecipeError` counts as a rejection).
+    """
+    call: Generate
+    if generate is None:
+        from agrirecipe import generate as call  # registered strategies are plain names too
+    else:
+        call = generate
+    options = dict(generate_options or {})
+    start = time.perf_counter()
+    try:
+        call(WARMUP_PROMPT, seed=seed, resolver=resolver, **options)
+    except (ConfigurationError, ModelError) as exc:
+        return StrategyRun(name=resolver, unavailable=f"{type(exc).__name__}: {exc}")
+    except AgrirecipeError:
+        pass  # the strategy runs; this prompt's failure is not what the benchmark scores
+    cold = time.perf_counter() - start
+
+    from tqdm import tqdm
+
+    scores: list[PromptScore] = []
+    correct = 0
+    bar = tqdm(
+        benchmark.prompts,
+        desc=f"eval {resolver}",
+        unit="prompt",
+        disable=not progress,
+        file=sys.stderr,
+        dynamic_ncols=True,
+    )
+    with bar:
+        for item in bar:
+            outcome: PredictedScene | BaseException
+            begin = time.perf_counter()
+            try:
+                scene = call(item.prompt, seed=seed, resolver=resolver, **options)
+            except Exception as exc:  # every failure, ours or not, is a scored outcome
+                outcome = exc
+            else:
+                outcome = PredictedScene.from_recipe(scene.recipe)
+            elapsed = time.perf_counter() - begin
+            score = score_prompt(item, outcome, seconds=elapsed)
+            scores.append(score)
+            correct += int(score.correct)
+            bar.set_postfix(correct=f"{correct}/{len(scores)}", refresh=False)
+    return StrategyRun(name=resolver, scores=tuple(scores), cold_seconds=cold)

@@ -1,0 +1,279 @@
+"""Scoring a prompt's outcome: field matching, counts, relations, sizes, invalid prompts."""
+
+from __future__ import annotations
+
+import itertools
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from agrirecipe import AgrirecipeError, PromptError, UnknownCropError
+from agrirecipe.evaluation import PredictedRelation, optimal_assignment, score_prompt
+from conftest import field, make_prompt, scene
+
+GALA = {"crop": "Apple", "variety": "Gala", "stage": "Reproductive", "season": "Spring"}
+
+
+def test_exact_single_field_is_correct() -> None:
+    item = make_prompt(type="single_detailed", fields=[GALA])
+    result = score_prompt(item, scene(field("Apple", "Gala", "Reproductive", "Spring")))
+    assert result.correct
+    assert result.reasons == ()
+    assert (result.true_positives, result.predicted_fields, result.truth_fields) == (1, 1, 1)
+
+
+@pytest.mark.parametrize(
+    ("predicted", "kind"),
+    [
+        (field("Apple", "Fuji", "Reproductive", "Spring"), "variety"),
+        (field("Pear", "Conference", "Reproductive", "Spring"), "crop"),
+        (field("Apple", "Gala", "Maturation", "Spring"), "stage"),
+        (field("Apple", "Gala", "Reproductive", "Fall"), "season"),
+        (field("Apple", "Gala", "Reproductive", "Spring", "Ill"), "health"),
+    ],
+)
+def test_every_stated_attribute_is_checked(predicted: object, kind: str) -> None:
+    item = make_prompt(type="single_detailed", fields=[GALA])
+    result = score_prompt(item, scene(predicted))  # type: ignore[arg-type]
+    assert not result.correct
+    assert kind in result.kinds
+    assert any(kind in reason for reason in result.reasons)
+    assert result.true_positives == 0
+
+
+def test_unstated_health_defaults_to_healthy_and_unstated_stage_is_open() -> None:
+    item = make_prompt(type="single_generic", fields=[{"crop": "Apple"}])
+    assert item.fields[0].health == ("Healthy",)
+    assert item.fields[0].inferred == ("health",)
+    assert score_prompt(item, scene(field("Apple", "Fuji", "Maturation", "Winter"))).correct
+    assert not score_prompt(item, scene(field("Apple", "Fuji", health="Ill"))).correct
+
+
+def test_any_of_values_and_category_from_the_crop() -> None:
+    item = make_prompt(type="single_generic", fields=[{"crop": ["Apple", "Pear", "Cherry"]}])
+    assert item.fields[0].category == ("Fruits",)
+    assert score_prompt(item, scene(field("Cherry", "Bing"))).correct
+    assert not score_prompt(item, scene(field("Grape", "Riesling"))).correct
+
+
+def test_matching_is_order_insensitive_and_optimal_not_greedy() -> None:
+    # Greedy would give the open apple field the Gala apple first and leave the
+    # Gala truth unmatched; the optimal assignment pairs both.
+    item = make_prompt(
+        type="multi_generic", fields=[{"crop": "Apple"}, {"crop": "Apple", "variety": "Gala"}]
+    )
+    outcome = scene(field("Apple", "Gala"), field("Apple", "Fuji"))
+    result = score_prompt(item, outcome)
+    assert result.correct, result.reasons
+    assert result.true_positives == 2
+
+
+def test_an_extra_field_costs_precision_and_a_missing_one_recall() -> None:
+    item = make_prompt(
+        type="multi_detailed",
+        fields=[{"crop": "Apple", "variety": "Gala"}, {"crop": "Pear", "variety": "Conference"}],
+    )
+    extra = score_prompt(
+        item, scene(field("Apple", "Gala"), field("Pear", "Conference"), field("Cherry", "Bing"))
+    )
+    assert not extra.correct
+    assert "count" in extra.kinds
+    assert (extra.true_positives, extra.predicted_fields, extra.truth_fields) == (2, 3, 2)
+    missing = score_prompt(item, scene(field("Apple", "Gala")))
+    assert not missing.correct
+    assert (missing.true_positives, missing.predicted_fields, missing.truth_fields) == (1, 1, 2)
+    assert any("missing" in reason for reason in missing.reasons)
+
+
+def test_open_count_accepts_extra_fields_that_fit() -> None:
+    item = make_prompt(
+        type="multi_generic",
+        fields=[{"category": "Fruits"}, {"category": "Vegetables"}],
+        field_count={"min": 2, "max": 4},
+        extra_field={"category": ["Fruits", "Vegetables"]},
+    )
+    three = scene(field("Apple", "Gala"), field("Carrot", "Nantes"), field("Pear", "Conference"))
+    result = score_prompt(item, three)
+    assert result.correct, result.reasons
+    assert result.true_positives == 3
+    with_cereal = scene(field("Apple", "Gala"), field("Carrot", "Nantes"), field("Wheat", "Spelt"))
+    assert not score_prompt(item, with_cereal).correct
+    too_many = scene(
+        *(field("Apple", v) for v in ("Gala", "Fuji", "Jonagold")),
+        field("Carrot", "Nantes"),
+        field("Potato", "Agria"),
+    )
+    assert not score_prompt(item, too_many).correct
+
+
+def test_distinct_crops() -> None:
+    item = make_prompt(
+        type="multi_generic", distinct_crops=True, fields=[{"category": "Vegetables"}] * 2
+    )
+    assert score_prompt(item, scene(field("Carrot", "Nantes"), field("Onion", "Sturon"))).correct
+    same = score_prompt(item, scene(field("Carrot", "Nantes"), field("Carrot", "Danvers")))
+    assert not same.correct
+    assert same.kinds == ("distinct",)
+
+
+def _two_fields_with(relation: dict[str, object]) -> object:
+    return make_prompt(
+        type="multi_detailed",
+        fields=[
+            {"ref": "orchard", "crop": "Apple", "variety": "Gala"},
+            {"ref": "potatoes", "crop": "Potato", "variety": "Bintje"},
+        ],
+        relations=[relation],
+    )
+
+
+@pytest.mark.parametrize(
+    ("truth", "predicted", "ok"),
+    [
+        ("north_of", PredictedRelation("north_of", "orchard_1", ("potatoes_1",)), True),
+        ("north_of", PredictedRelation("south_of", "potatoes_1", ("orchard_1",)), True),
+        ("north_of", PredictedRelation("south_of", "orchard_1", ("potatoes_1",)), False),
+        ("north_of", PredictedRelation("next_to", "orchard_1", ("potatoes_1",)), False),
+        ("next_to", PredictedRelation("next_to", "potatoes_1", ("orchard_1",)), True),
+        ("east_of", PredictedRelation("west_of", "potatoes_1", ("orchard_1",)), True),
+        ("west_of", PredictedRelation("west_of", "potatoes_1", ("orchard_1",)), False),
+    ],
+)
+def test_relations_compare_up_to_symmetry(
+    truth: str, predicted: PredictedRelation, ok: bool
+) -> None:
+    item = _two_fields_with({"kind": truth, "subject": "orchard", "objects": ["potatoes"]})
+    outcome = scene(
+        field("Potato", "Bintje", field_id="potatoes_1"),
+        field("Apple", "Gala", field_id="orchard_1"),
+        relations=(predicted,),
+    )
+    result = score_prompt(item, outcome)  # type: ignore[arg-type]
+    assert result.correct is ok, result.reasons
+    if not ok:
+        assert result.kinds == ("relation",)
+
+
+def test_between_objects_in_any_order_and_a_missing_relation_fails() -> None:
+    item = make_prompt(
+        type="multi_detailed",
+        fields=[
+            {"ref": "mid", "crop": "Strawberry", "variety": "Elsanta"},
+            {"ref": "a", "crop": "Lettuce", "variety": "Iceberg"},
+            {"ref": "b", "crop": "Carrot", "variety": "Nantes"},
+        ],
+        relations=[{"kind": "between", "subject": "mid", "objects": ["a", "b"]}],
+    )
+    fields = (
+        field("Carrot", "Nantes", field_id="c"),
+        field("Lettuce", "Iceberg", field_id="l"),
+        field("Strawberry", "Elsanta", field_id="s"),
+    )
+    between = PredictedRelation("between", "s", ("c", "l"))
+    assert score_prompt(item, scene(*fields, relations=(between,))).correct
+    assert not score_prompt(item, scene(*fields)).correct
+
+
+def test_sizes_are_unordered_within_one_percent_and_areas_are_checked() -> None:
+    item = make_prompt(type="single_generic", fields=[{"crop": "Potato", "size_m": [50, 100]}])
+    assert score_prompt(item, scene(field("Potato", "Agria", size_m=(100.0, 50.0)))).correct
+    assert score_prompt(item, scene(field("Potato", "Agria", size_m=(50.4, 99.6)))).correct
+    wrong = score_prompt(item, scene(field("Potato", "Agria", size_m=(60.0, 100.0))))
+    assert wrong.kinds == ("size",)
+    area = make_prompt(type="single_generic", fields=[{"crop": "Apple", "area_m2": 20000}])
+    assert score_prompt(area, scene(field("Apple", "Gala", size_m=(141.42, 141.42)))).correct
+    assert not score_prompt(area, scene(field("Apple", "Gala", size_m=(100.0, 100.0)))).correct
+
+
+def test_hemisphere_and_expected_warning() -> None:
+    south = make_prompt(type="single_detailed", hemisphere="south", fields=[GALA])
+    gala = field("Apple", "Gala", "Reproductive", "Spring")
+    assert score_prompt(south, scene(gala, hemisphere="south")).correct
+    assert score_prompt(south, scene(gala)).kinds == ("hemisphere",)
+    warned = make_prompt(type="single_detailed", expect_warning=True, fields=[GALA])
+    assert score_prompt(warned, scene(gala, warnings=("unusual",))).correct
+    assert score_prompt(warned, scene(gala)).kinds == ("warning",)
+
+
+def test_a_valid_prompt_that_raises_is_a_failure_with_the_error_recorded() -> None:
+    item = make_prompt(type="single_detailed", fields=[GALA])
+    rejected = score_prompt(item, PromptError("no crop found"))
+    assert not rejected.correct
+    assert rejected.kinds == ("rejected",)
+    assert "no crop found" in rejected.got
+    crashed = score_prompt(item, KeyError("crop"))
+    assert crashed.kinds == ("foreign_error",)
+    assert (crashed.true_positives, crashed.predicted_fields, crashed.truth_fields) == (0, 0, 1)
+
+
+def test_invalid_prompts_must_raise_an_agrirecipe_error() -> None:
+    item = make_prompt(type="invalid", prompt="a mango plantation", error="UnknownCropError")
+    exact = score_prompt(item, UnknownCropError("mango is unknown", requested="mango"))
+    assert exact.correct and exact.error_class_ok
+    broader = score_prompt(item, PromptError("not a farm"))
+    assert broader.correct and broader.error_class_ok is False
+    root = make_prompt(type="invalid", prompt="a 0 m field", error="AgrirecipeError")
+    assert score_prompt(root, PromptError("too small")).error_class_ok
+    foreign = score_prompt(item, ValueError("mango"))
+    assert not foreign.correct
+    assert foreign.kinds == ("foreign_error",)
+    assert "ValueError" in foreign.got
+    accepted = score_prompt(item, scene(field("Orange", "Navel")))
+    assert not accepted.correct
+    assert accepted.kinds == ("accepted",)
+    assert "Orange/Navel" in accepted.got
+    assert issubclass(UnknownCropError, AgrirecipeError)
+
+
+def test_inference_marking_counts_fields_that_call_unstated_attributes_inferred() -> None:
+    item = make_prompt(type="single_generic", fields=[{"crop": "Apple", "season": "Summer"}])
+    honest = field(
+        "Apple", "Jonagold", stated=("crop", "season"), inferred=("variety", "stage", "health")
+    )
+    result = score_prompt(item, scene(honest))
+    assert (result.inferred_checked, result.inferred_ok) == (1, 1)
+    overclaiming = field("Apple", "Jonagold")  # says everything was stated
+    result = score_prompt(item, scene(overclaiming))
+    assert result.correct  # marking is reported separately, not part of correctness
+    assert (result.inferred_checked, result.inferred_ok) == (1, 0)
+
+
+def _brute_force(weights: list[list[float]]) -> float:
+    rows, cols = len(weights), len(weights[0])
+    if rows <= cols:
+        return max(
+            sum(weights[r][c] for r, c in enumerate(perm))
+            for perm in itertools.permutations(range(cols), rows)
+        )
+    return max(
+        sum(weights[r][c] for c, r in enumerate(perm))
+        for perm in itertools.permutations(range(rows), cols)
+    )
+
+
+@settings(max_examples=150, deadline=None)
+@given(
+    st.integers(1, 5).flatmap(
+        lambda rows: st.integers(1, 5).flatmap(
+            lambda cols: st.lists(
+                st.lists(st.integers(0, 120), min_size=cols, max_size=cols),
+                min_size=rows,
+                max_size=rows,
+            )
+        )
+    )
+)
+def test_optimal_assignment_matches_brute_force(weights: list[list[int]]) -> None:
+    matrix = [[float(w) for w in row] for row in weights]
+    assignment = optimal_assignment(matrix)
+    assert len(assignment) == len(matrix)
+    chosen = [c for c in assignment if c is not None]
+    assert len(chosen) == len(set(chosen)) == min(len(matrix), len(matrix[0]))
+    total = sum(matrix[r][c] for r, c in enumerate(assignment) if c is not None)
+    assert total == pytest.approx(_brute_force(matrix))
+
+
+def test_optimal_assignment_of_nothing() -> None:
+    assert optimal_assignment([]) == []
+    assert optimal_assignment([[], []]) == [None, None]
