@@ -22,7 +22,7 @@ from agrirecipe._errors import PromptError, UnknownCropError
 from agrirecipe.resolve._intent import SizeIntent
 from agrirecipe.resolve._lexicon import Item
 
-__all__ = ["Clause", "Mention", "decompose"]
+__all__ = ["Clause", "Mention", "MentionBuilder", "decompose", "resolve_weak_varieties"]
 
 _BOUNDARIES = ("separator", "conjunction", "relation", "between", "trailer")
 _HEADS = ("head", "plot", "other_crop")
@@ -145,13 +145,14 @@ def _combine(
     return combined or None
 
 
-class _MentionBuilder:
-    """Reads one clause's items into mentions."""
+class MentionBuilder:
+    """Reads a clause's items into mentions; decides which heads can name one field."""
 
     def __init__(self, crop_categories: dict[str, str]) -> None:
         self.crop_categories = crop_categories
 
     def compatible(self, mention: Mention, item: Item) -> bool:
+        """Whether head ``item`` can describe the same field as ``mention``."""
         if item.role == "other_crop":
             return (
                 mention.interpretations is None
@@ -162,8 +163,9 @@ class _MentionBuilder:
             return item.role == "plot"
         if item.role == "plot":
             spec = item.data["value"]
-            if mention.plot is not None and mention.interpretations is None:
-                return False  # "a field orchard": two plots, two fields
+            if mention.plot is not None and spec["options"] and mention.plot["options"]:
+                if not set(spec["options"]) & set(mention.plot["options"]):
+                    return False  # "an orchard vineyard": two plots, two fields
             if mention.has_crop and spec["options"] and len(spec["options"]) == 1:
                 return any(c == spec["options"][0] for c, _, _ in mention.interpretations or ())
             return True
@@ -192,6 +194,7 @@ class _MentionBuilder:
         return _combine(mention.interpretations, interpretations) is not None
 
     def add_head(self, mention: Mention, item: Item) -> None:
+        """Add a head to a mention, narrowing its crop, variety, category or plot."""
         mention.heads.append(item)
         mention.items.append(item)
         if item.role == "plot":
@@ -220,6 +223,7 @@ class _MentionBuilder:
         mention.interpretations = combined if combined is not None else interpretations
 
     def read(self, clause: Clause) -> None:
+        """Fill ``clause.mentions`` (or ``clause.loose`` when it names no field)."""
         current: Mention | None = None
         pending: list[Item] = []
         for item in clause.items:
@@ -246,7 +250,7 @@ class _MentionBuilder:
         else:
             clause.loose = pending
         for mention in clause.mentions:
-            _resolve_weak_varieties(mention)
+            resolve_weak_varieties(mention)
 
     @staticmethod
     def _absorb(
@@ -310,7 +314,7 @@ def _check_adjacent_variety(mention: Mention, item: Item, pending: Sequence[Item
         )
 
 
-def _resolve_weak_varieties(mention: Mention) -> None:
+def resolve_weak_varieties(mention: Mention) -> None:
     """A weak name ("golden", "navel") names a variety only next to its crop's name."""
     weak_items = [item for item in mention.items if item.role == "weak_variety"]
     if not weak_items:
@@ -332,10 +336,9 @@ def _resolve_weak_varieties(mention: Mention) -> None:
         item.role = "filler"
 
 
-def decompose(items: Sequence[Item], crop_categories: dict[str, str]) -> list[Clause]:
-    """Clauses with their mentions (refinements not yet applied)."""
+def decompose(items: Sequence[Item], builder: MentionBuilder) -> list[Clause]:
+    """Clauses with their mentions (refinements and coreference not yet applied)."""
     clauses = split_clauses(items)
-    builder = _MentionBuilder(crop_categories)
     for clause in clauses:
         builder.read(clause)
     return clauses

@@ -64,6 +64,7 @@ SenseKind = Literal[
     "conjunction",
     "separator",
     "reference",
+    "correction",
     "all",
     "distinct",
     "other",
@@ -278,19 +279,26 @@ class Lexicon:
     def fuzzy(self, text: str) -> tuple[str, float, tuple[Sense, ...]] | None:
         """The phrase a possibly misspelt ``text`` most likely means, or None.
 
-        rapidfuzz's normalised Indel similarity, with a cut-off that rises as
-        words get shorter (a typo in a 4-letter word is a different word).
+        Scored with rapidfuzz's normalised Damerau-Levenshtein similarity (0-100);
+        words under four letters are never guessed.
         """
-        from rapidfuzz import fuzz, process
+        from rapidfuzz import process
+        from rapidfuzz.distance import DamerauLevenshtein
 
         letters = len(text.replace(" ", ""))
         if letters < 4 or not self.fuzzy_choices:
             return None
-        cutoff = 88.0 if letters <= 4 else 80.0
-        match = process.extractOne(text, self.fuzzy_choices, scorer=fuzz.ratio, score_cutoff=cutoff)
+        # Damerau-Levenshtein counts a swapped pair of letters ("appel", "whaet") as one
+        # edit; one edit in five letters is the most a short word may differ by.
+        match = process.extractOne(
+            text,
+            self.fuzzy_choices,
+            scorer=DamerauLevenshtein.normalized_similarity,
+            score_cutoff=0.8,
+        )
         if match is None:
             return None
-        phrase, score = str(match[0]), float(match[1])
+        phrase, score = str(match[0]), 100.0 * float(match[1])
         return phrase, score, self._fuzzy_senses[phrase]
 
 
@@ -394,6 +402,8 @@ def _build_lexicon(hierarchy: Hierarchy, knowledge: KnowledgeBase, crop_names: b
         add(phrase, Sense("separator"))
     for phrase, value in vocab["references"].items():
         add(phrase, Sense("reference", value))
+    for phrase in vocab["corrections"]:
+        add(phrase, Sense("correction"))
     for phrase in vocab["all_words"]:
         add(phrase, Sense("all"))
     for phrase in vocab["distinct_words"]:
@@ -432,7 +442,7 @@ def _build_lexicon(hierarchy: Hierarchy, knowledge: KnowledgeBase, crop_names: b
                     )
                 # "Nantes carrots": the variety followed by its crop's name.
     lexicon.prepare_fuzzy(
-        ("crop", "variety", "category", "plot", "stage", "season", "month", "health")
+        ("crop", "variety", "category", "plot", "stage", "season", "month", "health", "relation")
     )
     return lexicon
 

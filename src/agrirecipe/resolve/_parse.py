@@ -16,7 +16,13 @@ from typing import Any, cast
 
 from agrirecipe._errors import PromptError, UnknownCropError
 from agrirecipe.recipe import HealthState, Season, Stage
-from agrirecipe.resolve._decompose import Clause, Mention, decompose
+from agrirecipe.resolve._decompose import (
+    Clause,
+    Mention,
+    MentionBuilder,
+    decompose,
+    resolve_weak_varieties,
+)
 from agrirecipe.resolve._intent import (
     Candidate,
     FieldIntent,
@@ -29,6 +35,12 @@ from agrirecipe.resolve._intent import (
 )
 from agrirecipe.resolve._lexicon import Item, Lexicon, OtherCrop, tokenize, vocabulary
 from agrirecipe.resolve._scan import assign_roles, read_latitude, read_sizes
+from agrirecipe.resolve._structure import (
+    apply_corrections,
+    apply_refinements,
+    merge_coreferences,
+    promote_weak_varieties,
+)
 
 __all__ = ["NearestCrops", "PromptReader", "UnknownWords"]
 
@@ -96,9 +108,19 @@ class PromptReader:
         prompt_latitude, latitude_text, items = read_latitude(prompt, items)
         items = read_sizes(items)
         self._reject_other_crops(items)
-        clauses = decompose(items, self.crop_categories)
-        mentions = self._apply_refinements(clauses)
+        builder = MentionBuilder(self.crop_categories)
+        clauses = decompose(items, builder)
+        promote_weak_varieties(clauses, builder)
+        for dropped in apply_corrections(clauses):
+            self.trace.append(
+                TraceStep(stage="decompose", subject=dropped, detail="replaced by a correction")
+            )
+        mentions = apply_refinements(clauses, self.crop_categories)
+        mentions = merge_coreferences(clauses, mentions, builder)
         scene_items = self._attach_loose(clauses, mentions)
+        for mention in mentions:
+            for sub in (mention, *mention.refinements):
+                resolve_weak_varieties(sub)
         latitude, hemisphere, place = self._place(items, prompt_latitude, latitude_text)
         if not mentions:
             mentions = self._container_fields(items, clauses)
@@ -224,46 +246,6 @@ class PromptReader:
 
     # --- structure ---
 
-    def _apply_refinements(self, clauses: Sequence[Clause]) -> list[Mention]:
-        """Fold "one of Gala, one of Fuji" into the plural mention before them."""
-        top: list[Mention] = []
-        parent: Mention | None = None
-        for clause in clauses:
-            first = next(
-                (i for i in clause.items if i.role != "filler" or i.norm not in ("the",)), None
-            )
-            is_reference = first is not None and (
-                first.role == "reference"
-                or (first.role == "number" and bool(first.data.get("reference")))
-            )
-            link = clause.link.role if clause.link is not None else None
-            if (
-                is_reference
-                and parent is not None
-                and link in ("separator", "conjunction")
-                and len(clause.mentions) <= 1
-            ):
-                sub = (
-                    clause.mentions[0]
-                    if clause.mentions
-                    else Mention(items=list(clause.loose), clause=clause.index)
-                )
-                if _fits(sub, parent, self.crop_categories) and _room(parent):
-                    assert first is not None
-                    sub.is_refinement = True
-                    if first.data.get("value") == "rest":
-                        parent.rest = sub
-                    else:
-                        parent.refinements.append(sub)
-                    clause.mentions, clause.loose = [], []
-                    clause.refined_parent = parent
-                    continue
-            top.extend(clause.mentions)
-            if clause.mentions:
-                last = clause.mentions[-1]
-                parent = last if (last.count or 1) >= 2 else None
-        return top
-
     def _attach_loose(self, clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list[Item]:
         """Give each head-less clause's attributes to its field(s); return scene-wide items."""
         scene: list[Item] = []
@@ -285,7 +267,7 @@ class PromptReader:
                 # a time of year belongs to the whole scene.
                 scene.extend(seasons)
                 seasons = []
-            target: Mention | None
+            targets: list[Mention] = []
             forward = after[0] if after else None
             next_link = clauses[position + 1].link if position + 1 < len(clauses) else None
             starts_bare = (
@@ -300,12 +282,12 @@ class PromptReader:
                 and forward.clause == position + 1
                 and starts_bare
             ):
-                target = forward
+                targets = [forward] if forward is not None else []
             elif refined is not None and refined.refinements:
-                target = refined.refinements[-1]
+                targets = [refined.refinements[-1]]
             else:
-                target = before[-1]
-            if target is not None:
+                targets = _coordinated(clauses, position)
+            for target in targets:
                 target.items.extend(seasons + others)
         return scene
 
@@ -519,7 +501,10 @@ class PromptReader:
             if not subject_fields or not all(object_fields):
                 continue
             if kind == "between":
-                pair = (object_fields[0][0], object_fields[1][0])
+                if objects[0] is objects[1]:
+                    pair = (object_fields[0][0], object_fields[0][1])
+                else:
+                    pair = (object_fields[0][0], object_fields[1][0])
                 relations.append(
                     RelationIntent(
                         kind="between", subject=subject_fields[0], objects=pair, text=link.raw
@@ -547,6 +532,8 @@ class PromptReader:
     ) -> tuple[Any, Mention, tuple[Mention, ...]] | None:
         kind = link.data.get("value", "between") if link.role != "between" else "between"
         if link.role == "between":
+            if after and before and (after[0].count or 1) >= 2:
+                return "between", before[-1], (after[0], after[0])
             if len(after) < 2:
                 return None
             if before:
@@ -566,29 +553,36 @@ class PromptReader:
             return kind, before[-1], (after[0],)
         if len(after) >= 2:
             return kind, after[1], (after[0],)
+        if len(before) >= 2:
+            # "... with an onion field to the north of them": the object was named before.
+            return kind, before[-1], (before[-2],)
         return None
 
 
 # --- helpers ---
 
 
-def _fits(sub: Mention, parent: Mention, crop_categories: dict[str, str]) -> bool:
-    """Whether a refinement clause can describe members of ``parent``."""
-    if sub.interpretations is None:
-        return sub.category is None or sub.category == parent.category or parent.category is None
-    parent_crops = {c for c, _, _ in parent.interpretations or ()}
-    sub_crops = {c for c, _, weak in sub.interpretations if not weak}
-    if parent_crops:
-        return bool(parent_crops & sub_crops)
-    if parent.category is not None:
-        return any(crop_categories.get(c) == parent.category for c in sub_crops)
-    if parent.plot is not None and parent.plot["options"]:
-        return bool(set(parent.plot["options"]) & sub_crops)
-    return True
+def _coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:
+    """The mentions just before clause ``position``, with those joined to it by "and".
 
-
-def _room(parent: Mention) -> bool:
-    return parent.rest is None and len(parent.refinements) < (parent.count or 1)
+    "bananas and oranges, ripe": both are ripe; "apples next to carrots, ripe":
+    only the carrots.
+    """
+    index = position - 1
+    while index >= 0 and not clauses[index].mentions:
+        index -= 1
+    if index < 0:
+        return []
+    group = [clauses[index].mentions[-1]]
+    while (
+        clauses[index].link is not None
+        and clauses[index].link.role == "conjunction"  # type: ignore[union-attr]
+        and index > 0
+        and clauses[index - 1].mentions
+    ):
+        index -= 1
+        group.append(clauses[index].mentions[-1])
+    return group
 
 
 def _word_before(items: Sequence[Item], index: int | None) -> Item | None:

@@ -38,6 +38,10 @@ def _soft(item: Item) -> bool:
     return all(sense.kind in _SOFT_KINDS for sense in item.senses)
 
 
+def _filler(item: Item) -> bool:
+    return bool(item.senses) and all(sense.kind == "filler" for sense in item.senses)
+
+
 def fuzzy_unknown_words(items: list[Item], lexicon: Lexicon) -> tuple[list[Item], list[TraceStep]]:
     """Read each unknown word as the lexicon phrase it most likely misspells (rapidfuzz).
 
@@ -56,7 +60,8 @@ def fuzzy_unknown_words(items: list[Item], lexicon: Lexicon) -> tuple[list[Item]
         for start in range(max(0, index - _WINDOW + 1), index + 1):
             for end in range(index + 1, min(len(out), start + _WINDOW) + 1):
                 window = out[start:end]
-                if not all(_soft(w) for w in window):
+                edges = (window[0], window[-1])
+                if not all(_soft(w) for w in window) or any(_filler(w) for w in edges):
                     continue
                 text = " ".join(w.norm for w in window)
                 match = lexicon.fuzzy(text)

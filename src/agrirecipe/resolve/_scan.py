@@ -37,6 +37,7 @@ _ROLE_ORDER = (
     "separator",
     "number",
     "reference",
+    "correction",
     "quantity",
     "fraction",
     "all",

@@ -1,0 +1,243 @@
+"""How mentions relate across clauses: shared heads, corrections, refinements, coreference.
+
+- *Shared heads*: "navel and valencia orange groves" is two groves; a bare
+  variety name gets its crop from the mention it is coordinated with.
+- *Corrections*: "cherry tomatoes? no, I mean cherry trees" keeps the trees.
+- *Refinements*: "Two orchards: one of Gala, one of Fuji" and "three
+  fields: wheat, maize and potatoes" describe the members of a plural mention.
+- *Coreference*: a mention that points back ("..., the trees are healthy",
+  "a carrot field, nantes variety", "Riesling and Pinot Noir vineyards, grapes
+  ripe") adds to the field(s) already named instead of asking for a new one.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from agrirecipe.resolve._decompose import Clause, Mention, MentionBuilder
+from agrirecipe.resolve._lexicon import Item, vocabulary
+
+__all__ = [
+    "apply_corrections",
+    "apply_refinements",
+    "merge_coreferences",
+    "promote_weak_varieties",
+]
+
+
+def _strong_crops(mention: Mention) -> set[str]:
+    return {crop for crop, _, weak in mention.interpretations or () if not weak}
+
+
+def promote_weak_varieties(clauses: Sequence[Clause], builder: MentionBuilder) -> None:
+    """A clause holding only a weak variety name ("navel and valencia oranges") gets a head.
+
+    The crop comes from the mention the clause is coordinated with (the next
+    clause, joined by "and"), else from the nearest earlier mention.
+    """
+    for position, clause in enumerate(clauses):
+        if clause.mentions:
+            continue
+        weak = [item for item in clause.loose if item.role == "weak_variety"]
+        if not weak:
+            continue
+        neighbours: list[Mention] = []
+        following = clauses[position + 1] if position + 1 < len(clauses) else None
+        if following is not None and following.link is not None:
+            if following.link.role == "conjunction" and following.mentions:
+                neighbours.append(following.mentions[0])
+        neighbours += [m for c in reversed(clauses[:position]) for m in reversed(c.mentions)]
+        for neighbour in neighbours:
+            crops = _strong_crops(neighbour)
+            senses = [s for s in weak[0].senses_of("variety") if s.crop in crops]
+            if not senses:
+                continue
+            item = weak[0]
+            item.role = "head"
+            mention = Mention(clause=clause.index)
+            mention.items = [i for i in clause.loose if i is not item]
+            mention.heads.append(item)
+            mention.items.append(item)
+            mention.interpretations = [(str(senses[0].crop), str(senses[0].value), False)]
+            if neighbour is (following.mentions[0] if following and following.mentions else None):
+                mention.plot = neighbour.plot
+            clause.mentions, clause.loose = [mention], []
+            break
+
+
+def apply_corrections(clauses: Sequence[Clause]) -> list[str]:
+    """Drop the mention a correction ("no, I mean ...") replaces; return what was dropped."""
+    dropped: list[str] = []
+    for position, clause in enumerate(clauses):
+        if not clause.mentions:
+            continue
+        first_head = clause.mentions[0].heads[0]
+        corrected = any(
+            item.role == "correction" and item.start < first_head.start
+            for item in clause.mentions[0].items
+        ) or _correction_before(clauses, position)
+        if not corrected:
+            continue
+        for earlier in reversed(clauses[:position]):
+            if earlier.mentions:
+                dropped.append(earlier.mentions.pop().text)
+                break
+    return dropped
+
+
+def _correction_before(clauses: Sequence[Clause], position: int) -> bool:
+    """A correction word alone in the clause right before ("no, I mean, ...")."""
+    if position == 0:
+        return False
+    previous = clauses[position - 1]
+    return not previous.mentions and any(i.role == "correction" for i in previous.loose)
+
+
+def _first_word(mention: Mention) -> Item | None:
+    ordered = sorted(mention.items, key=lambda item: item.start)
+    return ordered[0] if ordered else None
+
+
+def _fits(sub: Mention, parent: Mention, crop_categories: dict[str, str]) -> bool:
+    """Whether ``sub`` can describe members of ``parent``."""
+    sub_crops = _strong_crops(sub)
+    if sub.plot is not None and sub.plot["narrows"] and not sub_crops:
+        options = set(sub.plot["options"])
+        if sub.plot["category"] is not None:
+            options |= {c for c, cat in crop_categories.items() if cat == sub.plot["category"]}
+        sub_crops = options
+    if sub.category is not None and not sub_crops:
+        sub_crops = {c for c, cat in crop_categories.items() if cat == sub.category}
+    if not sub_crops:
+        return True
+    parent_crops = _strong_crops(parent)
+    if parent_crops:
+        return bool(parent_crops & sub_crops)
+    if parent.category is not None:
+        return any(crop_categories.get(c) == parent.category for c in sub_crops)
+    if parent.plot is not None and parent.plot["options"]:
+        return bool(set(parent.plot["options"]) & sub_crops)
+    return True
+
+
+def _room(parent: Mention) -> bool:
+    return parent.rest is None and len(parent.refinements) < (parent.count or 1)
+
+
+def apply_refinements(
+    clauses: Sequence[Clause], crop_categories: dict[str, str]
+) -> list[Mention]:
+    """Fold refinements into their plural mention; return the remaining top-level mentions."""
+    top: list[Mention] = []
+    parent: Mention | None = None
+    enumerating = False
+    for clause in clauses:
+        first = next((i for i in clause.items if i.norm != "the"), None)
+        is_reference = first is not None and (
+            first.role == "reference"
+            or (first.role == "number" and bool(first.data.get("reference")))
+        )
+        link = clause.link
+        joined = link is not None and link.role in ("separator", "conjunction")
+        if parent is not None and joined and len(clause.mentions) <= 1:
+            assert link is not None
+            sub = (
+                clause.mentions[0]
+                if clause.mentions
+                else Mention(items=list(clause.loose), clause=clause.index)
+            )
+            # A generic plural mention followed by ':' lists its members.
+            listing = not _strong_crops(parent) and (
+                enumerating or link.norm in (":", "-", "—", "–")
+            )
+            listed = listing and bool(clause.mentions) and (sub.count or 1) == 1
+            if (is_reference or listed) and _fits(sub, parent, crop_categories) and _room(parent):
+                sub.is_refinement = True
+                if first is not None and first.data.get("value") == "rest":
+                    parent.rest = sub
+                else:
+                    parent.refinements.append(sub)
+                clause.mentions, clause.loose = [], []
+                clause.refined_parent = parent
+                enumerating = listed
+                continue
+        enumerating = False
+        top.extend(clause.mentions)
+        if clause.mentions:
+            last = clause.mentions[-1]
+            parent = last if (last.count or 1) >= 2 else None
+    return top
+
+
+def _definite_words() -> set[str]:
+    return {str(word) for word in vocabulary()["definite_words"]}
+
+
+def _compatible(builder: MentionBuilder, target: Mention, mention: Mention) -> bool:
+    if target.refinements or target.rest is not None:
+        return False
+    heads = [h for h in mention.heads if h.role in ("head", "plot")]
+    return bool(heads) and all(builder.compatible(target, head) for head in heads)
+
+
+def merge_coreferences(
+    clauses: Sequence[Clause], mentions: Sequence[Mention], builder: MentionBuilder
+) -> list[Mention]:
+    """Merge mentions that point back at fields already named; return the fields left."""
+    definite = _definite_words()
+    clause_of = {id(m): c for c in clauses for m in c.mentions}
+    kept: list[Mention] = []
+    for mention in mentions:
+        clause = clause_of.get(id(mention))
+        if clause is None or not kept or clause.mentions[0] is not mention:
+            kept.append(mention)
+            continue
+        first = _first_word(mention)
+        is_definite = first is not None and first.norm in definite
+        bare = clause.link is not None and clause.link.role == "separator"
+        summary = _is_summary(mention)
+        anaphoric = (
+            (mention.count is None or summary)
+            and not mention.distinct
+            and not mention.other
+            and not mention.refinements
+            and (is_definite or bare)
+        )
+        if not anaphoric:
+            kept.append(mention)
+            continue
+        run: list[Mention] = []
+        for earlier in reversed(kept):
+            if not _compatible(builder, earlier, mention):
+                break
+            run.append(earlier)
+        if summary and len(run) != mention.count:
+            kept.append(mention)
+            continue
+        names_variety = any(v is not None for _, v, weak in mention.interpretations or () if not weak)
+        if names_variety:
+            run = run[:1]
+        if not run and is_definite:
+            run = [m for m in reversed(kept) if _compatible(builder, m, mention)][:1]
+        if not run:
+            kept.append(mention)
+            continue
+        attributes = [i for i in mention.items if i not in mention.heads]
+        for target in run:
+            target.items.extend(attributes)
+            if len(run) == 1:
+                for head in mention.heads:
+                    if head.role in ("head", "plot"):
+                        builder.add_head(target, head)
+        clause.mentions.remove(mention)
+    return kept
+
+
+def _is_summary(mention: Mention) -> bool:
+    """'..., three fields': a count of generic plots restating the fields just listed."""
+    return (
+        (mention.count or 1) >= 2
+        and mention.interpretations is None
+        and mention.category is None
+        and all(h.role == "plot" and not h.data["value"]["narrows"] for h in mention.heads)
+    )
