@@ -294,7 +294,7 @@ class Lexicon:
             text,
             self.fuzzy_choices,
             scorer=DamerauLevenshtein.normalized_similarity,
-            score_cutoff=0.8,
+            score_cutoff=0.79,  # 0.8 itself: one edit in five letters (float-safe)
         )
         if match is None:
             return None

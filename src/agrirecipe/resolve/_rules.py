@@ -35,11 +35,16 @@ def _is_unknown(item: Item) -> bool:
 def _soft(item: Item) -> bool:
     if not item.senses:
         return item.norm.isalpha()
-    return all(sense.kind in _SOFT_KINDS for sense in item.senses)
+    return all(sense.kind in _SOFT_KINDS for sense in item.senses) or _filler(item)
 
 
 def _filler(item: Item) -> bool:
-    return bool(item.senses) and all(sense.kind == "filler" for sense in item.senses)
+    """A short function word ("in", "the"): never the first or last word of a misspelt name."""
+    return (
+        len(item.norm) < 4
+        and bool(item.senses)
+        and all(sense.kind in ("filler", "number", "of") for sense in item.senses)
+    )
 
 
 def fuzzy_unknown_words(items: list[Item], lexicon: Lexicon) -> tuple[list[Item], list[TraceStep]]:
@@ -60,14 +65,20 @@ def fuzzy_unknown_words(items: list[Item], lexicon: Lexicon) -> tuple[list[Item]
         for start in range(max(0, index - _WINDOW + 1), index + 1):
             for end in range(index + 1, min(len(out), start + _WINDOW) + 1):
                 window = out[start:end]
-                edges = (window[0], window[-1])
-                if not all(_soft(w) for w in window) or any(_filler(w) for w in edges):
+                if not all(_soft(w) for w in window):
                     continue
                 text = " ".join(w.norm for w in window)
                 match = lexicon.fuzzy(text)
                 if match is None:
                     continue
                 phrase, score, senses = match
+                words = phrase.split()
+                # A function word at either end must be the phrase's own ("nxt to" ->
+                # "next to"), not a neighbour swallowed into a guess ("late in the").
+                if (_filler(window[0]) and words[0] != window[0].norm) or (
+                    _filler(window[-1]) and words[-1] != window[-1].norm
+                ):
+                    continue
                 width = end - start
                 if best is None or (score, width) > (best[0], best[2] - best[1]):
                     best = (score, start, end, phrase, senses)

@@ -124,9 +124,7 @@ def _room(parent: Mention) -> bool:
     return parent.rest is None and len(parent.refinements) < (parent.count or 1)
 
 
-def apply_refinements(
-    clauses: Sequence[Clause], crop_categories: dict[str, str]
-) -> list[Mention]:
+def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]) -> list[Mention]:
     """Fold refinements into their plural mention; return the remaining top-level mentions."""
     top: list[Mention] = []
     parent: Mention | None = None
@@ -214,7 +212,9 @@ def merge_coreferences(
         if summary and len(run) != mention.count:
             kept.append(mention)
             continue
-        names_variety = any(v is not None for _, v, weak in mention.interpretations or () if not weak)
+        names_variety = any(
+            v is not None for _, v, weak in mention.interpretations or () if not weak
+        )
         if names_variety:
             run = run[:1]
         if not run and is_definite:
