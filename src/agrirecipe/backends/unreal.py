@@ -401,13 +401,19 @@ def _assemble(
         f"# {len(recipe.fields)} field(s), about {recipe.nominal_plant_count:,} plants, "
         f"seed {recipe.seed}, scene format {SCENE_FORMAT}.\n"
         "#\n"
-        "# In the editor (Python Editor Script Plugin enabled): Tools > Execute Python Script.\n"
+        "# In the editor (Python Editor Script Plugin enabled): Tools > Execute Python\n"
+        "# Script, or `py <path>/unreal_build.py` in the Output Log's Python console.\n"
         "# Headless:\n"
         "#   UnrealEditor-Cmd <project>.uproject -run=pythonscript -script=unreal_build.py "
         "-unattended -nullrhi\n"
         "#\n"
         "# The build is one undo step and can be cancelled from its progress dialog.\n"
-        "# Plants are placed by the agrirecipe placement kernel below, the same code\n"
+        + (
+            "# When it finishes it saves the current level.\n"
+            if document["scene"]["save_level"]
+            else "# It does not save the level (headless runs: generate with save_level=True).\n"
+        )
+        + "# Plants are placed by the agrirecipe placement kernel below, the same code\n"
         "# that wrote plants.csv, from the per-field parameters in SCENE_JSON.\n"
         "# Assets missing from the project are replaced by engine basic shapes with a\n"
         "# warning in the Output Log.\n"

@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+import csv
 import functools
 import math
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -107,6 +109,30 @@ def test_project_assets_place_exactly_the_layout_plants() -> None:
         _assert_same_plants(actor, plants, placeholder=False)
         assert result["fields"][plants.field_id] == plants.plant_count
     assert result["instances"] == scene.layout.plant_count
+
+
+def test_instances_match_plants_csv(tmp_path: Path) -> None:
+    scene = _scene()
+    scene.write(tmp_path, backends=["annotations"])
+    with (tmp_path / "plants.csv").open(newline="", encoding="utf-8") as stream:
+        rows = list(csv.DictReader(stream))
+    _, recording = _run(scene, project_assets=_asset_paths(scene.recipe))
+    for spec in scene.recipe.fields:
+        expected = [row for row in rows if row["field_id"] == spec.id]
+        got = _instances_cm(_field_actor(recording, spec))
+        assert len(expected) == got["location"].shape[0] > 0
+        column = {
+            name: np.array([float(row[name]) for row in expected])
+            for name in ("x_m", "y_m", "z_m", "yaw_deg", "scale")
+        }
+        # plants.csv rounds positions to 0.1 mm, yaw to 0.001 degree, scale to 1e-5.
+        np.testing.assert_allclose(got["location"][:, 0], column["x_m"] * 100.0, atol=0.0051)
+        np.testing.assert_allclose(got["location"][:, 1], -column["y_m"] * 100.0, atol=0.0051)
+        np.testing.assert_allclose(got["location"][:, 2], column["z_m"] * 100.0, atol=0.0051)
+        yaw_error = _wrapped_degrees(got["rotation"][:, 2] + column["yaw_deg"])
+        np.testing.assert_allclose(yaw_error, 0.0, atol=0.00051)
+        for axis in range(3):
+            np.testing.assert_allclose(got["scale"][:, axis], column["scale"], atol=0.0000051)
 
 
 def test_missing_assets_fall_back_to_tinted_basic_shapes_with_a_warning() -> None:

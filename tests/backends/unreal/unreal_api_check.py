@@ -110,9 +110,13 @@ class _Checker:
         return _UNKNOWN
 
     def script_annotation(self, node: ast.expr | None) -> _Type | None:
-        """An annotation in the script: ``unreal.X`` (or a string of it) is followed."""
-        if node is None:
-            return None
+        """An annotation in the script: ``unreal.X`` (or a string of it) is followed.
+
+        A missing annotation or ``Any`` may hide an unreal value: its type is unknown,
+        so members used on it must be on the untracked allow-list.
+        """
+        if node is None or (isinstance(node, ast.Name) and node.id == "Any"):
+            return _UNKNOWN
         if isinstance(node, ast.Constant) and isinstance(node.value, str):
             try:
                 node = ast.parse(node.value, mode="eval").body

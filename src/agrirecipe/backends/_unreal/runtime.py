@@ -92,11 +92,14 @@ def build_field(
         mesh = load_engine_asset(field["fallback_mesh"], meshes)
         placeholder_canopy_m = float(field["canopy_width_m"])
 
-    actor = editor_actors.spawn_actor_from_class(
-        unreal.Actor, to_vector(field["location_cm"]), unreal.Rotator(roll=0.0, pitch=0.0, yaw=0.0)
+    actor = spawn(
+        editor_actors,
+        unreal.Actor,
+        field["location_cm"],
+        unreal.Rotator(roll=0.0, pitch=0.0, yaw=0.0),
+        field["label"],
+        field["folder"],
     )
-    actor.set_actor_label(field["label"])
-    actor.set_folder_path(field["folder"])
     component = add_instanced_mesh_component(subobjects, actor)
     # A plain Actor has no root until the component above becomes it; only now
     # does moving the actor stick. Instances are then given in world space.
@@ -214,13 +217,16 @@ def build_ground(
     meshes: dict[str, Any],
 ) -> None:
     """A soil-coloured plane under a field (the 100 cm engine plane, scaled to the field)."""
-    actor = editor_actors.spawn_actor_from_class(
-        unreal.StaticMeshActor,
-        to_vector(ground["location_cm"]),
-        unreal.Rotator(roll=0.0, pitch=0.0, yaw=float(ground["yaw_deg"])),
+    actor = unreal.StaticMeshActor.cast(
+        spawn(
+            editor_actors,
+            unreal.StaticMeshActor,
+            ground["location_cm"],
+            unreal.Rotator(roll=0.0, pitch=0.0, yaw=float(ground["yaw_deg"])),
+            ground["label"],
+            folder,
+        )
     )
-    actor.set_actor_label(ground["label"])
-    actor.set_folder_path(folder)
     actor.set_actor_scale3d(to_vector(ground["scale"]))
     component = actor.static_mesh_component
     plane = load_engine_asset(engine["ground_mesh"], meshes)
@@ -234,31 +240,42 @@ def build_environment(
 ) -> None:
     """The sun as a DirectionalLight (and optionally a sky atmosphere and sky light)."""
     sun = environment["sun"]
-    light = editor_actors.spawn_actor_from_class(
-        unreal.DirectionalLight,
-        to_vector(sun["location_cm"]),
-        unreal.Rotator(roll=0.0, pitch=float(sun["pitch_deg"]), yaw=float(sun["yaw_deg"])),
+    folder = environment["folder"]
+    light = unreal.DirectionalLight.cast(
+        spawn(
+            editor_actors,
+            unreal.DirectionalLight,
+            sun["location_cm"],
+            unreal.Rotator(roll=0.0, pitch=float(sun["pitch_deg"]), yaw=float(sun["yaw_deg"])),
+            sun["label"],
+            folder,
+        )
     )
-    light.set_actor_label(sun["label"])
-    light.set_folder_path(environment["folder"])
-    sun_component = unreal.DirectionalLightComponent.cast(light.light_component)
-    sun_component.set_atmosphere_sun_light(True)
+    unreal.DirectionalLightComponent.cast(light.light_component).set_atmosphere_sun_light(True)
     if environment["sky"]:
-        atmosphere = editor_actors.spawn_actor_from_class(
-            unreal.SkyAtmosphere,
-            to_vector(sun["location_cm"]),
-            unreal.Rotator(roll=0.0, pitch=0.0, yaw=0.0),
+        level = unreal.Rotator(roll=0.0, pitch=0.0, yaw=0.0)
+        label = environment["sky_atmosphere_label"]
+        spawn(editor_actors, unreal.SkyAtmosphere, sun["location_cm"], level, label, folder)
+        label = environment["sky_light_label"]
+        sky_light = unreal.SkyLight.cast(
+            spawn(editor_actors, unreal.SkyLight, sun["location_cm"], level, label, folder)
         )
-        atmosphere.set_actor_label(environment["sky_atmosphere_label"])
-        atmosphere.set_folder_path(environment["folder"])
-        sky_light = editor_actors.spawn_actor_from_class(
-            unreal.SkyLight,
-            to_vector(sun["location_cm"]),
-            unreal.Rotator(roll=0.0, pitch=0.0, yaw=0.0),
-        )
-        sky_light.set_actor_label(environment["sky_light_label"])
-        sky_light.set_folder_path(environment["folder"])
         sky_light.light_component.set_real_time_capture(True)
+
+
+def spawn(
+    editor_actors: unreal.EditorActorSubsystem,
+    actor_class: type,
+    location_cm: list[float],
+    rotation: unreal.Rotator,
+    label: str,
+    folder: str,
+) -> unreal.Actor:
+    """Spawn an actor in the editor world, labelled and put in an outliner folder."""
+    actor = editor_actors.spawn_actor_from_class(actor_class, to_vector(location_cm), rotation)
+    actor.set_actor_label(label)
+    actor.set_folder_path(folder)
+    return actor
 
 
 def to_vector(values: list[float]) -> unreal.Vector:
