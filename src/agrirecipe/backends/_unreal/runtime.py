@@ -13,7 +13,9 @@
 #   centimetres: (x, y, z) m -> (100 x, -100 y, 100 z) cm and a yaw of a
 #   radians -> yaw = -degrees(a);
 # - engine basic shapes are 100 cm with their pivot at the centre, so a
-#   scale of 1.0 is one metre and a placeholder is lifted by half its height.
+#   scale of 1.0 is one metre and a placeholder is lifted by half its height;
+# - annotations evaluated at definition time stay valid on Python 3.9 (the
+#   interpreter of UE 5.0-5.3), hence no `X | Y` outside quotes.
 # ---------------------------------------------------------------------------
 import json
 import math
@@ -39,10 +41,9 @@ def build_scene(scene: dict[str, Any], plants: PlantSource) -> dict[str, Any]:
     summary: dict[str, Any] = {"fields": {}, "instances": 0, "cancelled": False}
     unreal.log(header["log_start"])
     # One undo step for the whole scene; the slow task shows progress and a Cancel button.
-    with (
-        unreal.ScopedEditorTransaction(header["transaction"]),
-        unreal.ScopedSlowTask(float(header["work"]), header["title"]) as task,
-    ):
+    transaction = unreal.ScopedEditorTransaction(header["transaction"])
+    progress = unreal.ScopedSlowTask(float(header["work"]), header["title"])
+    with transaction, progress as task:
         task.make_dialog(True)
         task.enter_progress_frame(1.0, header["environment_progress"])
         build_environment(editor_actors, scene["environment"])
@@ -135,7 +136,7 @@ def build_field(
 
 
 def plant_transform(
-    plant: tuple[float, float, float, float, float, float], placeholder_canopy_m: float | None
+    plant: tuple[float, float, float, float, float, float], placeholder_canopy_m: "float | None"
 ) -> unreal.Transform:
     """The world transform (cm, left-handed) of one kernel plant."""
     x, y, z, yaw_rad, scale, height_m = plant
