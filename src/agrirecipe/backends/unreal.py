@@ -279,9 +279,9 @@ class UnrealBackend(Backend):
             "progress_plants": f"agrirecipe: field {spec.id}: plants",
             "progress_ground": f"agrirecipe: field {spec.id}: ground",
             "log_missing_asset": (
-                f"agrirecipe: asset {spec.asset_path} is not in this project; field {spec.id} "
-                f"is drawn with the placeholder {fallback} (import the asset pack, or map the "
-                "catalogue to your own meshes, to see the real plants)"
+                f"agrirecipe: asset {spec.asset_path} is not a static mesh in this project; "
+                f"field {spec.id} is drawn with the placeholder {fallback} (import the asset "
+                "pack, or map the catalogue to your own meshes, to see the real plants)"
             ),
             "ground": {
                 "label": f"{spec.label} ground",
