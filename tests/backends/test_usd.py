@@ -94,7 +94,7 @@ def test_prototypes_name_the_asset_and_are_sized_like_the_plant(
         instancer = UsdGeom.PointInstancer(stage.GetPrimAtPath(f"/World/Fields/{spec.id}/Plants"))
         (target,) = instancer.GetPrototypesRel().GetTargets()
         prototype = stage.GetPrimAtPath(target)
-        assert prototype.GetAttribute("agrirecipe:assetPath").Get() == spec.asset_path
+        assert prototype.GetAttribute("agrirecipe:asset_path").Get() == spec.asset_path
         assert prototype.GetAttribute("agrirecipe:crop").Get() == spec.crop
         assert prototype.GetAttribute("agrirecipe:variety").Get() == spec.variety
         assert prototype.GetAssetInfo()["name"] == spec.asset_path.rsplit(".", 1)[1]

@@ -138,36 +138,12 @@ def fields_geojson(layout: Layout) -> dict[str, Any]:
         spec = plants.spec
         ring = [[round(x, 6), round(y, 6)] for x, y in spec.geometry.corners_m()]
         ring.append(ring[0])  # GeoJSON rings are closed, counter-clockwise
-        agronomy = spec.agronomy
         features.append(
             {
                 "type": "Feature",
                 "id": spec.id,
                 "geometry": {"type": "Polygon", "coordinates": [ring]},
-                "properties": {
-                    "field_id": spec.id,
-                    "label": spec.label,
-                    "category": spec.category,
-                    "crop": spec.crop,
-                    "variety": spec.variety,
-                    "stage": spec.stage,
-                    "season": spec.season,
-                    "health": spec.health,
-                    "asset_path": spec.asset_path,
-                    "planting_pattern": agronomy.planting_pattern,
-                    "growth_form": agronomy.growth_form,
-                    "row_spacing_m": agronomy.row_spacing_m,
-                    "in_row_spacing_m": agronomy.in_row_spacing_m,
-                    "rows_per_bed": agronomy.rows_per_bed,
-                    "plant_height_m": agronomy.plant_height_m,
-                    "headland_m": spec.geometry.headland_m,
-                    "rotation_deg": spec.geometry.rotation_deg,
-                    "area_m2": round(spec.geometry.area_m2, 6),
-                    "nominal_plant_count": plants.nominal_plant_count,
-                    "plant_count": plants.plant_count,
-                    "stated": list(spec.stated),
-                    "inferred": list(spec.inferred),
-                },
+                "properties": plants.attributes(),
             }
         )
     return {

@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import itertools
 import math
+from collections.abc import Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, ClassVar
 
@@ -191,12 +192,12 @@ def _build_stage(scene: Scene) -> Any:
     layer.customLayerData = {
         "agrirecipe": {
             "version": __version__,
-            "schemaVersion": recipe.schema_version,
+            "schema_version": recipe.schema_version,
             "seed": recipe.seed,
             "prompt": recipe.prompt,
             "resolver": recipe.resolver,
             "season": recipe.environment.season,
-            "latitudeDeg": recipe.environment.latitude_deg,
+            "latitude_deg": recipe.environment.latitude_deg,
         }
     }
     world = UsdGeom.Xform.Define(stage, "/World")
@@ -210,51 +211,26 @@ def _build_stage(scene: Scene) -> Any:
         spec = plants.spec
         field_path = Sdf.Path("/World/Fields").AppendChild(spec.id)
         field_prim = UsdGeom.Xform.Define(stage, field_path).GetPrim()
-        _set_attributes(field_prim, _field_attributes(spec, plants))
+        _set_attributes(field_prim, plants.attributes())
         _add_ground(stage, field_path.AppendChild("Ground"), spec)
         _add_instancer(stage, field_path.AppendChild("Plants"), plants)
     return stage
 
 
-def _field_attributes(spec: FieldSpec, plants: FieldPlants) -> dict[str, object]:
-    agronomy = spec.agronomy
-    return {
-        "fieldId": spec.id,
-        "label": spec.label,
-        "category": spec.category,
-        "crop": spec.crop,
-        "variety": spec.variety,
-        "stage": spec.stage,
-        "season": spec.season,
-        "health": spec.health,
-        "assetPath": spec.asset_path,
-        "plantingPattern": agronomy.planting_pattern,
-        "growthForm": agronomy.growth_form,
-        "rowSpacingM": agronomy.row_spacing_m,
-        "inRowSpacingM": agronomy.in_row_spacing_m,
-        "plantHeightM": agronomy.plant_height_m,
-        "foliage": agronomy.foliage,
-        "headlandM": spec.geometry.headland_m,
-        "plantCount": plants.plant_count,
-        "nominalPlantCount": plants.nominal_plant_count,
-    }
-
-
-def _set_attributes(prim: Any, values: dict[str, object]) -> None:
+def _set_attributes(prim: Any, values: Mapping[str, str | int | float | list[str]]) -> None:
     """Typed custom ``agrirecipe:*`` attributes (shown in usdview's property panel)."""
     from pxr import Sdf
 
     names = Sdf.ValueTypeNames
     for key, value in values.items():
-        if isinstance(value, bool) or not isinstance(value, str | int | float):
-            raise TypeError(f"unsupported attribute value for {key}: {value!r}")  # a bug
-        value_type = (
-            names.String
-            if isinstance(value, str)
-            else names.Int
-            if isinstance(value, int)
-            else names.Double
-        )
+        if isinstance(value, list):
+            value_type = names.StringArray
+        elif isinstance(value, str):
+            value_type = names.String
+        elif isinstance(value, int):
+            value_type = names.Int64
+        else:
+            value_type = names.Double
         prim.CreateAttribute(f"agrirecipe:{key}", value_type, custom=True).Set(value)
 
 
@@ -276,7 +252,7 @@ def _add_sun(stage: Any, recipe: SceneRecipe) -> None:
     rotation = Gf.Rotation(Gf.Vec3d(0.0, 0.0, 1.0), toward_sun)
     light.AddOrientOp(UsdGeom.XformOp.PrecisionFloat).Set(Gf.Quatf(rotation.GetQuat()))
     light.GetPrim().SetCustomDataByKey(
-        "agrirecipe", {"elevationDeg": sun.elevation_deg, "azimuthDeg": sun.azimuth_deg}
+        "agrirecipe", {"elevation_deg": sun.elevation_deg, "azimuth_deg": sun.azimuth_deg}
     )
 
 
@@ -336,16 +312,16 @@ def _add_instancer(stage: Any, path: Any, plants: FieldPlants) -> None:
     _set_attributes(
         prototype,
         {
-            "assetPath": spec.asset_path,
+            "asset_path": spec.asset_path,
             "category": spec.category,
             "crop": spec.crop,
             "variety": spec.variety,
             "stage": spec.stage,
             "season": spec.season,
             "health": spec.health,
-            "growthForm": agronomy.growth_form,
-            "heightM": agronomy.plant_height_m,
-            "canopyWidthM": agronomy.canopy_width_m,
+            "growth_form": agronomy.growth_form,
+            "height_m": agronomy.plant_height_m,
+            "canopy_width_m": agronomy.canopy_width_m,
         },
     )
     points, counts, indices, colours = proxy_mesh(

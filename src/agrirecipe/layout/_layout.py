@@ -16,7 +16,6 @@ from __future__ import annotations
 
 import hashlib
 import inspect
-import math
 import random
 from dataclasses import dataclass
 from typing import Any
@@ -91,42 +90,31 @@ def place_field_array(
 ) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
     """:func:`place_field` vectorised: ``(xyz (n, 3), yaw_rad, scale, height_m)``, bit-identical."""
     beds, rows_per_bed, per_row, x_start, y_start = _kernel.plant_grid(params)
-    row_spacing = float(params["row_spacing_m"])
-    bed_row_spacing = float(params["bed_row_spacing_m"])
-    in_row = float(params["in_row_spacing_m"])
-    origin_x, origin_y = float(params["origin_m"][0]), float(params["origin_m"][1])
-    rotation = math.radians(float(params["rotation_deg"]))
-    cos_r, sin_r = math.cos(rotation), math.sin(rotation)
-    jitter = float(params["jitter_m"])
-    missing_rate = float(params["missing_rate"])
-    size_variation = float(params["size_variation"])
-    yaw_max = math.radians(float(params["yaw_variation_deg"]))
-    plant_height = float(params["plant_height_m"])
-
+    terms = _kernel.placement_terms(params)
     count = beds * rows_per_bed * per_row
     draws = _random_stream(int(params["seed"]), count * _kernel.KERNEL_DRAWS_PER_POSITION)
     draws = draws.reshape(count, _kernel.KERNEL_DRAWS_PER_POSITION)
-    kept = draws[:, 0] >= missing_rate  # the kernel skips u_missing < missing_rate
+    kept = draws[:, 0] >= terms.missing_rate  # the kernel skips u_missing < missing_rate
     u_x, u_y, u_yaw, u_scale = (draws[kept, column] for column in range(1, 5))
     del draws
 
     # local_x = x_start + bed * row_spacing + row * bed_row_spacing, in that order.
     bed_index = np.arange(beds, dtype=np.float64)[:, None]
     row_index = np.arange(rows_per_bed, dtype=np.float64)[None, :]
-    row_x = ((x_start + bed_index * row_spacing) + row_index * bed_row_spacing).ravel()
-    step_y = y_start + np.arange(per_row, dtype=np.float64) * in_row
+    row_x = ((x_start + bed_index * terms.row_spacing) + row_index * terms.bed_row_spacing).ravel()
+    step_y = y_start + np.arange(per_row, dtype=np.float64) * terms.in_row
     local_x = np.repeat(row_x, per_row)[kept]
     local_y = np.tile(step_y, beds * rows_per_bed)[kept]
 
-    px = local_x + (2.0 * u_x - 1.0) * jitter
-    py = local_y + (2.0 * u_y - 1.0) * jitter
+    px = local_x + (2.0 * u_x - 1.0) * terms.jitter
+    py = local_y + (2.0 * u_y - 1.0) * terms.jitter
     xyz = np.zeros((px.shape[0], 3), dtype=np.float64)
-    xyz[:, 0] = origin_x + (px * cos_r - py * sin_r)
-    xyz[:, 1] = origin_y + (px * sin_r + py * cos_r)
-    yaw = rotation + (2.0 * u_yaw - 1.0) * yaw_max
-    scale = 1.0 + size_variation * ((2.0 * u_scale - 1.0) * _kernel._KERNEL_SQRT3)
+    xyz[:, 0] = terms.origin_x + (px * terms.cos_r - py * terms.sin_r)
+    xyz[:, 1] = terms.origin_y + (px * terms.sin_r + py * terms.cos_r)
+    yaw = terms.rotation_rad + (2.0 * u_yaw - 1.0) * terms.yaw_max_rad
+    scale = 1.0 + terms.size_variation * ((2.0 * u_scale - 1.0) * _kernel.KERNEL_SQRT3)
     scale = np.maximum(scale, _kernel.KERNEL_MIN_SCALE)
-    height = plant_height * scale
+    height = terms.plant_height * scale
     return xyz, yaw, scale, height
 
 
@@ -163,6 +151,40 @@ class FieldPlants:
     def nominal_plant_count(self) -> int:
         """Planting positions before missing plants were removed."""
         return self.spec.nominal_plant_count
+
+    def attributes(self) -> dict[str, str | int | float | list[str]]:
+        """The field described in flat JSON-able values, for ground-truth outputs.
+
+        What the field is (the five attributes, asset, agronomy summary), where
+        (headland, rotation, area) and how many plants it holds; ``fields.geojson``
+        and the USD field prims carry exactly these.
+        """
+        spec, agronomy, geometry = self.spec, self.spec.agronomy, self.spec.geometry
+        return {
+            "field_id": spec.id,
+            "label": spec.label,
+            "category": spec.category,
+            "crop": spec.crop,
+            "variety": spec.variety,
+            "stage": spec.stage,
+            "season": spec.season,
+            "health": spec.health,
+            "asset_path": spec.asset_path,
+            "planting_pattern": agronomy.planting_pattern,
+            "growth_form": agronomy.growth_form,
+            "row_spacing_m": agronomy.row_spacing_m,
+            "in_row_spacing_m": agronomy.in_row_spacing_m,
+            "rows_per_bed": agronomy.rows_per_bed,
+            "plant_height_m": agronomy.plant_height_m,
+            "foliage": agronomy.foliage,
+            "headland_m": geometry.headland_m,
+            "rotation_deg": geometry.rotation_deg,
+            "area_m2": round(geometry.area_m2, 6),
+            "nominal_plant_count": self.nominal_plant_count,
+            "plant_count": self.plant_count,
+            "stated": list(spec.stated),
+            "inferred": list(spec.inferred),
+        }
 
     def __repr__(self) -> str:
         return (

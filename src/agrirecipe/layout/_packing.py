@@ -155,26 +155,36 @@ def _check_relations(relations: Sequence[Relation], ids: Sequence[str]) -> None:
             )
 
 
-def _components(ids: Sequence[str], relations: Sequence[Relation]) -> list[list[str]]:
-    """Fields linked by relations, each group in recipe order, groups by first member."""
-    parent = {name: name for name in ids}
+class _Groups:
+    """Union-find over field ids: which fields have been bound together."""
 
-    def find(name: str) -> str:
+    def __init__(self, names: Iterable[str]) -> None:
+        self._parent = {name: name for name in names}
+
+    def find(self, name: str) -> str:
+        parent = self._parent
         while parent[name] != name:
             parent[name] = parent[parent[name]]
             name = parent[name]
         return name
 
+    def join(self, a: str, b: str) -> None:
+        root_a, root_b = self.find(a), self.find(b)
+        if root_a != root_b:
+            # The smaller name stays the root: the result never depends on join order.
+            self._parent[max(root_a, root_b)] = min(root_a, root_b)
+
+
+def _components(ids: Sequence[str], relations: Sequence[Relation]) -> list[list[str]]:
+    """Fields linked by relations, each group in recipe order, groups by first member."""
+    groups = _Groups(ids)
     for relation in relations:
-        root = find(relation.subject)
         for other in relation.objects:
-            other_root = find(other)
-            if other_root != root:
-                parent[other_root] = root
-    groups: dict[str, list[str]] = {}
+            groups.join(relation.subject, other)
+    members: dict[str, list[str]] = {}
     for name in ids:
-        groups.setdefault(find(name), []).append(name)
-    return list(groups.values())
+        members.setdefault(groups.find(name), []).append(name)
+    return list(members.values())
 
 
 # --- cell assignment ----------------------------------------------------------------------------
@@ -364,18 +374,10 @@ def _axis_levels(
     Fields bound by ``equal`` share a level; an edge inside such a group, or a
     cycle between groups, is a contradiction.
     """
-    parent = {name: name for name in names}
-
-    def find(name: str) -> str:
-        while parent[name] != name:
-            parent[name] = parent[parent[name]]
-            name = parent[name]
-        return name
-
+    groups = _Groups(names)
+    find = groups.find
     for a, b in equal:
-        root_a, root_b = find(a), find(b)
-        if root_a != root_b:
-            parent[max(root_a, root_b)] = min(root_a, root_b)
+        groups.join(a, b)
     successors: dict[str, set[str]] = {find(name): set() for name in names}
     for a, b in edges:
         root_a, root_b = find(a), find(b)
