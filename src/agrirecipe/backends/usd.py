@@ -49,6 +49,18 @@ __all__ = ["STAGE_NAME", "UsdBackend", "proxy_mesh", "yaw_quaternions"]
 #: The file :meth:`UsdBackend.write` creates.
 STAGE_NAME = "scene.usda"
 
+# What a prototype (one asset) says about itself, from the field's attributes.
+_ASSET_ATTRIBUTES = (
+    "asset_path",
+    "category",
+    "crop",
+    "variety",
+    "stage",
+    "season",
+    "health",
+    "growth_form",
+    "plant_height_m",
+)
 _SOIL_RGB = (0.42, 0.31, 0.21)
 _GRASS_RGB = (0.33, 0.45, 0.22)
 _BARK_RGB = (0.36, 0.27, 0.20)
@@ -309,21 +321,9 @@ def _add_instancer(stage: Any, path: Any, plants: FieldPlants) -> None:
     prototype = UsdGeom.Xform.Define(stage, prototype_path).GetPrim()
     prototype.SetAssetInfoByKey("name", asset_name)
     prototype.SetAssetInfoByKey("identifier", Sdf.AssetPath(spec.asset_path))
-    _set_attributes(
-        prototype,
-        {
-            "asset_path": spec.asset_path,
-            "category": spec.category,
-            "crop": spec.crop,
-            "variety": spec.variety,
-            "stage": spec.stage,
-            "season": spec.season,
-            "health": spec.health,
-            "growth_form": agronomy.growth_form,
-            "height_m": agronomy.plant_height_m,
-            "canopy_width_m": agronomy.canopy_width_m,
-        },
-    )
+    field_attributes = plants.attributes()
+    asset_attributes = {key: field_attributes[key] for key in _ASSET_ATTRIBUTES}
+    _set_attributes(prototype, asset_attributes | {"canopy_width_m": agronomy.canopy_width_m})
     points, counts, indices, colours = proxy_mesh(
         agronomy.growth_form, agronomy.plant_height_m, agronomy.canopy_width_m, agronomy.foliage_rgb
     )

@@ -8,7 +8,15 @@
   :func:`field_parameters`, so engines place exactly the plants the library does.
 """
 
-from agrirecipe.layout._kernel import place_field, plant_grid
+from agrirecipe.layout._kernel import (
+    KERNEL_MIN_SCALE,
+    KERNEL_VERSION,
+    PlacementTerms,
+    iter_field_plants,
+    place_field,
+    placement_terms,
+    plant_grid,
+)
 from agrirecipe.layout._layout import (
     FieldPlants,
     Layout,
@@ -22,16 +30,21 @@ from agrirecipe.layout._packing import DEFAULT_GAP_M, FieldRequest, describe_rel
 
 __all__ = [
     "DEFAULT_GAP_M",
+    "KERNEL_MIN_SCALE",
+    "KERNEL_VERSION",
     "FieldPlants",
     "FieldRequest",
     "Layout",
+    "PlacementTerms",
     "describe_relation",
     "field_parameters",
     "field_seed",
+    "iter_field_plants",
     "kernel_source",
     "layout_scene",
     "pack_fields",
     "place_field",
     "place_field_array",
+    "placement_terms",
     "plant_grid",
 ]
