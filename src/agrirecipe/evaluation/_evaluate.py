@@ -25,7 +25,10 @@ def models_description() -> str:
     try:
         from agrirecipe.localmodels import default_embedding_model_path
 
-        parts.append(f"embedding {default_embedding_model_path().name} (sentence-transformers)")
+        model = default_embedding_model_path()
+        # Packaged models sit in a generic "model" folder: name the package too.
+        name = f"{model.parent.name}/{model.name}" if model.name == "model" else model.name
+        parts.append(f"embedding {name} (sentence-transformers)")
     except AgrirecipeError:
         parts.append("embedding model not installed")
     gguf = os.environ.get("AGRIRECIPE_GGUF")

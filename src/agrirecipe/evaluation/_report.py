@@ -143,9 +143,13 @@ def machine_description() -> str:
                     break
     except OSError:
         pass
+    load = ""
+    if hasattr(os, "getloadavg"):
+        # Other processes compete for the same cores; the load says how much.
+        load = f"; load average {os.getloadavg()[0]:.1f} when the report was written"
     return (
         f"{cores} CPU cores ({cpu}){memory}, no GPU (every model runs on the CPU); "
-        f"{platform.system()} {platform.machine()}, Python {platform.python_version()}"
+        f"{platform.system()} {platform.machine()}, Python {platform.python_version()}{load}"
     )
 
 

@@ -1,0 +1,84 @@
+"""``agrirecipe eval`` on a handful of prompts with the rules strategy (no model needed)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from agrirecipe.cli import main
+from agrirecipe.evaluation import BEGIN_MARKER
+
+
+def test_eval_prints_the_tables_and_writes_the_report(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    report = tmp_path / "EVALUATION.md"
+    code = main(
+        [
+            "eval",
+            "--resolver",
+            "rules",
+            "--limit",
+            "6",
+            "--no-retrieval",
+            "--no-progress",
+            "--write",
+            str(report),
+        ]
+    )
+    out, err = capsys.readouterr()
+    assert code == 0, err
+    assert "### Table I" in out and "### Latency" in out and "### Table II" in out
+    assert "| Prompt type (n) | Paper: Few-shot / Finetuning / RAG / Hybrid | rules |" in out
+    assert "Single-field detailed (2), accuracy" in out  # --limit 6 spreads over the types
+    assert "100/100/97/98 %" in out
+    assert "6 prompts (--limit 6)" in out
+    assert "<details>" not in out  # failure lists only with --failures
+    text = report.read_text(encoding="utf-8")
+    assert text.startswith("# Evaluation")
+    assert BEGIN_MARKER in text and "### Table I" in text and "<details>" in text
+    assert f"wrote {report}" in err
+
+
+def test_eval_selects_by_category_and_lists_failures(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    code = main(
+        [
+            "eval",
+            "--resolver",
+            "rules",
+            "--category",
+            "invalid,typo",
+            "--limit",
+            "5",
+            "--no-retrieval",
+            "--no-progress",
+            "--failures",
+        ]
+    )
+    out, _ = capsys.readouterr()
+    assert code == 0
+    assert "categories invalid, typo" in out
+    assert "Invalid prompts rejected with an `AgrirecipeError` (1)" in out
+    assert "typos (4)" in out
+    assert "<details><summary><b>rules</b>" in out
+
+
+@pytest.mark.parametrize(
+    ("arguments", "message"),
+    [
+        (["--resolver", "magic"], "unknown resolver strategy magic"),
+        (["--category", "fruity"], "unknown prompt category fruity"),
+        (["--limit", "0"], "--limit must be at least 1"),
+        (["--benchmark", "/nonexistent/prompts.yaml"], "does not exist"),
+    ],
+)
+def test_eval_rejects_bad_arguments_with_exit_code_2(
+    arguments: list[str], message: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    code = main(["eval", "--no-retrieval", "--no-progress", *arguments])
+    _, err = capsys.readouterr()
+    assert code == 2
+    assert message in err
