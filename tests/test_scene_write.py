@@ -59,3 +59,9 @@ def test_writing_over_a_file_is_refused(scene: Scene, tmp_path: Path) -> None:
     blocker.write_text("")
     with pytest.raises(ConfigurationError, match="not a folder"):
         scene.write(blocker, backends=["annotations"])
+
+
+def test_outputs_are_readable_by_others(scene: Scene, tmp_path: Path) -> None:
+    # Atomic writes go through mkstemp, whose files are private (0600) unless changed.
+    for path in scene.write(tmp_path, backends=["usd", "annotations"]):
+        assert path.stat().st_mode & 0o044 == 0o044, path.name

@@ -10,6 +10,9 @@ from pathlib import Path
 
 __all__ = ["atomic_path", "write_atomic"]
 
+#: Permissions of written outputs (rw-r--r--, like a file created with open()).
+_OUTPUT_MODE = 0o644
+
 
 def write_atomic(path: str | Path, data: str | bytes) -> Path:
     """Write ``data`` to ``path`` through a temporary file in the same folder and a rename."""
@@ -20,6 +23,8 @@ def write_atomic(path: str | Path, data: str | bytes) -> Path:
         dir=target.parent, prefix=f".{target.name}.", suffix=".tmp"
     )
     try:
+        # mkstemp makes the file private (0600); an output file should be readable like any other.
+        Path(temporary).chmod(_OUTPUT_MODE)
         with os.fdopen(handle, "wb") as stream:
             stream.write(payload)
             stream.flush()
@@ -47,8 +52,7 @@ def atomic_path(path: str | Path, *, suffix: str = ".tmp") -> Iterator[Path]:
         dir=target.parent, prefix=f".{target.name}.", suffix=suffix
     )
     os.close(handle)
-    # mkstemp makes the file private (0600); an output file should be readable like any other.
-    Path(temporary).chmod(0o644)
+    Path(temporary).chmod(_OUTPUT_MODE)  # not mkstemp's private 0600
     try:
         yield Path(temporary)
         with Path(temporary).open("rb+") as stream:
