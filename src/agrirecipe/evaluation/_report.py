@@ -304,6 +304,7 @@ def _latency_table(report: EvaluationReport) -> list[str]:
         "mean (ms)",
         "max (ms)",
         "prompts",
+        "load (5 min)",
     ]
     paper = report.paper.latency
     rows = [
@@ -315,12 +316,13 @@ def _latency_table(report: EvaluationReport) -> list[str]:
             "–",
             "–",
             "–",
+            "–",
         ]
     ]
     for run in report.runs:
         stats = latency(run.scores)
         if run.unavailable or stats is None:
-            rows.append([run.name, "n/a", "n/a", "n/a", "n/a", "n/a", "0"])
+            rows.append([run.name, "n/a", "n/a", "n/a", "n/a", "n/a", "0", "–"])
             continue
         cold = "–" if run.cold_seconds is None else f"{run.cold_seconds:.2f}"
         rows.append(
@@ -332,9 +334,16 @@ def _latency_table(report: EvaluationReport) -> list[str]:
                 f"{stats.mean_ms:.1f}",
                 f"{stats.max_ms:.1f}",
                 str(stats.count),
+                "–" if run.load_average is None else f"{run.load_average:.1f}",
             ]
         )
-    return _table(header, rows)
+    lines = _table(header, rows)
+    lines += [
+        "",
+        "Load is the 5-minute load average when the strategy finished: above the core count, "
+        "other processes were competing for the CPU and the times are pessimistic.",
+    ]
+    return lines
 
 
 def _failure_kinds(report: EvaluationReport) -> list[str]:

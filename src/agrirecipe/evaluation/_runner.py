@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 import sys
 import time
 from collections.abc import Callable
@@ -32,6 +33,7 @@ class StrategyRun:
     scores: tuple[PromptScore, ...] = ()
     cold_seconds: float | None = None
     unavailable: str | None = None
+    load_average: float | None = None
 
     @property
     def failures(self) -> tuple[PromptScore, ...]:
@@ -98,4 +100,14 @@ def run_strategy(
             scores.append(score)
             correct += int(score.correct)
             bar.set_postfix(correct=f"{correct}/{len(scores)}", refresh=False)
-    return StrategyRun(name=resolver, scores=tuple(scores), cold_seconds=cold)
+    return StrategyRun(
+        name=resolver,
+        scores=tuple(scores),
+        cold_seconds=cold,
+        load_average=_load_average(),
+    )
+
+
+def _load_average() -> float | None:
+    """The 5-minute load average (other processes on the same cores slow the timings)."""
+    return os.getloadavg()[1] if hasattr(os, "getloadavg") else None
