@@ -123,3 +123,25 @@ def test_knowledge_query_errors(tmp_path: Path) -> None:
     path.write_text("version: 1\nqueries:\n- query: x\n", encoding="utf-8")
     with pytest.raises(BenchmarkError, match=r"queries\[0\]"):
         load_knowledge_queries(path)
+
+
+def test_several_files_load_with_their_split_and_ids_stay_unique(tmp_path: Path) -> None:
+    dev = _write(
+        tmp_path, "- {id: d-1, type: single_generic, prompt: pears, fields: [{crop: Pear}]}\n"
+    )
+    heldout = tmp_path / "heldout.yaml"
+    heldout.write_text(
+        "version: 1\nsplit: heldout\nprompts:\n"
+        "- {id: h-1, type: single_generic, prompt: apples, fields: [{crop: Apple}]}\n",
+        encoding="utf-8",
+    )
+    benchmark = load_benchmark([dev, heldout])
+    assert [(p.id, p.split) for p in benchmark.prompts] == [("d-1", "dev"), ("h-1", "heldout")]
+    assert [p.id for p in benchmark.select(splits=["heldout"]).prompts] == ["h-1"]
+    heldout.write_text(
+        "version: 1\nsplit: heldout\nprompts:\n"
+        "- {id: d-1, type: single_generic, prompt: apples, fields: [{crop: Apple}]}\n",
+        encoding="utf-8",
+    )
+    with pytest.raises(BenchmarkError, match=r"duplicate prompt id 'd-1'.*also in"):
+        load_benchmark([dev, heldout])

@@ -195,6 +195,22 @@ def test_markdown_has_the_paper_shaped_tables_and_the_failure_cases() -> None:
     assert "crashed with a non-agrirecipe exception" in text
     short = render_markdown(_report((run,)), failures=False)
     assert "gala and conference" not in short
+    assert "held-out" not in short  # no held-out prompts were run
+
+
+def test_markdown_compares_dev_and_heldout_prompts() -> None:
+    heldout = Benchmark(
+        source="test.yaml",
+        prompts=tuple(
+            p.model_copy(update={"split": "heldout" if p.id.startswith("m") else "dev"})
+            for p in BENCHMARK.prompts
+        ),
+    )
+    run = run_strategy(heldout, "stand-in", progress=False, generate=_stand_in)
+    text = render_markdown(_report((run,)))
+    assert "### Development prompts vs held-out prompts" in text
+    assert "| Multi-field detailed | – / 50.0 % (1/2) |" in text
+    assert "| All prompts | 66.7 % (2/3) / 50.0 % (1/2) |" in text
 
 
 def test_targets_are_measured_from_the_runs() -> None:

@@ -61,7 +61,20 @@ def register(subparsers: Any) -> None:
         default=None,
         help="strategy that extracts attributes for Table II (default hybrid if evaluated)",
     )
-    parser.add_argument("--benchmark", type=Path, default=None, help="a custom prompts file")
+    parser.add_argument(
+        "--benchmark",
+        type=Path,
+        action="append",
+        default=None,
+        metavar="PATH",
+        help="a prompts file instead of the shipped ones (repeat for several)",
+    )
+    parser.add_argument(
+        "--split",
+        choices=["dev", "heldout"],
+        default=None,
+        help="only the development prompts or only the held-out ones",
+    )
     parser.add_argument("--queries", type=Path, default=None, help="a custom knowledge-query file")
     parser.add_argument("--seed", type=int, default=0, help="seed passed to generate (default 0)")
     parser.add_argument("--no-progress", action="store_true", help="no progress bars")
@@ -112,6 +125,9 @@ def run(args: argparse.Namespace) -> int:
         keep = {p.id for p in (*by_type, *by_tag)}
         benchmark = benchmark.select(ids=sorted(keep))
         selection.append(f"categories {', '.join(wanted)}")
+    if args.split is not None:
+        benchmark = benchmark.select(splits=[args.split])
+        selection.append(f"{args.split} split")
     if args.limit is not None:
         benchmark = benchmark.select(limit=args.limit)
         selection.append(f"--limit {args.limit}")

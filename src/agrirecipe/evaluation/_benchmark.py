@@ -25,6 +25,7 @@ from agrirecipe.recipe import RelationKind
 __all__ = [
     "ATTRIBUTES",
     "PROMPT_TYPES",
+    "SHIPPED_PROMPT_FILES",
     "TAGS",
     "Benchmark",
     "BenchmarkError",
@@ -32,6 +33,7 @@ __all__ = [
     "FieldCount",
     "KnowledgeQuery",
     "PromptType",
+    "Split",
     "Tag",
     "TruthField",
     "TruthRelation",
@@ -70,6 +72,8 @@ TAGS: tuple[Tag, ...] = (
     "month_season",
     "implausible",
 )
+#: "dev": prompts the resolvers were developed against; "heldout": written after.
+Split = Literal["dev", "heldout"]
 Attribute = Literal["category", "crop", "variety", "stage", "season", "health"]
 #: The attributes a truth field can state, in display order.
 ATTRIBUTES: tuple[Attribute, ...] = ("category", "crop", "variety", "stage", "season", "health")
@@ -215,6 +219,7 @@ class BenchmarkPrompt(_Strict):
     hemisphere: Literal["north", "south"] | None = None
     expect_warning: bool = False
     error: str | None = None
+    split: Split = Field(default="dev", description="Set from the file's 'split'.")
 
     @property
     def invalid(self) -> bool:
@@ -272,6 +277,7 @@ class BenchmarkPrompt(_Strict):
 
 class _BenchmarkFile(_Strict):
     version: Literal[1]
+    split: Split = "dev"
     defaults: dict[Literal["stage", "season", "health"], str] = {}
     sets: dict[str, Any] = {}
     prompts: tuple[BenchmarkPrompt, ...] = Field(min_length=1)
@@ -280,7 +286,7 @@ class _BenchmarkFile(_Strict):
 class Benchmark(_Strict):
     """The validated prompt benchmark (defaults applied, categories filled in)."""
 
-    source: str
+    source: str = Field(description="The file(s) it was loaded from.")
     prompts: tuple[BenchmarkPrompt, ...]
 
     def select(
@@ -289,9 +295,10 @@ class Benchmark(_Strict):
         types: Sequence[str] | None = None,
         tags: Sequence[str] | None = None,
         ids: Sequence[str] | None = None,
+        splits: Sequence[str] | None = None,
         limit: int | None = None,
     ) -> Benchmark:
-        """The prompts of any of ``types``, carrying any of ``tags`` or ``ids``, at most ``limit``.
+        """Prompts of any of ``types`` with any of ``tags``/``ids``/``splits``, at most ``limit``.
 
         ``limit`` keeps the first prompts of each type in turn (round robin), so a
         small subset still covers every type.
@@ -302,6 +309,7 @@ class Benchmark(_Strict):
             if (not types or p.type in types)
             and (not tags or set(tags) & set(p.tags))
             and (not ids or p.id in ids)
+            and (not splits or p.split in splits)
         ]
         if limit is not None:
             by_type: dict[str, list[BenchmarkPrompt]] = {}
@@ -434,12 +442,48 @@ def _apply_defaults(
     return TruthField.model_validate({**field.model_dump(), **update})
 
 
+#: The shipped prompt files: the development set, then the held-out set written
+#: after the resolvers were finished (loaded when present).
+SHIPPED_PROMPT_FILES = ("prompts.yaml", "prompts_heldout.yaml")
+
+
 def load_benchmark(
-    path: str | Path | None = None, *, hierarchy: Hierarchy | None = None
+    path: str | Path | Sequence[str | Path] | None = None,
+    *,
+    hierarchy: Hierarchy | None = None,
 ) -> Benchmark:
-    """Load and check a prompt benchmark (the shipped ``benchmarks/prompts.yaml`` when None)."""
+    """Load and check prompt files into one benchmark.
+
+    ``path`` is one file or several; None loads the shipped files
+    (``benchmarks/prompts.yaml`` and, when present, ``prompts_heldout.yaml``).
+    Each prompt takes its file's ``split`` ("dev" unless the file says otherwise).
+    """
     hierarchy = hierarchy or default_hierarchy()
-    source = Path(path) if path is not None else data_path("benchmarks") / "prompts.yaml"
+    if path is None:
+        folder = data_path("benchmarks")
+        sources = [folder / name for name in SHIPPED_PROMPT_FILES if (folder / name).exists()]
+    elif isinstance(path, str | Path):
+        sources = [Path(path)]
+    else:
+        sources = [Path(p) for p in path]
+    if not sources:
+        raise BenchmarkError("no benchmark file given", stage="eval")
+    seen: dict[str, Path] = {}
+    prompts: list[BenchmarkPrompt] = []
+    for source in sources:
+        for item in _load_prompt_file(source, hierarchy):
+            if item.id in seen:
+                raise BenchmarkError(
+                    f"duplicate prompt id {item.id!r} in {source}"
+                    + (f" (also in {seen[item.id]})" if seen[item.id] != source else ""),
+                    stage="eval",
+                )
+            seen[item.id] = source
+            prompts.append(item)
+    return Benchmark(source=", ".join(str(s) for s in sources), prompts=tuple(prompts))
+
+
+def _load_prompt_file(source: Path, hierarchy: Hierarchy) -> list[BenchmarkPrompt]:
     raw = _read_yaml(source, "benchmark")
     try:
         spec = _BenchmarkFile.model_validate(raw)
@@ -449,12 +493,8 @@ def load_benchmark(
             stage="eval",
             hint="see benchmarks/README.md for the format",
         ) from exc
-    seen: set[str] = set()
     prompts: list[BenchmarkPrompt] = []
     for item in spec.prompts:
-        if item.id in seen:
-            raise BenchmarkError(f"duplicate prompt id {item.id!r} in {source}", stage="eval")
-        seen.add(item.id)
         fields = tuple(
             _apply_defaults(_check_names(f, hierarchy, f"{item.id}.fields[{i}]"), spec.defaults)
             for i, f in enumerate(item.fields)
@@ -464,8 +504,10 @@ def load_benchmark(
             extra = _apply_defaults(
                 _check_names(extra, hierarchy, f"{item.id}.extra_field"), spec.defaults
             )
-        prompts.append(item.model_copy(update={"fields": fields, "extra_field": extra}))
-    return Benchmark(source=str(source), prompts=tuple(prompts))
+        prompts.append(
+            item.model_copy(update={"fields": fields, "extra_field": extra, "split": spec.split})
+        )
+    return prompts
 
 
 def load_knowledge_queries(

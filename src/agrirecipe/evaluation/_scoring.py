@@ -131,6 +131,7 @@ class PromptScore:
     inferred_checked: int = 0
     inferred_ok: int = 0
     seconds: float | None = None
+    split: str = "dev"
 
 
 # --- field matching ---
@@ -344,6 +345,7 @@ def _blank_score(item: BenchmarkPrompt, expected: str, seconds: float | None) ->
         expected=expected,
         got="",
         seconds=seconds,
+        split=item.split,
     )
 
 
