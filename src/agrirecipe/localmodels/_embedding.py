@@ -125,7 +125,11 @@ class SentenceTransformerEmbedder:
         """Embed ``texts`` into unit-length float32 rows."""
         model = self._load()
         if not texts:
-            dim = int(model.get_sentence_embedding_dimension())
+            # sentence-transformers 6.2 renamed the method (the old name warns).
+            dimension = getattr(model, "get_embedding_dimension", None) or (
+                model.get_sentence_embedding_dimension
+            )
+            dim = int(dimension())
             return np.zeros((0, dim), dtype=np.float32)
         vectors = model.encode(
             list(texts),
