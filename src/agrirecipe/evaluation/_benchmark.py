@@ -12,7 +12,7 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Literal
+from typing import Any, Literal, TypeVar
 
 import yaml
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
@@ -386,6 +386,22 @@ def _validation_message(exc: ValidationError, raw: object) -> str:
     return f"{where}: {error['msg']} ({len(exc.errors())} problem(s))"
 
 
+_FileModel = TypeVar("_FileModel", bound=BaseModel)
+
+
+def _parse_file(model: type[_FileModel], source: Path, what: str) -> _FileModel:
+    """Read a YAML file and validate it with ``model``; errors name the entry at fault."""
+    raw = _read_yaml(source, what)
+    try:
+        return model.model_validate(raw)
+    except ValidationError as exc:
+        raise BenchmarkError(
+            f"{what} file {str(source)!r} is malformed: {_validation_message(exc, raw)}",
+            stage="eval",
+            hint="see benchmarks/README.md for the format",
+        ) from exc
+
+
 def _check_names(field: TruthField, hierarchy: Hierarchy, where: str) -> TruthField:
     """Check every name against the hierarchy and fill ``category`` from the crops."""
     crops = field.crop or ()
@@ -484,15 +500,7 @@ def load_benchmark(
 
 
 def _load_prompt_file(source: Path, hierarchy: Hierarchy) -> list[BenchmarkPrompt]:
-    raw = _read_yaml(source, "benchmark")
-    try:
-        spec = _BenchmarkFile.model_validate(raw)
-    except ValidationError as exc:
-        raise BenchmarkError(
-            f"benchmark file {str(source)!r} is malformed: {_validation_message(exc, raw)}",
-            stage="eval",
-            hint="see benchmarks/README.md for the format",
-        ) from exc
+    spec = _parse_file(_BenchmarkFile, source, "benchmark")
     prompts: list[BenchmarkPrompt] = []
     for item in spec.prompts:
         fields = tuple(
@@ -516,15 +524,7 @@ def load_knowledge_queries(
     """Load the knowledge-retrieval queries (the shipped ``knowledge_queries.yaml`` when None)."""
     hierarchy = hierarchy or default_hierarchy()
     source = Path(path) if path is not None else data_path("benchmarks") / "knowledge_queries.yaml"
-    raw = _read_yaml(source, "knowledge-query")
-    try:
-        spec = _QueryFile.model_validate(raw)
-    except ValidationError as exc:
-        raise BenchmarkError(
-            f"knowledge-query file {str(source)!r} is malformed: {_validation_message(exc, raw)}",
-            stage="eval",
-            hint="see benchmarks/README.md for the format",
-        ) from exc
+    spec = _parse_file(_QueryFile, source, "knowledge-query")
     queries: list[KnowledgeQuery] = []
     for index, item in enumerate(spec.queries):
         try:
