@@ -149,6 +149,7 @@ class Results:
     layout_runs: list[Timing]
     usd_runs: list[Timing]
     kernel: Timing
+    annotations: Timing
     usda_mb: float
     layout_traced_peak_mb: float
     fresh: dict[str, float] = field(default_factory=dict)
@@ -161,6 +162,7 @@ class Results:
 
 def measure(target_plants: int, repeat: int, seed: int) -> Results:
     from agrirecipe import Scene
+    from agrirecipe.backends.annotations import AnnotationsBackend
     from agrirecipe.backends.usd import UsdBackend
     from agrirecipe.layout import field_parameters, layout_scene, place_field
 
@@ -181,6 +183,7 @@ def measure(target_plants: int, repeat: int, seed: int) -> Results:
             scene.__dict__["layout"] = layout  # reuse the cached layout: time the USD write alone
             usd_runs.append(timed(partial(UsdBackend().write, scene, Path(folder)))[0])
         usda_mb = (Path(folder) / "scene.usda").stat().st_size / 2**20
+        annotations, _ = timed(partial(AnnotationsBackend().write, scene, Path(folder)))
 
     kernel, _ = timed(lambda: [len(place_field(p)) for p in field_parameters(recipe)])
     return Results(
@@ -191,6 +194,7 @@ def measure(target_plants: int, repeat: int, seed: int) -> Results:
         layout_runs=layout_runs,
         usd_runs=usd_runs,
         kernel=kernel,
+        annotations=annotations,
         usda_mb=usda_mb,
         layout_traced_peak_mb=layout_traced_peak / 2**20,
         fresh=fresh_process(target_plants, seed),
@@ -273,6 +277,8 @@ def report(results: Results) -> str:
         f"{results.pxr_import.cpu_s:.2f} s |",
         f"| recipe construction (packer + knowledge base) | {results.build.wall_s:.2f} s | | "
         f"{results.build.cpu_s:.2f} s |",
+        f"| `AnnotationsBackend.write` (plants.csv, fields.geojson, preview.png) "
+        f"| {results.annotations.wall_s:.2f} s | | {results.annotations.cpu_s:.2f} s |",
         f"| pure-Python kernel `place_field`, every field (what engine scripts run) "
         f"| {results.kernel.wall_s:.2f} s | | {results.kernel.cpu_s:.2f} s |",
         "",
