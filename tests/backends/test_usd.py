@@ -183,3 +183,12 @@ def test_unwritable_destination_is_a_backend_error(
     blocker.write_text("not a folder")
     with pytest.raises(BackendError, match=r"scene\.usda"):
         get_backend("usd").write(scene, blocker / "out")
+
+
+def test_in_memory_stage_can_be_extended_before_saving(written: tuple[Scene, Path]) -> None:
+    scene, _ = written
+    stage = get_backend("usd").stage(scene)  # type: ignore[attr-defined]
+    instancers = [p for p in stage.Traverse() if p.IsA(UsdGeom.PointInstancer)]
+    assert len(instancers) == len(scene.recipe.fields)
+    UsdGeom.Camera.Define(stage, "/World/Camera")  # a user's addition
+    assert "/World/Camera" in stage.GetRootLayer().ExportToString()

@@ -11,7 +11,7 @@ and names the Unreal asset it stands for. Layout::
         Fields/<field id>        Xform with the field's attributes (agrirecipe:*)
             Ground               soil quad over the field rectangle, z = 0
             Plants               PointInstancer: positions, orientations, scales, protoIndices
-                Prototypes/<SM_...>  the asset: assetInfo, agrirecipe:assetPath, crop attributes
+                Prototypes/<SM_...>  the asset: assetInfo, agrirecipe:asset_path, crop attributes
                     Proxy        Mesh
 
 Units and axes: ``metersPerUnit = 1``, ``upAxis = Z``, right-handed, X east,
