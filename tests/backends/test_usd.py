@@ -191,4 +191,5 @@ def test_in_memory_stage_can_be_extended_before_saving(written: tuple[Scene, Pat
     instancers = [p for p in stage.Traverse() if p.IsA(UsdGeom.PointInstancer)]
     assert len(instancers) == len(scene.recipe.fields)
     UsdGeom.Camera.Define(stage, "/World/Camera")  # a user's addition
-    assert "/World/Camera" in stage.GetRootLayer().ExportToString()
+    assert stage.GetPrimAtPath("/World/Camera").IsA(UsdGeom.Camera)
+    assert 'def Camera "Camera"' in stage.GetRootLayer().ExportToString()
