@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import platform
 import resource
 import subprocess
@@ -102,15 +103,16 @@ def child() -> None:
     recipe = packed_recipe(_crops(10), 1_000_000)
     script = Scene(recipe).script("unreal")
     before = _peak_rss_mb()
-    start = time.perf_counter()
+    start, cpu_start = time.perf_counter(), time.process_time()
     namespace, recording = run_script(script)
-    seconds = time.perf_counter() - start
+    seconds, cpu_seconds = time.perf_counter() - start, time.process_time() - cpu_start
     result = namespace["AGRIRECIPE_RESULT"]
     print(
         json.dumps(
             {
                 "plants": result["instances"],
                 "seconds": seconds,
+                "cpu_seconds": cpu_seconds,
                 "peak_rss_mb": _peak_rss_mb(),
                 "rss_before_mb": before,
                 "add_instances_calls": sum(
@@ -145,8 +147,10 @@ def report(results: dict[str, object]) -> str:
         START,
         "## Unreal script size (`bench/bench_unreal_script_size.py`)",
         "",
-        f"Machine: {_cpu_model()}, Python {platform.python_version()}, "
-        f"{platform.system()} {platform.release()}. Date: {time.strftime('%Y-%m-%d')}.",
+        f"Machine: {_cpu_model()}, {os.cpu_count()} cores, Python {platform.python_version()}, "
+        f"{platform.system()} {platform.release()}; load average {os.getloadavg()[0]:.1f} when "
+        f"the benchmark ended (other work inflates wall time, not CPU time). "
+        f"Date: {time.strftime('%Y-%m-%d')}.",
         "",
         "`unreal_build.py` inlines the placement kernel and one JSON entry per field; "
         "Unreal computes every plant itself, so the size follows the number of fields, "
@@ -191,7 +195,8 @@ def report(results: dict[str, object]) -> str:
             f"Executing the 10-field script with the tests' recording fake as `unreal` "
             f"(kernel + one `Transform` per plant, {execution['plants']:,} plants in "
             f"{execution['add_instances_calls']} `add_instances` chunks): "
-            f"{execution['seconds']:.1f} s, peak {execution['peak_rss_mb']:.0f} MB resident "
+            f"{execution['seconds']:.1f} s wall, {execution['cpu_seconds']:.1f} s CPU, peak "
+            f"{execution['peak_rss_mb']:.0f} MB resident "
             "(the fake keeps every transform). This is the Python side of a build in the "
             "editor; Unreal's own instance creation comes on top and is not measured here "
             "(no Unreal on this machine).",
