@@ -81,6 +81,7 @@ def _script_size(fields: int, plants: int) -> dict[str, float]:
 
 def measure(execute: bool) -> dict[str, object]:
     sys.path.insert(0, str(TESTS))
+    _script_size(1, 1_000)  # warm-up: one-off loading of the hierarchy and knowledge base
     by_plants = [_script_size(10, plants) for plants in PLANT_TARGETS]
     by_fields = [_script_size(fields, 1_000_000) for fields in FIELD_COUNTS]
     results: dict[str, object] = {"by_plants": by_plants, "by_fields": by_fields}
