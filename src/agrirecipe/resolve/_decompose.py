@@ -163,9 +163,13 @@ class MentionBuilder:
             return item.role == "plot"
         if item.role == "plot":
             spec = item.data["value"]
-            if mention.plot is not None and spec["options"] and mention.plot["options"]:
-                if not set(spec["options"]) & set(mention.plot["options"]):
-                    return False  # "an orchard vineyard": two plots, two fields
+            if (
+                mention.plot is not None
+                and spec["options"]
+                and mention.plot["options"]
+                and not set(spec["options"]) & set(mention.plot["options"])
+            ):
+                return False  # "an orchard vineyard": two plots, two fields
             if mention.has_crop and spec["options"] and len(spec["options"]) == 1:
                 return any(c == spec["options"][0] for c, _, _ in mention.interpretations or ())
             return True

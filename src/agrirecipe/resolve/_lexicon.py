@@ -148,8 +148,9 @@ def normalise(text: str) -> str:
 
 
 # Numbers (with a decimal point or comma), words, and single punctuation marks.
-# Hyphens and apostrophes are dropped so "harvest-ready" == "harvest ready".
-_TOKEN = re.compile(r"\d+(?:[.,]\d+)*|[^\W\d_]+|[^\w\s'’\-]")
+# Hyphens and apostrophes inside words are dropped so "harvest-ready" == "harvest ready";
+# a hyphen between spaces is a dash ("two orchards - Gala and Fuji").
+_TOKEN = re.compile(r"\d+(?:[.,]\d+)*|[^\W\d_]+|[^\w\s'’\-]|(?<=\s)-(?=\s)")
 
 
 def tokenize(prompt: str) -> list[Token]:

@@ -42,7 +42,10 @@ from agrirecipe.resolve._structure import (
     promote_weak_varieties,
 )
 
-__all__ = ["NearestCrops", "PromptReader", "UnknownWords"]
+__all__ = ["NOTHING_FOUND", "NearestCrops", "PromptReader", "UnknownWords"]
+
+#: How the message of the error for a prompt that names no field begins.
+NOTHING_FOUND = "no crop or field found in the prompt"
 
 #: Reads unknown words in place (typos, unseen names); returns the new items and trace steps.
 UnknownWords = Callable[[list[Item], Lexicon], tuple[list[Item], list[TraceStep]]]
@@ -222,7 +225,7 @@ class PromptReader:
                 f" (did not understand {', '.join(repr(w) for w in words[:5])})" if words else ""
             )
             raise PromptError(
-                f"no crop or field found in the prompt{detail}",
+                f"{NOTHING_FOUND}{detail}",
                 stage="resolve",
                 hint="name a crop, a variety or a kind of field, e.g. " + _EXAMPLES,
             )

@@ -43,9 +43,13 @@ def promote_weak_varieties(clauses: Sequence[Clause], builder: MentionBuilder) -
             continue
         neighbours: list[Mention] = []
         following = clauses[position + 1] if position + 1 < len(clauses) else None
-        if following is not None and following.link is not None:
-            if following.link.role == "conjunction" and following.mentions:
-                neighbours.append(following.mentions[0])
+        if (
+            following is not None
+            and following.link is not None
+            and following.link.role == "conjunction"
+            and following.mentions
+        ):
+            neighbours.append(following.mentions[0])
         neighbours += [m for c in reversed(clauses[:position]) for m in reversed(c.mentions)]
         for neighbour in neighbours:
             crops = _strong_crops(neighbour)

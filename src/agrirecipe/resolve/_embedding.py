@@ -1,0 +1,268 @@
+"""The "embedding" strategy: crop and variety names found by meaning (the paper's RAG).
+
+A FAISS index (:class:`~agrirecipe.localmodels.VectorIndex`, cached on disk,
+keyed by the hierarchy and the model) holds one row per crop or variety name
+and alias of the hierarchy, and a second one a short descriptor per crop
+("orange, an evergreen tree grown for fruits") for suggesting the known crops
+nearest in meaning to an unknown one. The sentence-transformers model loads on
+first use and is reused for every later call in the process.
+
+The strategy reads stage, season, health, sizes and structure with the same
+vocabulary as "rules"; only crop and variety mentions go through retrieval.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from agrirecipe.hierarchy import Hierarchy
+from agrirecipe.knowledge import KnowledgeBase
+from agrirecipe.localmodels import Embedder, VectorIndex, default_embedder
+from agrirecipe.resolve._intent import Candidate, ResolveContext, TraceStep
+from agrirecipe.resolve._lexicon import Item, Lexicon, Sense, normalise, vocabulary
+from agrirecipe.resolve._rules import LexicalResolver, fuzzy_unknown_words, nearest_by_spelling
+
+__all__ = ["CropIndex", "EmbeddingResolver", "Match"]
+
+#: Cosine similarity a span needs to be read as a crop or variety name.
+ACCEPT_SIMILARITY = 0.75
+#: Longest span of words tried as one name.
+_MAX_SPAN = 3
+# Vocabulary kinds a word of a name may also have ("winter" in Winter Wheat,
+# "january" in January King, "plum" in plum tomato); a span made only of such
+# words is never a name on its own.
+_SHARED_KINDS = frozenset({"filler", "season", "month", "stage", "other_crop", "number"})
+
+
+@dataclass(frozen=True, slots=True)
+class Match:
+    """A span's best name in the index."""
+
+    crop: str
+    variety: str | None
+    text: str
+    score: float
+
+
+class CropIndex:
+    """Vector indexes over a hierarchy's names and crop descriptors."""
+
+    def __init__(self, hierarchy: Hierarchy, knowledge: KnowledgeBase, embedder: Embedder) -> None:
+        self.embedder = embedder
+        texts: list[str] = []
+        self.rows: list[tuple[str, str | None]] = []
+        for crop in hierarchy.crops.values():
+            for phrase in (crop.name, *crop.aliases):
+                texts.append(normalise(phrase))
+                self.rows.append((crop.name, None))
+            for variety in crop.varieties:
+                for phrase in (variety.name, *variety.aliases):
+                    name = normalise(phrase)
+                    crop_word = normalise(crop.name)
+                    texts.append(name if crop_word in name else f"{name} {crop_word}")
+                    self.rows.append((crop.name, variety.name))
+        self.names = VectorIndex.build(texts, embedder, name=f"crop-names-{hierarchy.digest()}")
+        self.crops = list(hierarchy.crops)
+        descriptors = []
+        for name in self.crops:
+            entry = knowledge.crop_file(name)
+            category = hierarchy.crops[name].category.lower()
+            descriptors.append(
+                f"{name.lower()}, a {entry.leaf_habit} {entry.growth_form.replace('_', ' ')} "
+                f"grown for {category}"
+            )
+        self.descriptors = VectorIndex.build(
+            descriptors, embedder, name=f"crop-descriptors-{knowledge.digest()}"
+        )
+
+    def match(self, spans: Sequence[str]) -> list[Match]:
+        """The best name for each span (one embedding batch)."""
+        if not spans:
+            return []
+        vectors = self.embedder.encode(list(spans))
+        scores, rows = self.names.search(vectors, 1)
+        matches = []
+        for span, score, row in zip(spans, scores[:, 0], rows[:, 0], strict=True):
+            crop, variety = self.rows[int(row)]
+            matches.append(Match(crop, variety, span, float(score)))
+        return matches
+
+    def nearest(self, name: str, limit: int = 3) -> list[tuple[str, float]]:
+        """Known crops nearest in meaning to an unknown plant name, best first."""
+        vectors = self.embedder.encode([f"{normalise(name)} plant"])
+        scores, rows = self.descriptors.search(vectors, limit)
+        return [
+            (self.crops[int(row)], float(score))
+            for score, row in zip(scores[0], rows[0], strict=True)
+            if row >= 0
+        ]
+
+
+class _IndexCache:
+    """One :class:`CropIndex` per (hierarchy, knowledge, model), built on first use."""
+
+    def __init__(self) -> None:
+        self._indexes: dict[tuple[str, str, str], CropIndex] = {}
+        self._lock = threading.Lock()
+
+    def get(self, context: ResolveContext, embedder: Embedder) -> CropIndex:
+        key = (context.hierarchy.digest(), context.knowledge.digest(), embedder.model_id)
+        with self._lock:
+            index = self._indexes.get(key)
+            if index is None:
+                index = CropIndex(context.hierarchy, context.knowledge, embedder)
+                self._indexes[key] = index
+            return index
+
+
+def _name_words(hierarchy: Hierarchy) -> frozenset[str]:
+    words: set[str] = set()
+    for crop in hierarchy.crops.values():
+        for phrase in (crop.name, *crop.aliases):
+            words.update(normalise(phrase).split())
+        for variety in crop.varieties:
+            for phrase in (variety.name, *variety.aliases):
+                words.update(normalise(phrase).split())
+    return frozenset(words)
+
+
+class EmbeddingResolver(LexicalResolver):
+    """Crop and variety mentions by nearest neighbour in the local embedding model's space."""
+
+    name = "embedding"
+    lexicon_has_crop_names = False
+    accept_similarity = ACCEPT_SIMILARITY
+
+    def __init__(self, embedder: Embedder | None = None) -> None:
+        self._embedder = embedder
+        self._indexes = _IndexCache()
+        self._name_words: dict[str, frozenset[str]] = {}
+
+    @property
+    def embedder(self) -> Embedder:
+        """The embedding model (the process-wide default unless one was given)."""
+        if self._embedder is None:
+            self._embedder = default_embedder()
+        return self._embedder
+
+    def index(self, context: ResolveContext) -> CropIndex:
+        """The crop index for this context (built or loaded from the cache on first use)."""
+        return self._indexes.get(context, self.embedder)
+
+    def _words(self, context: ResolveContext) -> frozenset[str]:
+        key = context.hierarchy.digest()
+        if key not in self._name_words:
+            self._name_words[key] = _name_words(context.hierarchy)
+        return self._name_words[key]
+
+    def read_unknown_words(
+        self, items: list[Item], lexicon: Lexicon, context: ResolveContext
+    ) -> tuple[list[Item], list[TraceStep]]:
+        """Typos of vocabulary words by rapidfuzz; crop and variety names by retrieval."""
+        items, steps = fuzzy_unknown_words(items, lexicon)
+        words = self._words(context)
+        runs = _runs(items, words)
+        if not runs:
+            return items, steps
+        return self._retrieve(items, runs, context, steps)
+
+    def _retrieve(
+        self,
+        items: list[Item],
+        runs: list[tuple[int, int]],
+        context: ResolveContext,
+        steps: list[TraceStep],
+    ) -> tuple[list[Item], list[TraceStep]]:
+        spans: list[tuple[int, int]] = []
+        for start, end in runs:
+            for width in range(min(_MAX_SPAN, end - start), 0, -1):
+                spans += [
+                    (s, s + width)
+                    for s in range(start, end - width + 1)
+                    if any(_open(item) for item in items[s : s + width])
+                ]
+        if not spans:
+            return items, steps
+        texts = [" ".join(item.norm for item in items[s:e]) for s, e in spans]
+        matches = self.index(context).match(texts)
+        best: dict[tuple[int, int], Match] = dict(zip(spans, matches, strict=True))
+        weak_words = {normalise(w) for w in vocabulary()["weak_variety_words"]}
+        replaced: dict[int, Item] = {}
+        taken: set[int] = set()
+        # Longest spans first: "cherry tomatoes" is one name, not "cherry" + "tomatoes".
+        for (start, end), match in sorted(
+            best.items(), key=lambda kv: (-(kv[0][1] - kv[0][0]), -kv[1].score, kv[0][0])
+        ):
+            if match.score < self.accept_similarity or taken & set(range(start, end)):
+                continue
+            tokens = tuple(t for item in items[start:end] for t in item.tokens)
+            weak = all(t.norm in weak_words for t in tokens)
+            senses = [Sense("crop", match.crop)] if match.variety is None else []
+            if match.variety is not None:
+                senses.append(Sense("variety", match.variety, crop=match.crop, weak=weak))
+            item = Item(tokens, tuple(senses), fuzzy_score=round(100 * match.score, 1))
+            item.data["source"] = "embedding"
+            replaced[start] = item
+            taken.update(range(start + 1, end))
+            taken.add(start)
+            steps.append(
+                TraceStep(
+                    stage="retrieve",
+                    subject=item.raw,
+                    detail=f"nearest name: {match.variety or ''} {match.crop}".replace("  ", " "),
+                    candidates=(
+                        Candidate(
+                            value=f"{match.crop}/{match.variety}" if match.variety else match.crop,
+                            score=round(100 * match.score, 1),
+                            source="embedding",
+                        ),
+                    ),
+                )
+            )
+        out: list[Item] = []
+        for position, item in enumerate(items):
+            if position in replaced:
+                out.append(replaced[position])
+            elif position not in taken:
+                out.append(item)
+        return out, steps
+
+    def nearest_crops(
+        self, name: str, like: Sequence[str], context: ResolveContext
+    ) -> tuple[str, ...]:
+        """Known crops nearest in meaning (curated list first, then the embedding index)."""
+        if like:
+            return tuple(like[:3])
+        nearest = self.index(context).nearest(name)
+        if nearest and nearest[0][1] >= 0.3:
+            return tuple(crop for crop, _ in nearest)
+        return nearest_by_spelling(context, name, like)
+
+
+def _open(item: Item) -> bool:
+    """An unknown word, or a word that means nothing but a name (not "winter", "in")."""
+    return not item.senses or all(s.kind == "filler" for s in item.senses)
+
+
+def _runs(items: Sequence[Item], name_words: frozenset[str]) -> list[tuple[int, int]]:
+    """Maximal runs of items that may be (part of) a crop or variety name."""
+    runs: list[tuple[int, int]] = []
+    start: int | None = None
+    for position, item in enumerate(items):
+        candidate = item.norm.replace(" ", "").isalpha() and (
+            not item.senses
+            or (
+                all(s.kind in _SHARED_KINDS for s in item.senses)
+                and all(t.norm in name_words for t in item.tokens)
+            )
+        )
+        if candidate and start is None:
+            start = position
+        elif not candidate and start is not None:
+            runs.append((start, position))
+            start = None
+    if start is not None:
+        runs.append((start, len(items)))
+    return runs

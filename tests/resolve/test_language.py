@@ -1,0 +1,487 @@
+"""The language of issue 3, prompt by prompt, through the whole pipeline (rules and hybrid).
+
+Each case states what the prompt determines; attributes the prompt leaves
+open are checked separately (tests/resolve/test_enrich.py).
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from typing import Any
+
+import pytest
+
+from agrirecipe.recipe import SceneRecipe
+from agrirecipe.resolve import resolve
+
+STRATEGIES = ["rules", "hybrid"]
+
+
+def _fields(recipe: SceneRecipe) -> list[dict[str, Any]]:
+    return [f.model_dump() for f in recipe.fields]
+
+
+def _has(recipe: SceneRecipe, **expected: Any) -> bool:
+    return any(all(f[k] == v for k, v in expected.items()) for f in _fields(recipe))
+
+
+def _recipe(prompt: str, strategy: str, **options: Any) -> SceneRecipe:
+    return resolve(prompt, resolver=strategy, **options).recipe
+
+
+# --- one or many fields -----------------------------------------------------------
+
+
+@pytest.mark.parametrize("strategy", STRATEGIES)
+def test_single_detailed_field(strategy: str) -> None:
+    recipe = _recipe("Generate a healthy Pink Lady apple orchard in summer", strategy)
+    assert len(recipe.fields) == 1
+    field = recipe.fields[0]
+    assert (field.crop, field.variety, field.season, field.health) == (
+        "Apple",
+        "Pink Lady",
+        "Summer",
+        "Healthy",
+    )
+    assert field.asset_path.endswith("SM_Apple_PinkLady_" + field.stage + "_Summer_Healthy")
+
+
+@pytest.mark.parametrize("strategy", STRATEGIES)
+def test_an_orchard_next_to_two_fields_is_three_fields(strategy: str) -> None:
+    recipe = _recipe("an apple orchard next to two carrot fields", strategy)
+    assert Counter(f.crop for f in recipe.fields) == {"Apple": 1, "Carrot": 2}
+    apple = next(f.id for f in recipe.fields if f.crop == "Apple")
+    carrots = {f.id for f in recipe.fields if f.crop == "Carrot"}
+    assert {(r.kind, r.subject, r.objects[0]) for r in recipe.relations} == {
+        ("next_to", apple, c) for c in carrots
+    }
+
+
+@pytest.mark.parametrize("strategy", STRATEGIES)
+def test_a_count_with_an_attribute_for_all(strategy: str) -> None:
+    recipe = _recipe("three tomato fields with blight", strategy)
+    assert [(f.crop, f.health) for f in recipe.fields] == [("Tomato", "Ill")] * 3
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "Two orchards: one of Gala, one of Fuji",
+        "two apple orchards, one Gala and the other Fuji",
+        "two orchards - Gala and Fuji",
+    ],
+)
+def test_members_of_a_plural_mention(prompt: str) -> None:
+    recipe = _recipe(prompt, "rules")
+    assert sorted((f.crop, f.variety) for f in recipe.fields) == [
+        ("Apple", "Fuji"),
+        ("Apple", "Gala"),
+    ]
+
+
+def test_listed_members_after_a_colon() -> None:
+    recipe = _recipe("three fields: wheat, maize and potatoes", "rules")
+    assert sorted(f.crop for f in recipe.fields) == ["Maize", "Potato", "Wheat"]
+
+
+def test_ordinal_members() -> None:
+    recipe = _recipe(
+        "a farm with three fields. The first is Gala apples, the second Elsanta "
+        "strawberries and the third Bintje potatoes",
+        "rules",
+    )
+    assert sorted(f.variety for f in recipe.fields) == ["Bintje", "Elsanta", "Gala"]
+
+
+# --- attributes stated once for all, or per field -------------------------------------
+
+
+@pytest.mark.parametrize("strategy", STRATEGIES)
+def test_attributes_stated_for_all(strategy: str) -> None:
+    recipe = _recipe("an apple orchard next to two carrot fields, all in autumn", strategy)
+    assert {f.season for f in recipe.fields} == {"Fall"}
+    assert all("season" in f.stated for f in recipe.fields)
+
+
+def test_both_applies_to_both() -> None:
+    recipe = _recipe("a pear orchard and a cherry orchard, both diseased", "rules")
+    assert [f.health for f in recipe.fields] == ["Ill", "Ill"]
+
+
+def test_per_field_attributes_stay_with_their_field() -> None:
+    recipe = _recipe("ripe apples next to young carrots with blight, in autumn", "rules")
+    apple = next(f for f in recipe.fields if f.crop == "Apple")
+    carrot = next(f for f in recipe.fields if f.crop == "Carrot")
+    assert (apple.stage, apple.health) == ("Maturation", "Healthy")
+    assert (carrot.stage, carrot.health) == ("Vegetative", "Ill")
+    assert apple.season == carrot.season == "Fall"
+
+
+def test_a_trailing_attribute_covers_coordinated_fields() -> None:
+    recipe = _recipe("bananas and oranges, ripe", "rules")
+    assert [f.stage for f in recipe.fields] == ["Maturation", "Maturation"]
+
+
+def test_a_later_mention_of_the_same_field_adds_to_it() -> None:
+    recipe = _recipe(
+        "a granny smith orchard when the apples are ripe in autumn. the trees have scab.",
+        "rules",
+    )
+    assert len(recipe.fields) == 1
+    field = recipe.fields[0]
+    assert (field.variety, field.stage, field.season, field.health) == (
+        "Granny Smith",
+        "Maturation",
+        "Fall",
+        "Ill",
+    )
+
+
+def test_a_restated_variety_narrows_the_field() -> None:
+    recipe = _recipe("a carrot field, nantes variety, plants still young, spring time", "rules")
+    assert [(f.variety, f.stage, f.season) for f in recipe.fields] == [
+        ("Nantes", "Vegetative", "Spring")
+    ]
+
+
+def test_a_correction_replaces_the_field_before_it() -> None:
+    recipe = _recipe("cherry tomatoes? no, I mean cherry trees, Regina, in bloom", "rules")
+    assert [(f.crop, f.variety, f.stage) for f in recipe.fields] == [
+        ("Cherry", "Regina", "Reproductive")
+    ]
+
+
+# --- generic requests ------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_some_fruit_and_vegetable_fields(seed: int) -> None:
+    recipe = _recipe("some fruit and vegetable fields", "rules", seed=seed)
+    assert sorted(f.category for f in recipe.fields) == ["Fruits", "Vegetables"]
+    assert all("crop" in f.inferred and "category" in f.stated for f in recipe.fields)
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_three_different_vegetables(seed: int) -> None:
+    recipe = _recipe("a mixed farm with three different vegetables", "rules", seed=seed)
+    assert [f.category for f in recipe.fields] == ["Vegetables"] * 3
+    assert len({f.crop for f in recipe.fields}) == 3
+
+
+def test_too_many_different_crops_is_an_error() -> None:
+    from agrirecipe import PromptError
+
+    with pytest.raises(PromptError, match="different cereals"):
+        resolve("five different cereals", resolver="rules")
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_an_orchard_and_a_cereal_field(seed: int) -> None:
+    recipe = _recipe("an orchard and a cereal field", "rules", seed=seed)
+    orchard, cereal = recipe.fields
+    assert orchard.crop in {"Apple", "Pear", "Cherry", "Orange"}
+    assert cereal.category == "Cereals"
+
+
+def test_a_vineyard_is_grapes() -> None:
+    recipe = _recipe("a vineyard", "rules")
+    assert recipe.fields[0].crop == "Grape"
+    assert "crop" in recipe.fields[0].stated
+
+
+def test_other_means_different_from_the_named_crop() -> None:
+    for seed in range(5):
+        recipe = _recipe("an apple orchard and two other orchards", "rules", seed=seed)
+        assert len({f.crop for f in recipe.fields}) == 3
+
+
+def test_generic_choice_follows_the_seed() -> None:
+    crops = {
+        tuple(f.crop for f in _recipe("three vegetable fields", "rules", seed=s).fields)
+        for s in range(12)
+    }
+    assert len(crops) > 1  # the seed changes the choice...
+    again = _recipe("three vegetable fields", "rules", seed=3)
+    assert tuple(f.crop for f in again.fields) in crops  # ...and the same seed repeats it
+
+
+def test_generic_choice_prefers_crops_plausible_in_the_season() -> None:
+    for seed in range(10):
+        recipe = _recipe("a vegetable field in winter", "rules", seed=seed)
+        field = recipe.fields[0]
+        assert field.crop not in {"Lettuce", "Tomato", "Pepper"}  # not grown outdoors in winter
+        assert not recipe.warnings
+
+
+# --- stage, season and health vocabulary -------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("words", "stage"),
+    [
+        ("seedling", "Vegetative"),
+        ("young", "Vegetative"),
+        ("early stage", "Vegetative"),
+        ("just planted", "Vegetative"),
+        ("flowering", "Reproductive"),
+        ("in bloom", "Reproductive"),
+        ("blossoming", "Reproductive"),
+        ("at fruit set", "Reproductive"),
+        ("ripe", "Maturation"),
+        ("harvest-ready", "Maturation"),
+        ("at harvest", "Maturation"),
+        ("mature", "Maturation"),
+    ],
+)
+def test_stage_words(words: str, stage: str) -> None:
+    recipe = _recipe(f"a Gala apple orchard, {words}", "rules")
+    assert recipe.fields[0].stage == stage
+    assert "stage" in recipe.fields[0].stated
+
+
+def test_tasseling_maize() -> None:
+    assert _recipe("sweetcorn tasselling in july", "rules").fields[0].stage == "Reproductive"
+
+
+@pytest.mark.parametrize(
+    ("words", "season"),
+    [
+        ("in autumn", "Fall"),
+        ("in the fall", "Fall"),
+        ("in late summer", "Summer"),
+        ("in mid-winter", "Winter"),
+        ("in springtime", "Spring"),
+        ("in March", "Spring"),
+        ("in early June", "Summer"),
+        ("in October", "Fall"),
+        ("in December", "Winter"),
+    ],
+)
+def test_season_words_and_months(words: str, season: str) -> None:
+    assert _recipe(f"a wheat field {words}", "rules").fields[0].season == season
+
+
+@pytest.mark.parametrize(
+    ("place", "season", "hemisphere"),
+    [
+        ("in Chile", "Fall", "south"),
+        ("in the southern hemisphere", "Fall", "south"),
+        ("in New Zealand", "Fall", "south"),
+        ("at 35°S", "Fall", "south"),
+        ("in Belgium", "Spring", "north"),
+    ],
+)
+def test_months_follow_the_hemisphere(place: str, season: str, hemisphere: str) -> None:
+    recipe = _recipe(f"an apple orchard in April {place}", "rules")
+    assert recipe.fields[0].season == season
+    assert recipe.environment.hemisphere == hemisphere
+
+
+def test_a_negative_latitude_argument_flips_months() -> None:
+    recipe = _recipe("apples in July", "rules", latitude_deg=-33.9)
+    assert recipe.fields[0].season == "Winter"
+    assert recipe.environment.latitude_deg == -33.9
+
+
+@pytest.mark.parametrize(
+    ("words", "health"),
+    [
+        ("diseased", "Ill"),
+        ("infected", "Ill"),
+        ("blighted", "Ill"),
+        ("with scab", "Ill"),
+        ("sick", "Ill"),
+        ("unhealthy", "Ill"),
+        ("rotting", "Ill"),
+        ("with fire blight", "Ill"),
+        ("healthy", "Healthy"),
+        ("vigorous", "Healthy"),
+        ("with no disease", "Healthy"),
+        ("free of scab", "Healthy"),
+        ("disease-free", "Healthy"),
+    ],
+)
+def test_health_words(words: str, health: str) -> None:
+    recipe = _recipe(f"a Conference pear orchard, {words}", "rules")
+    assert recipe.fields[0].health == health
+    assert "health" in recipe.fields[0].stated
+
+
+def test_disease_names_from_the_knowledge_base_mean_ill() -> None:
+    recipe = _recipe("a cavendish banana plantation with black sigatoka", "rules")
+    assert recipe.fields[0].health == "Ill"
+
+
+# --- aliases, trade names, typos, accents, case ------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("prompt", "crop", "variety"),
+    [
+        ("Cripps Pink apples", "Apple", "Pink Lady"),
+        ("Bartlett pears", "Pear", "Williams"),
+        ("blood oranges", "Orange", "Moro"),
+        ("a field of spuds", "Potato", None),
+        ("sweetcorn", "Maize", "Sweet Corn"),
+        ("Doyenné du Comice pears", "Pear", "Doyenne du Comice"),
+        ("DOYENNE DU COMICE PEARS", "Pear", "Doyenne du Comice"),
+        ("jalapeño peppers", "Pepper", "Jalapeno"),
+        ("Spätburgunder vines", "Grape", "Pinot Noir"),
+        ("a Pink Lday apple orchad", "Apple", "Pink Lady"),
+        ("an appel orchard", "Apple", None),
+        ("tomatos with blight", "Tomato", None),
+        ("nantes carots", "Carrot", "Nantes"),
+        ("golden delicous apples", "Apple", "Golden Delicious"),
+        ("cabernet sauvingon vineyard", "Grape", "Cabernet Sauvignon"),
+        ("strawbery field", "Strawberry", None),
+    ],
+)
+@pytest.mark.parametrize("strategy", STRATEGIES)
+def test_names_aliases_typos_accents(
+    prompt: str, crop: str, variety: str | None, strategy: str
+) -> None:
+    recipe = _recipe(prompt, strategy)
+    assert len(recipe.fields) == 1
+    assert recipe.fields[0].crop == crop
+    if variety is not None:
+        assert recipe.fields[0].variety == variety
+
+
+def test_a_typo_is_explained() -> None:
+    resolution = resolve("an appel orchard", resolver="rules", explain=True)
+    assert resolution.explanation is not None
+    text = resolution.explanation.render()
+    assert "appel" in text and "'apple'" in text and "fuzzy" in text
+
+
+# --- words that belong to two places ---------------------------------------------------------
+
+
+@pytest.mark.parametrize("strategy", STRATEGIES)
+def test_cherry_tomatoes_are_tomatoes(strategy: str) -> None:
+    recipe = _recipe("a field of cherry tomatoes", strategy)
+    assert [(f.crop, f.variety) for f in recipe.fields] == [("Tomato", "Cherry")]
+
+
+def test_cherries_are_the_cherry_crop() -> None:
+    assert _recipe("a cherry orchard", "rules").fields[0].crop == "Cherry"
+
+
+@pytest.mark.parametrize("strategy", STRATEGIES)
+def test_winter_wheat_in_spring(strategy: str) -> None:
+    field = _recipe("winter wheat in spring", strategy).fields[0]
+    assert (field.crop, field.variety, field.season) == ("Wheat", "Winter Wheat", "Spring")
+
+
+@pytest.mark.parametrize("strategy", STRATEGIES)
+def test_golden_acre_beside_golden_delicious(strategy: str) -> None:
+    recipe = _recipe("Golden Acre cabbage beside Golden Delicious apples", strategy)
+    assert [(f.crop, f.variety) for f in recipe.fields] == [
+        ("Cabbage", "Golden Acre"),
+        ("Apple", "Golden Delicious"),
+    ]
+    assert [r.kind for r in recipe.relations] == ["next_to"]
+
+
+def test_a_weak_name_needs_its_crop() -> None:
+    recipe = _recipe("a carrot field in golden autumn light", "rules")
+    assert [(f.crop, f.variety) for f in recipe.fields] == [("Carrot", "Nantes")]
+    assert _recipe("navel oranges", "rules").fields[0].variety == "Navel"
+
+
+def test_shared_head_distributes() -> None:
+    recipe = _recipe("navel and valencia orange groves, the navels have greening", "rules")
+    assert sorted((f.variety, f.health) for f in recipe.fields) == [
+        ("Navel", "Ill"),
+        ("Valencia", "Healthy"),
+    ]
+
+
+# --- sizes and relations ------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("prompt", "area_m2"),
+    [
+        ("a 2 ha orchard", 20_000.0),
+        ("a 2-hectare apple orchard", 20_000.0),
+        ("half a hectare of carrots", 5_000.0),
+        ("1 acre of potatoes", 4_046.86),
+        ("an onion field of 5000 m2", 5_000.0),
+        ("an onion field of 5,000 m²", 5_000.0),
+    ],
+)
+def test_areas(prompt: str, area_m2: float) -> None:
+    field = _recipe(prompt, "rules").fields[0]
+    assert field.geometry.area_m2 == pytest.approx(area_m2, rel=0.01)
+    assert "size" in field.stated
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "a 50 by 100 m carrot field",
+        "a carrot field of 50x100m",
+        "a carrot field 50 m wide and 100 m long",
+    ],
+)
+def test_rectangles(prompt: str) -> None:
+    assert _recipe(prompt, "rules").fields[0].geometry.size_m == (50.0, 100.0)
+
+
+def test_feet_are_converted() -> None:
+    size = _recipe("a 100 by 200 ft lettuce patch", "rules").fields[0].geometry.size_m
+    assert size == pytest.approx((30.48, 60.96))
+
+
+@pytest.mark.parametrize(
+    ("prompt", "kind"),
+    [
+        ("a wheat field north of an apple orchard", "north_of"),
+        ("a wheat field to the south of an apple orchard", "south_of"),
+        ("a wheat field east of an apple orchard", "east_of"),
+        ("a wheat field west of an apple orchard", "west_of"),
+        ("a wheat field next to an apple orchard", "next_to"),
+        ("a wheat field beside an apple orchard", "next_to"),
+        ("a wheat field adjacent to an apple orchard", "next_to"),
+    ],
+)
+def test_relations(prompt: str, kind: str) -> None:
+    recipe = _recipe(prompt, "rules")
+    wheat = next(f for f in recipe.fields if f.crop == "Wheat")
+    apple = next(f for f in recipe.fields if f.crop == "Apple")
+    assert [(r.kind, r.subject, r.objects) for r in recipe.relations] == [
+        (kind, wheat.id, (apple.id,))
+    ]
+    if kind == "north_of":
+        assert wheat.geometry.origin_m[1] >= apple.geometry.origin_m[1] + apple.geometry.size_m[1]
+
+
+def test_between() -> None:
+    recipe = _recipe("a wheat field between an apple orchard and a pear orchard", "rules")
+    wheat, apple, pear = recipe.fields
+    assert [(r.kind, r.subject, r.objects) for r in recipe.relations] == [
+        ("between", wheat.id, (apple.id, pear.id))
+    ]
+
+
+def test_between_two_members_of_one_mention() -> None:
+    recipe = _recipe("elsanta strawberries between two fields of iceberg lettuce", "rules")
+    lettuce = [f.id for f in recipe.fields if f.crop == "Lettuce"]
+    assert [(r.kind, r.objects) for r in recipe.relations] == [("between", tuple(lettuce))]
+
+
+def test_a_trailing_direction() -> None:
+    recipe = _recipe("Fuji apples with a Red Baron onion field to the north", "rules")
+    apple = next(f for f in recipe.fields if f.crop == "Apple")
+    onion = next(f for f in recipe.fields if f.crop == "Onion")
+    assert [(r.kind, r.subject, r.objects) for r in recipe.relations] == [
+        ("north_of", onion.id, (apple.id,))
+    ]
+
+
+def test_a_relation_to_something_that_is_not_a_field_is_dropped_with_a_warning() -> None:
+    recipe = _recipe("an apple orchard next to a parking lot", "rules")
+    assert len(recipe.fields) == 1
+    assert recipe.relations == ()
+    assert any("parking lot" in w for w in recipe.warnings)
