@@ -246,3 +246,14 @@ def test_update_document_keeps_text_outside_the_generated_block(tmp_path: Path) 
     plain.write_text("# Notes\n\nmine\n", encoding="utf-8")
     update_document(plain, "generated\n")
     assert plain.read_text(encoding="utf-8").startswith("# Notes\n\nmine\n")
+
+
+def test_a_strategy_that_crashes_on_warm_up_is_still_scored_prompt_by_prompt() -> None:
+    def broken(prompt: str, **options: Any) -> Scene:
+        raise NameError("name 'required' is not defined")
+
+    run = run_strategy(BENCHMARK, "broken", progress=False, generate=broken)
+    assert run.unavailable is None
+    assert not any(s.correct for s in run.scores)
+    assert {s.kinds for s in run.scores} == {("foreign_error",)}
+    assert "NameError" in run.scores[0].got

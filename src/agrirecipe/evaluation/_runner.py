@@ -9,7 +9,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from agrirecipe._errors import AgrirecipeError, ConfigurationError, ModelError
+from agrirecipe._errors import ConfigurationError, ModelError
 from agrirecipe.evaluation._benchmark import Benchmark
 from agrirecipe.evaluation._scoring import PredictedScene, PromptScore, score_prompt
 
@@ -69,8 +69,9 @@ def run_strategy(
         call(WARMUP_PROMPT, seed=seed, resolver=resolver, **options)
     except (ConfigurationError, ModelError) as exc:
         return StrategyRun(name=resolver, unavailable=f"{type(exc).__name__}: {exc}")
-    except AgrirecipeError:
-        pass  # the strategy runs; this prompt's failure is not what the benchmark scores
+    except Exception:
+        # The strategy loads; whatever this call did wrong, the scored prompts will show.
+        pass
     cold = time.perf_counter() - start
 
     from tqdm import tqdm
