@@ -87,32 +87,45 @@ def test_custom_catalogue(custom: tuple[Hierarchy, KnowledgeBase]) -> None:
     )
 
 
+def _recipe(
+    custom: tuple[Hierarchy, KnowledgeBase], crop: str, variety: str, stage: str, season: str
+) -> SceneRecipe:
+    """A one-field recipe built from the custom hierarchy and knowledge (default field size)."""
+    hierarchy, knowledge = custom
+    field = build_field(
+        hierarchy=hierarchy,
+        knowledge=knowledge,
+        field_id="field",
+        label=f"{variety} {crop.lower()}",
+        crop=crop,
+        variety=variety,
+        stage=stage,  # type: ignore[arg-type]
+        season=season,  # type: ignore[arg-type]
+        health="Healthy",
+        geometry=FieldGeometry(
+            origin_m=(0.0, 0.0),
+            size_m=knowledge.default_field_size_m(crop, variety),
+            headland_m=knowledge.default_headland_m(crop, variety),
+        ),
+    )
+    return SceneRecipe(
+        prompt=f"{variety} {crop.lower()}",
+        seed=1,
+        environment=build_environment(season),  # type: ignore[arg-type]
+        fields=(field,),
+    )
+
+
 def test_custom_crop_is_built_validated_and_round_tripped(
     custom: tuple[Hierarchy, KnowledgeBase],
 ) -> None:
     hierarchy, knowledge = custom
     assert knowledge.default_variety("Blueberry") == "Duke"
-    field = build_field(
-        hierarchy=hierarchy,
-        knowledge=knowledge,
-        field_id="blueberries",
-        label="Bluecrop blueberries",
-        crop="Blueberry",
-        variety="Bluecrop",
-        stage="Maturation",
-        season="Summer",
-        health="Healthy",
-        geometry=FieldGeometry(origin_m=(0.0, 0.0), size_m=(30.0, 50.0), headland_m=3.0),
-    )
+    recipe = _recipe(custom, "Blueberry", "Bluecrop", "Maturation", "Summer")
+    field = recipe.fields[0]
     assert field.asset_path.startswith("/Game/MyFarm/Fruits/Blueberry/Bluecrop/Maturation/")
     assert (field.agronomy.row_spacing_m, field.agronomy.max_height_m) == (3.0, 1.8)
     assert field.agronomy.fruit_rgb == (0.2, 0.25, 0.5)
-    recipe = SceneRecipe(
-        prompt="Bluecrop blueberries",
-        seed=1,
-        environment=build_environment("Summer"),
-        fields=(field,),
-    )
     text = dump_recipe(recipe)
     assert parse_recipe(text, hierarchy=hierarchy) == recipe
     with pytest.raises(RecipeValidationError) as caught:
@@ -137,25 +150,9 @@ def test_shipped_crops_do_not_cover_a_custom_crop(custom: tuple[Hierarchy, Knowl
 def test_recipe_json_from_a_custom_hierarchy_names_the_custom_root(
     custom: tuple[Hierarchy, KnowledgeBase],
 ) -> None:
-    hierarchy, knowledge = custom
-    field = build_field(
-        hierarchy=hierarchy,
-        knowledge=knowledge,
-        field_id="gala",
-        label="Gala",
-        crop="Apple",
-        variety="Gala",
-        stage="Vegetative",
-        season="Winter",
-        health="Healthy",
-        geometry=FieldGeometry(origin_m=(0.0, 0.0), size_m=(60.0, 100.0), headland_m=6.0),
-    )
-    data = json.loads(
-        dump_recipe(
-            SceneRecipe(prompt="", seed=0, environment=build_environment("Winter"), fields=(field,))
-        )
-    )
-    assert data["fields"][0]["asset_path"].startswith("/Game/MyFarm/Fruits/Apple/Gala/")
+    data = json.loads(dump_recipe(_recipe(custom, "Apple", "Honeycrisp", "Vegetative", "Winter")))
+    assert data["fields"][0]["asset_path"].startswith("/Game/MyFarm/Fruits/Apple/Honeycrisp/")
+    assert data["fields"][0]["agronomy"]["foliage"] == "leafless"
 
 
 MALFORMED = [

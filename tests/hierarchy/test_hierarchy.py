@@ -7,7 +7,7 @@ import re
 import pytest
 
 from agrirecipe import HierarchyError
-from agrirecipe.hierarchy import AssetKey, Hierarchy, default_hierarchy, load_hierarchy, pascal_case
+from agrirecipe.hierarchy import AssetKey, Hierarchy, load_hierarchy, pascal_case
 
 # The canonical hierarchy of reference/crops.md: names are part of the public contract.
 CANONICAL = {
@@ -39,11 +39,6 @@ PATH = re.compile(
     r"(?P<stage>[A-Za-z]+)/(?P<season>[A-Za-z]+)/(?P<health>[A-Za-z]+)/"
     r"(?P<object>SM_(?P=crop)_(?P=variety)_(?P=stage)_(?P=season)_(?P=health))\.(?P=object)$"
 )
-
-
-@pytest.fixture(scope="module")
-def hierarchy() -> Hierarchy:
-    return default_hierarchy()
 
 
 def test_canonical_names(hierarchy: Hierarchy) -> None:

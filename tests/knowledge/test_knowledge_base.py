@@ -8,7 +8,7 @@ import pytest
 
 from agrirecipe import HierarchyError, KnowledgeBaseError
 from agrirecipe.hierarchy import AssetKey, Hierarchy
-from agrirecipe.knowledge import KnowledgeBase, default_knowledge_base
+from agrirecipe.knowledge import KnowledgeBase
 from agrirecipe.recipe import Agronomy, FieldGeometry, FieldSpec
 
 # reference/crops.md section A for each crop's default variety:
@@ -83,13 +83,8 @@ BROWN = (0.45, 0.3, 0.15)
 
 
 @pytest.fixture(scope="module")
-def kb() -> KnowledgeBase:
-    return default_knowledge_base()
-
-
-@pytest.fixture(scope="module")
-def hierarchy(kb: KnowledgeBase) -> Hierarchy:
-    return kb.hierarchy
+def kb(knowledge: KnowledgeBase) -> KnowledgeBase:
+    return knowledge
 
 
 def _agronomy(

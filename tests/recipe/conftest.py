@@ -10,8 +10,8 @@ import pytest
 
 from agrirecipe import RecipeValidationError
 from agrirecipe.enrich import build_environment, build_field
-from agrirecipe.hierarchy import Hierarchy, default_hierarchy
-from agrirecipe.knowledge import KnowledgeBase, default_knowledge_base
+from agrirecipe.hierarchy import Hierarchy
+from agrirecipe.knowledge import KnowledgeBase
 from agrirecipe.recipe import (
     AttributeName,
     FieldGeometry,
@@ -21,18 +21,6 @@ from agrirecipe.recipe import (
     dump_recipe,
     parse_recipe,
 )
-
-
-@pytest.fixture(scope="session")
-def hierarchy() -> Hierarchy:
-    """The shipped hierarchy."""
-    return default_hierarchy()
-
-
-@pytest.fixture(scope="session")
-def knowledge() -> KnowledgeBase:
-    """The shipped knowledge base."""
-    return default_knowledge_base()
 
 
 @pytest.fixture(scope="session")
@@ -115,6 +103,14 @@ def _problems_of(data: dict[str, Any], **options: Any) -> dict[str, str]:
     for path, message in caught.value.problems:
         assert f"{path}: {message}" in str(caught.value), "every problem is in the message"
     return problems
+
+
+@pytest.fixture(scope="session")
+def two_orchards(
+    make_field: Callable[..., FieldSpec], make_recipe: Callable[..., SceneRecipe]
+) -> SceneRecipe:
+    """Orchards 'a' and 'b' side by side, 10 m apart (1,335 trees each)."""
+    return make_recipe(make_field("a"), make_field("b", origin_m=(70.0, 0.0)))
 
 
 @pytest.fixture(scope="session")

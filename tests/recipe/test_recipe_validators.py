@@ -182,25 +182,21 @@ def test_plant_cap_is_configurable(
 
 
 def test_plant_cap_names_the_field_that_crosses_it(
-    make_field: FieldFactory,
-    make_recipe: RecipeFactory,
+    two_orchards: SceneRecipe,
     recipe_data: DataOf,
     problems_of: ProblemsOf,
 ) -> None:
-    recipe = make_recipe(make_field("a"), make_field("b", origin_m=(70.0, 0.0)))
-    problems = problems_of(recipe_data(recipe), max_plants=2000)
+    problems = problems_of(recipe_data(two_orchards), max_plants=2000)
     assert list(problems) == ["fields[1].geometry.size_m"]
     assert "by field 'b'" in problems["fields[1].geometry.size_m"]
 
 
 def test_overlapping_fields(
-    make_field: FieldFactory,
-    make_recipe: RecipeFactory,
+    two_orchards: SceneRecipe,
     recipe_data: DataOf,
     problems_of: ProblemsOf,
 ) -> None:
-    recipe = make_recipe(make_field("a"), make_field("b", origin_m=(70.0, 0.0)))
-    data = recipe_data(recipe)
+    data = recipe_data(two_orchards)
     data["fields"][1]["geometry"]["origin_m"] = [59.0, 10.0]
     problems = problems_of(data)
     assert "field 'b' overlaps field 'a'" in problems["fields[1].geometry"]
@@ -225,12 +221,11 @@ def test_fields_sharing_an_edge_do_not_overlap(
 
 
 def test_duplicate_field_ids(
-    make_field: FieldFactory,
-    make_recipe: RecipeFactory,
+    two_orchards: SceneRecipe,
     recipe_data: DataOf,
     problems_of: ProblemsOf,
 ) -> None:
-    data = recipe_data(make_recipe(make_field("a"), make_field("b", origin_m=(70.0, 0.0))))
+    data = recipe_data(two_orchards)
     data["fields"][1]["id"] = "a"
     assert "duplicate field id 'a'" in problems_of(data)["fields[1].id"]
 

@@ -97,14 +97,8 @@ class KnowledgeRetriever:
             return self._index
 
     def _build_index(self) -> VectorIndex:
-        try:
-            from agrirecipe.localmodels import VectorIndex
-        except ImportError as exc:  # numpy is a core dependency; this is faiss or the like
-            raise ConfigurationError(
-                f"embedding retrieval needs an optional dependency: {exc}",
-                stage="retrieval",
-                hint="pip install 'agrirecipe[embedding]'",
-            ) from exc
+        from agrirecipe.localmodels import VectorIndex
+
         texts = [entry.descriptor for entry in self.entries]
         try:
             return VectorIndex.build(
@@ -116,7 +110,7 @@ class KnowledgeRetriever:
                 cache=self._cache,
                 progress=self._progress,
             )
-        except ImportError as exc:
+        except ImportError as exc:  # faiss is imported when the first index is built
             raise ConfigurationError(
                 f"embedding retrieval needs faiss: {exc}",
                 stage="retrieval",
