@@ -26,11 +26,13 @@ import argparse
 import json
 import os
 import platform
-import resource
 import subprocess
 import sys
 import time
 from pathlib import Path
+
+# The machine description and peak-memory probe are shared with the layout benchmark.
+from bench_layout_usd import cpu_model, peak_rss_mb
 
 REPO = Path(__file__).resolve().parent.parent
 DOC = REPO / "docs" / "PERFORMANCE.md"
@@ -38,35 +40,17 @@ TESTS = REPO / "tests" / "backends" / "unreal"
 START = "<!-- bench_unreal_script_size:start -->"
 END = "<!-- bench_unreal_script_size:end -->"
 TARGET_BYTES = 64 * 1024
-CROPS = (
-    "Wheat",
-    "Maize",
-    "Carrot",
-    "Onion",
-    "Lettuce",
-    "Potato",
-    "Strawberry",
-    "Cabbage",
-    "Apple",
-    "Grape",
-    "Tomato",
-    "Pepper",
-)
 PLANT_TARGETS = (10_000, 100_000, 1_000_000, 4_000_000)
 FIELD_COUNTS = (1, 2, 5, 10, 20, 40, 64)
 
 
-def _crops(count: int) -> list[str]:
-    return [CROPS[index % len(CROPS)] for index in range(count)]
-
-
 def _script_size(fields: int, plants: int) -> dict[str, float]:
-    from unreal_recipes import packed_recipe
+    from unreal_recipes import mixed_crops, packed_recipe
 
     from agrirecipe import Scene
     from agrirecipe.backends.unreal import UnrealBackend
 
-    recipe = packed_recipe(_crops(fields), plants)
+    recipe = packed_recipe(mixed_crops(fields), plants)
     start = time.perf_counter()
     script = UnrealBackend().script(Scene(recipe))
     seconds = time.perf_counter() - start
@@ -97,13 +81,13 @@ def child() -> None:
     """Run the 10-field, 1M-plant script against the recording fake; print one JSON line."""
     sys.path.insert(0, str(TESTS))
     from fake_unreal import run_script
-    from unreal_recipes import packed_recipe
+    from unreal_recipes import mixed_crops, packed_recipe
 
     from agrirecipe import Scene
 
-    recipe = packed_recipe(_crops(10), 1_000_000)
+    recipe = packed_recipe(mixed_crops(10), 1_000_000)
     script = Scene(recipe).script("unreal")
-    before = _peak_rss_mb()
+    before = peak_rss_mb()
     start, cpu_start = time.perf_counter(), time.process_time()
     namespace, recording = run_script(script)
     seconds, cpu_seconds = time.perf_counter() - start, time.process_time() - cpu_start
@@ -114,7 +98,7 @@ def child() -> None:
                 "plants": result["instances"],
                 "seconds": seconds,
                 "cpu_seconds": cpu_seconds,
-                "peak_rss_mb": _peak_rss_mb(),
+                "peak_rss_mb": peak_rss_mb(),
                 "rss_before_mb": before,
                 "add_instances_calls": sum(
                     1 for event in recording.events if event.kind == "add_instances"
@@ -122,21 +106,6 @@ def child() -> None:
             }
         )
     )
-
-
-def _peak_rss_mb() -> float:
-    scale = 1024.0 if sys.platform != "darwin" else 1.0
-    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * scale / 2**20
-
-
-def _cpu_model() -> str:
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or "unknown CPU"
 
 
 def report(results: dict[str, object]) -> str:
@@ -148,7 +117,7 @@ def report(results: dict[str, object]) -> str:
         START,
         "## Unreal script size (`bench/bench_unreal_script_size.py`)",
         "",
-        f"Machine: {_cpu_model()}, {os.cpu_count()} cores, Python {platform.python_version()}, "
+        f"Machine: {cpu_model()}, {os.cpu_count()} cores, Python {platform.python_version()}, "
         f"{platform.system()} {platform.release()}; load average {os.getloadavg()[0]:.1f} when "
         f"the benchmark ended (other work inflates wall time, not CPU time). "
         f"Date: {time.strftime('%Y-%m-%d')}.",

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import ast
 import functools
 import textwrap
 
@@ -78,8 +79,6 @@ def test_every_allow_listed_name_is_needed() -> None:
 
 
 def _check_names(source: str) -> set[str]:
-    import ast
-
     return {
         node.attr
         for node in ast.walk(ast.parse(source))

@@ -13,7 +13,7 @@ from typing import Any
 
 import pytest
 from fake_unreal import run_script
-from unreal_recipes import packed_recipe, two_field_recipe
+from unreal_recipes import mixed_crops, packed_recipe, two_field_recipe
 
 import agrirecipe.layout
 from agrirecipe import AgrirecipeError, Scene
@@ -185,18 +185,7 @@ def test_a_kernel_without_an_entry_point_is_refused(monkeypatch: pytest.MonkeyPa
 
 
 def test_ten_field_million_plant_scene_script_stays_under_64_kb() -> None:
-    crops = [
-        "Wheat",
-        "Maize",
-        "Carrot",
-        "Onion",
-        "Lettuce",
-        "Potato",
-        "Strawberry",
-        "Cabbage",
-        "Apple",
-        "Grape",
-    ]
+    crops = mixed_crops(10)
     large = packed_recipe(crops, 1_000_000)
     small = packed_recipe(crops, 10_000)
     assert len(large.fields) == 10

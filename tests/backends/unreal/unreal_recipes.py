@@ -14,13 +14,35 @@ from agrirecipe.recipe import FieldGeometry, FieldSpec, SceneRecipe, Season
 
 __all__ = [
     "GROWTH_FORM_CROPS",
+    "MIXED_CROPS",
     "growth_form_recipe",
+    "mixed_crops",
     "packed_recipe",
     "two_field_recipe",
 ]
 
 #: One crop per growth form (every placeholder shape gets exercised).
 GROWTH_FORM_CROPS = ("Apple", "Grape", "Tomato", "Carrot", "Lettuce", "Wheat")
+#: Crops of many-field scenes, every planting pattern among the first ten.
+MIXED_CROPS = (
+    "Wheat",
+    "Maize",
+    "Carrot",
+    "Onion",
+    "Lettuce",
+    "Potato",
+    "Strawberry",
+    "Cabbage",
+    "Apple",
+    "Grape",
+    "Tomato",
+    "Pepper",
+)
+
+
+def mixed_crops(count: int) -> list[str]:
+    """``count`` crops for a many-field scene (MIXED_CROPS, repeated as needed)."""
+    return [MIXED_CROPS[index % len(MIXED_CROPS)] for index in range(count)]
 
 
 @functools.cache
