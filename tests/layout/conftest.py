@@ -1,4 +1,7 @@
-"""Recipes for layout tests, built the way the resolver builds them: packer + ``build_field``."""
+"""Recipes for layout tests, built the way the resolver builds them: packer + ``build_field``.
+
+The ``hierarchy`` and ``knowledge`` fixtures come from ``tests/conftest.py``.
+"""
 
 from __future__ import annotations
 
@@ -7,8 +10,8 @@ from collections.abc import Callable, Sequence
 import pytest
 
 from agrirecipe.enrich import build_environment, build_field
-from agrirecipe.hierarchy import Hierarchy, default_hierarchy
-from agrirecipe.knowledge import KnowledgeBase, default_knowledge_base
+from agrirecipe.hierarchy import Hierarchy
+from agrirecipe.knowledge import KnowledgeBase
 from agrirecipe.layout import FieldRequest, pack_fields
 from agrirecipe.recipe import Placement, Relation, SceneRecipe, Season
 
@@ -80,18 +83,6 @@ def build_recipe(
         fields=tuple(fields),
         relations=tuple(relations),
     )
-
-
-@pytest.fixture(scope="session")
-def hierarchy() -> Hierarchy:
-    """The shipped crop hierarchy."""
-    return default_hierarchy()
-
-
-@pytest.fixture(scope="session")
-def knowledge() -> KnowledgeBase:
-    """The shipped knowledge base."""
-    return default_knowledge_base()
 
 
 @pytest.fixture(scope="session")
