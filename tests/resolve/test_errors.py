@@ -1,0 +1,146 @@
+"""Every way a prompt or argument can fail: a clear AgrirecipeError subclass, never a guess."""
+
+from __future__ import annotations
+
+import pytest
+
+from agrirecipe import (
+    AgrirecipeError,
+    ConfigurationError,
+    PromptError,
+    UnknownCropError,
+)
+from agrirecipe.resolve import resolve
+
+
+@pytest.mark.parametrize("prompt", ["", "   ", "\n\t"])
+def test_empty_prompt(prompt: str) -> None:
+    with pytest.raises(PromptError, match="empty") as caught:
+        resolve(prompt, resolver="rules")
+    assert caught.value.hint and "apple orchard" in caught.value.hint
+
+
+@pytest.mark.parametrize(
+    ("prompt", "word"),
+    [
+        ("build a parking lot", "parking lot"),
+        ("a city skyline at night", "city"),
+        ("a sunny beach", "beach"),
+        ("a forest of oak", "forest"),
+    ],
+)
+def test_non_agricultural_prompt(prompt: str, word: str) -> None:
+    with pytest.raises(PromptError, match="not an agricultural scene") as caught:
+        resolve(prompt, resolver="rules")
+    assert word in str(caught.value)
+    assert not isinstance(caught.value, UnknownCropError)
+
+
+def test_nothing_recognised() -> None:
+    with pytest.raises(PromptError, match="no crop or field found") as caught:
+        resolve("make it look nice please", resolver="rules")
+    assert caught.value.stage == "resolve"
+
+
+@pytest.mark.parametrize(
+    ("prompt", "requested", "nearest"),
+    [
+        ("a mango plantation", "mango", {"Orange", "Banana"}),
+        ("a field of barley", "barley", {"Wheat"}),
+        ("olive trees in Spain", "olive", {"Orange"}),
+        ("cucumbers next to tomatoes", "cucumbers", {"Tomato"}),
+        ("spring onions", "spring onions", {"Onion"}),
+    ],
+)
+def test_crops_we_do_not_hold(prompt: str, requested: str, nearest: set[str]) -> None:
+    with pytest.raises(UnknownCropError) as caught:
+        resolve(prompt, resolver="rules")
+    error = caught.value
+    assert error.requested == requested
+    assert nearest <= set(error.nearest)
+    assert "nearest known" in str(error)
+
+
+def test_an_unknown_word_where_a_crop_belongs() -> None:
+    with pytest.raises(UnknownCropError) as caught:
+        resolve("a zorblax field", resolver="rules")
+    assert caught.value.requested == "zorblax"
+    assert caught.value.nearest  # by spelling when nothing better is known
+
+
+def test_an_unknown_variety() -> None:
+    with pytest.raises(UnknownCropError) as caught:
+        resolve("a Honeycrisp apple orchard", resolver="rules")
+    assert "Apple varieties" in str(caught.value)
+
+
+def test_a_variety_of_another_crop() -> None:
+    with pytest.raises(UnknownCropError, match="variety of Carrot"):
+        resolve("Nantes apples", resolver="rules")
+
+
+@pytest.mark.parametrize(
+    ("prompt", "match"),
+    [
+        ("a healthy diseased orchard", "healthy and ill"),
+        ("an apple orchard in summer and winter", "Summer and Winter"),
+        ("young ripe carrots", "Maturation and Vegetative"),
+        ("a 2 ha carrot field of 50 by 100 m", "two sizes"),
+        ("an apple orchard in summer and a pear orchard, all in winter", "all fields"),
+    ],
+)
+def test_contradictions(prompt: str, match: str) -> None:
+    with pytest.raises(PromptError, match=match):
+        resolve(prompt, resolver="rules")
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "a tomato field 3 cm by 3 cm",
+        "a 0 ha orchard",
+        "a carrot field of 0 by 10 m",
+        "a 100000 ha apple orchard",
+        "100 apple orchards",
+    ],
+)
+def test_impossible_sizes_and_counts(prompt: str) -> None:
+    with pytest.raises(PromptError):
+        resolve(prompt, resolver="rules")
+
+
+def test_impossible_relations() -> None:
+    with pytest.raises(PromptError):
+        resolve(
+            "a wheat field north of an apple orchard, the apple orchard north of the wheat field",
+            resolver="rules",
+        )
+
+
+@pytest.mark.parametrize(
+    ("options", "match"),
+    [
+        ({"seed": -1}, "seed"),
+        ({"seed": 1.5}, "seed"),
+        ({"seed": True}, "seed"),
+        ({"latitude_deg": 91.0}, "latitude"),
+        ({"latitude_deg": float("nan")}, "latitude"),
+        ({"resolver": "rulez"}, "did you mean 'rules'"),
+        ({"resolver": 3}, "resolver"),
+        ({"hierarchy": 3}, "hierarchy"),
+        ({"knowledge": 3}, "knowledge"),
+    ],
+)
+def test_bad_arguments(options: dict[str, object], match: str) -> None:
+    with pytest.raises(ConfigurationError, match=match):
+        resolve("an apple orchard", **options)  # type: ignore[arg-type]
+
+
+def test_a_missing_hierarchy_file(tmp_path: object) -> None:
+    with pytest.raises(AgrirecipeError, match="does not exist"):
+        resolve("an apple orchard", resolver="rules", hierarchy="/nonexistent/hierarchy.yaml")
+
+
+def test_latitude_in_the_prompt_must_be_on_earth() -> None:
+    with pytest.raises(PromptError, match="not on Earth"):
+        resolve("an apple orchard at latitude 123", resolver="rules")
