@@ -425,6 +425,7 @@ def render(
     denoise: bool = True,
     isolated: bool = False,
     timeout_s: float | None = None,
+    save_blend: str | os.PathLike[str] | None = None,
     verbose: bool = False,
 ) -> Path:
     """Build ``scene`` in Blender and render it headless on the CPU to ``png_path``.
@@ -434,6 +435,7 @@ def render(
     runs in a child Python process instead, which leaves this process's
     Blender state alone and survives Blender crashes; ``timeout_s`` bounds it.
     The PNG appears atomically (rendered to a temporary name, then renamed).
+    With ``save_blend`` the built scene is also saved as a ``.blend`` file.
     Returns the PNG's path. Bad settings raise
     :class:`~agrirecipe.ConfigurationError`, Blender failures
     :class:`~agrirecipe.BackendError`.
@@ -453,7 +455,16 @@ def render(
     target = target.resolve()
     target.parent.mkdir(parents=True, exist_ok=True)
     temporary = target.with_name(f".{target.stem}.{os.getpid()}.{time.time_ns()}.tmp.png")
-    script = blender_script(scene, settings, render_png=temporary, verbose=verbose)
+    blend = None if save_blend is None else Path(save_blend).resolve()
+    if blend is not None:
+        if blend.suffix.lower() != ".blend":
+            raise ConfigurationError(
+                f"{str(save_blend)!r} is not a .blend file", stage="render", hint="e.g. scene.blend"
+            )
+        blend.parent.mkdir(parents=True, exist_ok=True)
+    script = blender_script(
+        scene, settings, render_png=temporary, save_blend=blend, verbose=verbose
+    )
     try:
         if isolated:
             _run_isolated(script, timeout_s)
