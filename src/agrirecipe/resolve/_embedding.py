@@ -30,10 +30,11 @@ __all__ = ["CropIndex", "EmbeddingResolver", "Match"]
 ACCEPT_SIMILARITY = 0.75
 #: Longest span of words tried as one name.
 _MAX_SPAN = 3
-# Vocabulary kinds a word of a name may also have ("winter" in Winter Wheat,
-# "january" in January King, "plum" in plum tomato); a span made only of such
-# words is never a name on its own.
-_SHARED_KINDS = frozenset({"filler", "season", "month", "stage", "other_crop", "number"})
+# Words of a name may also be vocabulary ("winter" in Winter Wheat, "acre" in Golden
+# Acre, "plum" in plum tomato), but never these, which always structure the sentence.
+_STRUCTURE_KINDS = frozenset(
+    {"separator", "conjunction", "relation", "relation_trailer", "of", "plot", "category"}
+)
 
 
 @dataclass(frozen=True, slots=True)
@@ -254,7 +255,7 @@ def _runs(items: Sequence[Item], name_words: frozenset[str]) -> list[tuple[int, 
         candidate = item.norm.replace(" ", "").isalpha() and (
             not item.senses
             or (
-                all(s.kind in _SHARED_KINDS for s in item.senses)
+                not any(s.kind in _STRUCTURE_KINDS for s in item.senses)
                 and all(t.norm in name_words for t in item.tokens)
             )
         )

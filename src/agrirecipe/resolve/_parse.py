@@ -181,7 +181,7 @@ class PromptReader:
             for sub in (mention, *mention.refinements):
                 plots = [h for h in sub.heads if h.role == "plot"]
                 named = sub.has_crop or sub.category is not None
-                if plots and not named and not plots[0].data["value"]["narrows"]:
+                if plots and not named:
                     word = _word_before(items, position.get(id(plots[0])))
                     word = word or _word_after_of(items, position.get(id(plots[0])))
                     if word is not None:
@@ -514,11 +514,15 @@ class PromptReader:
                     )
                 )
             else:
-                for s in subject_fields:
-                    for o in object_fields[0]:
-                        relations.append(
-                            RelationIntent(kind=kind, subject=s, objects=(o,), text=link.raw)
-                        )
+                pairs_of = [(s, o) for s in subject_fields for o in object_fields[0]]
+                if kind == "next_to" and len(pairs_of) > 2:
+                    # Groups side by side: one field can touch at most two in a row, so
+                    # "two orchards next to three fields" means the groups touch.
+                    pairs_of = pairs_of[:1]
+                for s, o in pairs_of:
+                    relations.append(
+                        RelationIntent(kind=kind, subject=s, objects=(o,), text=link.raw)
+                    )
             self.trace.append(
                 TraceStep(
                     stage="decompose",
