@@ -4,8 +4,12 @@ from __future__ import annotations
 
 import argparse
 import sys
+from collections.abc import Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from agrirecipe.evaluation import KnowledgeQuery
 
 
 def register(subparsers: Any) -> None:
@@ -137,7 +141,7 @@ def run(args: argparse.Namespace) -> int:
     if not args.no_retrieval:
         queries = load_knowledge_queries(args.queries)
         if args.limit is not None:
-            queries = queries[: args.limit]
+            queries = _spread(queries, args.limit)
     described = f"{len(benchmark)} prompts" + (f" ({'; '.join(selection)})" if selection else "")
     report = evaluate(
         benchmark,
@@ -153,3 +157,18 @@ def run(args: argparse.Namespace) -> int:
         path = update_document(args.write, render_markdown(report, failures=True))
         print(f"wrote {path}", file=sys.stderr)
     return 0
+
+
+def _spread(queries: Sequence[KnowledgeQuery], limit: int) -> tuple[KnowledgeQuery, ...]:
+    """At most ``limit`` queries, taken from each crop in turn so a subset covers all crops."""
+    by_crop: dict[str, list[KnowledgeQuery]] = {}
+    for query in queries:
+        by_crop.setdefault(query.key.crop, []).append(query)
+    chosen: list[KnowledgeQuery] = []
+    depth = 0
+    while len(chosen) < min(limit, len(queries)):
+        for group in by_crop.values():
+            if depth < len(group) and len(chosen) < limit:
+                chosen.append(group[depth])
+        depth += 1
+    return tuple(chosen)
