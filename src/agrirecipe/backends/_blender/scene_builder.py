@@ -370,10 +370,21 @@ def _float_buffer(values: Any) -> Any:
 
 
 def build_plants(
-    field: dict[str, Any], place_field: PlaceField, collection: Any, proxies: Any
+    field: dict[str, Any],
+    place_field: PlaceField,
+    collection: Any,
+    proxies: Any,
+    timings: dict[str, float],
 ) -> tuple[Any, int]:
-    """The points object of one field (named by its id) and its plant count."""
+    """The points object of one field (named by its id) and its plant count.
+
+    Adds the seconds spent in the placement kernel and in filling the point
+    cloud to ``timings["kernel"]`` and ``timings["points"]``.
+    """
+    started = time.perf_counter()
     plants = place_field(field["params"])
+    placed = time.perf_counter()
+    timings["kernel"] = timings.get("kernel", 0.0) + placed - started
     count = len(plants)
     mesh = bpy.data.meshes.new(f"{field['id']}_points")
     mesh.vertices.add(count)
@@ -382,6 +393,8 @@ def build_plants(
         attribute = mesh.attributes.new(name, "FLOAT", "POINT")
         attribute.data.foreach_set("value", _float_buffer(plant[index] for plant in plants))
     mesh.update()
+    del plants
+    timings["points"] = timings.get("points", 0.0) + time.perf_counter() - placed
     obj = bpy.data.objects.new(field["id"], mesh)
     collection.objects.link(obj)
     modifier = obj.modifiers.new("agrirecipe_plants", "NODES")
@@ -666,7 +679,12 @@ def fresh_scene() -> Any:
 def build_scene(
     scene_data: dict[str, Any], place_field: PlaceField, settings: dict[str, Any]
 ) -> dict[str, Any]:
-    """Build the whole scene; return ``{"scene", "plants": {field id: count}, "seconds"}``."""
+    """Build the whole scene.
+
+    Returns ``{"scene", "plants": {field id: count}, "seconds", "timings"}``;
+    ``timings`` splits the seconds into ``kernel`` (placing plants), ``points``
+    (filling point clouds), ``proxies`` and ``rest``.
+    """
     started = time.perf_counter()
     verbose = bool(settings.get("verbose", True))
     scene = fresh_scene()
@@ -678,11 +696,14 @@ def build_scene(
     # Proxies are only drawn through the instancers: keep the originals out of renders.
     scene.view_layers[0].layer_collection.children[PROXY_COLLECTION].exclude = True
     counts: dict[str, int] = {}
+    timings: dict[str, float] = {"kernel": 0.0, "points": 0.0, "proxies": 0.0}
     for field in scene_data["fields"]:
         collection = bpy.data.collections.new(field["id"])
         root.children.link(collection)
+        proxy_started = time.perf_counter()
         proxies = build_proxies(field, proxy_root)
-        _, counts[field["id"]] = build_plants(field, place_field, collection, proxies)
+        timings["proxies"] += time.perf_counter() - proxy_started
+        _, counts[field["id"]] = build_plants(field, place_field, collection, proxies, timings)
         if verbose:
             print(f"agrirecipe: {field['id']}: {counts[field['id']]:,} plants", flush=True)
     build_ground(scene_data, root)
@@ -692,9 +713,10 @@ def build_scene(
     build_camera(scene_data, scene, root, width / height)
     build_world(scene_data, scene)
     seconds = time.perf_counter() - started
+    timings["rest"] = seconds - sum(timings.values())
     if verbose:
         print(f"agrirecipe: built {sum(counts.values()):,} plants in {seconds:.1f} s", flush=True)
-    return {"scene": scene, "plants": counts, "seconds": seconds}
+    return {"scene": scene, "plants": counts, "seconds": seconds, "timings": timings}
 
 
 def render_png(scene: Any, path: str) -> None:
