@@ -172,7 +172,7 @@ def report(result: dict[str, Any]) -> str:
         f"| Geometry Nodes evaluation of every instance (depsgraph) | "
         f"{result['evaluate_s']:.2f} s | {result['evaluate_cpu_s']:.2f} s |",
         f"| **build + evaluation** | **{build_total:.2f} s** | |",
-        f"| whole child process (start-up, import, build, evaluation"
+        "| whole child process (start-up, import, build, evaluation"
         + (", render" if "render" in result else "")
         + f") | {result['process_s']:.2f} s | |",
         "",
