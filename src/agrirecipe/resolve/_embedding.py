@@ -14,7 +14,7 @@ vocabulary as "rules"; only crop and variety mentions go through retrieval.
 from __future__ import annotations
 
 import threading
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 from agrirecipe.hierarchy import Hierarchy
@@ -24,7 +24,7 @@ from agrirecipe.resolve._intent import Candidate, ResolveContext, TraceStep
 from agrirecipe.resolve._lexicon import Item, Lexicon, Sense, normalise, vocabulary
 from agrirecipe.resolve._rules import LexicalResolver, fuzzy_unknown_words, nearest_by_spelling
 
-__all__ = ["CropIndex", "EmbeddingResolver", "Match"]
+__all__ = ["CropIndex", "EmbeddingResolver", "Match", "runs_where"]
 
 #: Cosine similarity a span needs to be read as a crop or variety name.
 ACCEPT_SIMILARITY = 0.75
@@ -247,23 +247,31 @@ def _open(item: Item) -> bool:
     return not item.senses or all(s.kind == "filler" for s in item.senses)
 
 
-def _runs(items: Sequence[Item], name_words: frozenset[str]) -> list[tuple[int, int]]:
-    """Maximal runs of items that may be (part of) a crop or variety name."""
+def runs_where(items: Sequence[Item], accept: Callable[[Item], bool]) -> list[tuple[int, int]]:
+    """``(start, end)`` of every maximal run of items that ``accept``."""
     runs: list[tuple[int, int]] = []
     start: int | None = None
     for position, item in enumerate(items):
-        candidate = item.norm.replace(" ", "").isalpha() and (
+        if accept(item) and start is None:
+            start = position
+        elif not accept(item) and start is not None:
+            runs.append((start, position))
+            start = None
+    if start is not None:
+        runs.append((start, len(items)))
+    return runs
+
+
+def _runs(items: Sequence[Item], name_words: frozenset[str]) -> list[tuple[int, int]]:
+    """Maximal runs of items that may be (part of) a crop or variety name."""
+
+    def candidate(item: Item) -> bool:
+        return item.norm.replace(" ", "").isalpha() and (
             not item.senses
             or (
                 not any(s.kind in _STRUCTURE_KINDS for s in item.senses)
                 and all(t.norm in name_words for t in item.tokens)
             )
         )
-        if candidate and start is None:
-            start = position
-        elif not candidate and start is not None:
-            runs.append((start, position))
-            start = None
-    if start is not None:
-        runs.append((start, len(items)))
-    return runs
+
+    return runs_where(items, candidate)

@@ -19,7 +19,7 @@ from collections.abc import Sequence
 
 from agrirecipe._errors import PromptError, UnknownCropError
 from agrirecipe.localmodels import Embedder
-from agrirecipe.resolve._embedding import EmbeddingResolver
+from agrirecipe.resolve._embedding import EmbeddingResolver, runs_where
 from agrirecipe.resolve._intent import ResolveContext, Resolver, SceneIntent, TraceStep
 from agrirecipe.resolve._lexicon import Item, Lexicon
 from agrirecipe.resolve._parse import NOTHING_FOUND
@@ -56,7 +56,7 @@ class HybridResolver(EmbeddingResolver):
     ) -> tuple[list[Item], list[TraceStep]]:
         """Fuzzy typo matching; then retrieval for unknown words in a crop name's place."""
         items, steps = fuzzy_unknown_words(items, lexicon)
-        runs = [run for run in _unknown_runs(items) if _names_a_crop(items, run)]
+        runs = [run for run in runs_where(items, _unknown) if _names_a_crop(items, run)]
         if not runs:
             return items, steps
         return self._retrieve(items, runs, context, steps)
@@ -89,19 +89,8 @@ class HybridResolver(EmbeddingResolver):
         return self._llm
 
 
-def _unknown_runs(items: Sequence[Item]) -> list[tuple[int, int]]:
-    runs: list[tuple[int, int]] = []
-    start: int | None = None
-    for position, item in enumerate(items):
-        unknown = not item.senses and item.norm.isalpha()
-        if unknown and start is None:
-            start = position
-        elif not unknown and start is not None:
-            runs.append((start, position))
-            start = None
-    if start is not None:
-        runs.append((start, len(items)))
-    return runs
+def _unknown(item: Item) -> bool:
+    return not item.senses and item.norm.isalpha()
 
 
 def _names_a_crop(items: Sequence[Item], run: tuple[int, int]) -> bool:

@@ -13,14 +13,12 @@ from __future__ import annotations
 import functools
 import re
 import unicodedata
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Literal
 
 import yaml
-
-from agrirecipe.recipe import HealthState, RelationKind, Season, Stage
 
 if TYPE_CHECKING:
     from agrirecipe.hierarchy import Hierarchy
@@ -325,6 +323,38 @@ def other_crops(hierarchy: Hierarchy) -> dict[str, OtherCrop]:
     return result
 
 
+# vocabulary.yaml sections: lists of phrases with one sense each...
+_PLAIN_LISTS: dict[str, SenseKind] = {
+    "filler": "filler",
+    "negations": "negation",
+    "dimension_joiners": "dimension_joiner",
+    "conjunctions": "conjunction",
+    "separators": "separator",
+    "corrections": "correction",
+    "all_words": "all",
+    "distinct_words": "distinct",
+    "other_words": "other",
+    "of_words": "of",
+}
+# ...phrase -> value mappings...
+_VALUED_PHRASES: dict[str, tuple[SenseKind, Callable[[Any], Any]]] = {
+    "numbers": ("number", int),
+    "quantities": ("quantity", int),
+    "fractions": ("fraction", float),
+    "area_units": ("area_unit", float),
+    "length_units": ("length_unit", float),
+    "references": ("reference", str),
+}
+# ...and value -> phrases groups (a stage and the words for it).
+_GROUPED_PHRASES: dict[str, SenseKind] = {
+    "stages": "stage",
+    "health": "health",
+    "side_words": "side",
+    "relations": "relation",
+    "relation_trailers": "relation_trailer",
+}
+
+
 def build_lexicon(
     hierarchy: Hierarchy,
     knowledge: KnowledgeBase,
@@ -347,72 +377,29 @@ def _build_lexicon(hierarchy: Hierarchy, knowledge: KnowledgeBase, crop_names: b
     weak_words = {normalise(w) for w in vocab["weak_variety_words"]}
 
     # Vocabulary first, hierarchy names after: both senses are kept for a shared phrase.
-    for word in vocab["filler"]:
-        add(str(word), Sense("filler"))
-    stage: Stage
-    for stage, phrases in vocab["stages"].items():
-        for phrase in phrases:
-            add(phrase, Sense("stage", stage))
-    season: Season
-    for season, phrases in vocab["seasons"].items():
-        for phrase in phrases:
-            add(phrase, Sense("season", season))
-            for modifier in vocab["season_modifiers"]:
-                add(f"{modifier} {phrase}", Sense("season", season))
+    for key, kind in _PLAIN_LISTS.items():
+        for phrase in vocab[key]:
+            add(str(phrase), Sense(kind))
+    for key, (kind, convert) in _VALUED_PHRASES.items():
+        for phrase, value in vocab[key].items():
+            add(str(phrase), Sense(kind, convert(value)))
+    for key, kind in _GROUPED_PHRASES.items():
+        for value, phrases in vocab[key].items():
+            for phrase in phrases:
+                add(phrase, Sense(kind, value))
+    modifiers = vocab["season_modifiers"]
     weak_months = {normalise(m) for m in vocab["weak_months"]}
-    for month, phrases in vocab["months"].items():
-        for phrase in phrases:
-            add(phrase, Sense("month", int(month), weak=normalise(phrase) in weak_months))
-            for modifier in vocab["season_modifiers"]:
-                add(f"{modifier} {phrase}", Sense("month", int(month)))
-    health: HealthState
-    for health, phrases in vocab["health"].items():
-        for phrase in phrases:
-            add(phrase, Sense("health", health))
+    for key, kind, convert in (("seasons", "season", str), ("months", "month", int)):
+        for value, phrases in vocab[key].items():
+            for phrase in phrases:
+                weak = normalise(phrase) in weak_months if kind == "month" else False
+                add(phrase, Sense(kind, convert(value), weak=weak))
+                for modifier in modifiers:  # "late summer", "early June"
+                    add(f"{modifier} {phrase}", Sense(kind, convert(value)))
     for crop in hierarchy.crops.values():
         disease = knowledge.crop_file(crop.name).disease.name
         for name in _disease_names(disease):
             add(name, Sense("health", "Ill"))
-    for phrase in vocab["negations"]:
-        add(phrase, Sense("negation"))
-    for phrase, value in vocab["numbers"].items():
-        add(phrase, Sense("number", int(value)))
-    for phrase, value in vocab["quantities"].items():
-        add(phrase, Sense("quantity", int(value)))
-    for phrase, value in vocab["fractions"].items():
-        add(phrase, Sense("fraction", float(value)))
-    for phrase, value in vocab["area_units"].items():
-        add(phrase, Sense("area_unit", float(value)))
-    for phrase, value in vocab["length_units"].items():
-        add(phrase, Sense("length_unit", float(value)))
-    for phrase in vocab["dimension_joiners"]:
-        add(phrase, Sense("dimension_joiner"))
-    for side, phrases in vocab["side_words"].items():
-        for phrase in phrases:
-            add(phrase, Sense("side", side))
-    kind: RelationKind
-    for kind, phrases in vocab["relations"].items():
-        for phrase in phrases:
-            add(phrase, Sense("relation", kind))
-    for kind, phrases in vocab["relation_trailers"].items():
-        for phrase in phrases:
-            add(phrase, Sense("relation_trailer", kind))
-    for phrase in vocab["conjunctions"]:
-        add(phrase, Sense("conjunction"))
-    for phrase in vocab["separators"]:
-        add(phrase, Sense("separator"))
-    for phrase, value in vocab["references"].items():
-        add(phrase, Sense("reference", value))
-    for phrase in vocab["corrections"]:
-        add(phrase, Sense("correction"))
-    for phrase in vocab["all_words"]:
-        add(phrase, Sense("all"))
-    for phrase in vocab["distinct_words"]:
-        add(phrase, Sense("distinct"))
-    for phrase in vocab["other_words"]:
-        add(phrase, Sense("other"))
-    for phrase in vocab["of_words"]:
-        add(phrase, Sense("of"))
     for phrase, spec in vocab["plot_nouns"].items():
         add(phrase, Sense("plot", _plot_spec(phrase, spec or {}, hierarchy, knowledge)))
     for phrase in vocab["containers"]["words"]:

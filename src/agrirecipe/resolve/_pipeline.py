@@ -15,10 +15,10 @@ import math
 import random
 import re
 from collections import Counter
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, TypeVar
 
 from pydantic import ValidationError
 
@@ -51,6 +51,7 @@ if TYPE_CHECKING:
 
 __all__ = ["Resolution", "build_recipe", "resolve"]
 
+_T = TypeVar("_T")
 _NOUN_BY_FORM = {"tree": "orchard", "vine": "vineyard"}
 # A stated size keeps a headland of at most this share of its shorter side, so a
 # small plot ("a 10 by 10 m strawberry patch") still holds plants.
@@ -396,48 +397,34 @@ def _enrich(
         inferred.append("crop")
     else:
         stated.append("crop")
-    if field.variety is not None:
-        variety = field.variety
-        stated.append("variety")
-    else:
-        variety = knowledge.default_variety(crop)
-        inferred.append("variety")
-        notes.append(f"variety {variety} (default)")
-    season: Season
-    if field.season is not None:
-        season = field.season
-        stated.append("season")
-    elif intent.season is not None:
-        season = intent.season
-        stated.append("season")
-    else:
+
+    def pick(name: AttributeName, value: _T | None, infer: Callable[[], tuple[_T, str]]) -> _T:
+        if value is not None:
+            stated.append(name)
+            return value
+        value, why = infer()
+        inferred.append(name)
+        notes.append(f"{name} {value} ({why})")
+        return value
+
+    variety = pick("variety", field.variety, lambda: (knowledge.default_variety(crop), "default"))
+
+    def infer_season() -> tuple[Season, str]:
         others = [f.season for f in intent.fields if f.season is not None]
         if others:
-            season = Counter(others).most_common(1)[0][0]
-            notes.append(f"season {season} (as the other fields)")
-        elif field.stage is not None:
-            season = knowledge.typical_season(crop, field.stage, variety)
-            notes.append(f"season {season} (typical for {field.stage})")
-        else:
-            season = "Summer"
-            notes.append("season Summer (scene default)")
-        inferred.append("season")
-    stage: Stage
-    if field.stage is not None:
-        stage = field.stage
-        stated.append("stage")
-    else:
-        stage = knowledge.typical_stage(crop, season, variety)
-        inferred.append("stage")
-        notes.append(f"stage {stage} (typical in {season})")
-    health: HealthState
-    if field.health is not None:
-        health = field.health
-        stated.append("health")
-    else:
-        health = "Healthy"
-        inferred.append("health")
-        notes.append("health Healthy (unless said otherwise)")
+            return Counter(others).most_common(1)[0][0], "as the other fields"
+        if field.stage is not None:
+            typical = knowledge.typical_season(crop, field.stage, variety)
+            return typical, f"typical for {field.stage}"
+        return "Summer", "scene default"
+
+    season: Season = pick("season", field.season or intent.season, infer_season)
+    stage: Stage = pick(
+        "stage",
+        field.stage,
+        lambda: (knowledge.typical_stage(crop, season, variety), f"typical in {season}"),
+    )
+    health: HealthState = pick("health", field.health, lambda: ("Healthy", "unless said otherwise"))
     width, length = knowledge.default_field_size_m(crop, variety)
     headland = knowledge.default_headland_m(crop, variety)
     if field.size is not None:
