@@ -114,6 +114,24 @@ def test_isolated_render_writes_png_and_blend(tmp_path: Path) -> None:
     assert blend.stat().st_size > 10_000
 
 
+def test_workbench_renders_a_small_scene(tmp_path: Path) -> None:
+    """Workbench goes through software OpenGL (EGL + Mesa) here: fine for small scenes."""
+    png = blender.render(
+        single_field_recipe("Lettuce"),
+        tmp_path / "lettuce.png",
+        resolution=(160, 90),
+        samples=1,
+        engine="workbench",
+        isolated=True,
+    )
+    with Image.open(png) as image:
+        assert image.size == (160, 90)
+        pixels = np.asarray(image.convert("RGB")).astype(np.float64)
+    assert pixels.std() > 10.0
+    green = (pixels[..., 1] > pixels[..., 0] + 20) & (pixels[..., 1] > pixels[..., 2] + 20)
+    assert green.mean() > 0.05  # lettuce heads
+
+
 def test_isolated_failure_reports_blenders_output(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
