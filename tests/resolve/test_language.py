@@ -485,3 +485,33 @@ def test_a_relation_to_something_that_is_not_a_field_is_dropped_with_a_warning()
     assert len(recipe.fields) == 1
     assert recipe.relations == ()
     assert any("parking lot" in w for w in recipe.warnings)
+
+
+def test_a_list_side_by_side_is_a_row() -> None:
+    recipe = _recipe("potatoes, onions and cabbages side by side in September", "rules")
+    potato, onion, cabbage = (f.id for f in recipe.fields)
+    assert {(r.subject, r.objects[0]) for r in recipe.relations} == {
+        (potato, onion),
+        (onion, cabbage),
+    }
+
+
+@pytest.mark.parametrize(
+    ("prompt", "kind"),
+    [
+        ("two fields of Fontane potatoes and between them a field of spelt", "between"),
+        ("two potato fields and north of them a wheat field", "north_of"),
+    ],
+)
+def test_a_pronoun_points_back(prompt: str, kind: str) -> None:
+    recipe = _recipe(prompt, "rules")
+    wheat = next(f.id for f in recipe.fields if f.crop == "Wheat")
+    potatoes = {f.id for f in recipe.fields if f.crop == "Potato"}
+    assert {r.kind for r in recipe.relations} == {kind}
+    assert all(r.subject == wheat and set(r.objects) <= potatoes for r in recipe.relations)
+
+
+def test_one_scene_one_season_when_only_stages_are_stated() -> None:
+    recipe = _recipe("ripe cherries next to young carrots", "rules")
+    assert len({f.season for f in recipe.fields}) == 1
+    assert not recipe.warnings

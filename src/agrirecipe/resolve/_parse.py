@@ -494,50 +494,70 @@ class PromptReader:
                 continue
             before = [m for c in clauses[:position] for m in c.mentions]
             after = [m for c in clauses[position:] for m in c.mentions]
-            pairs = self._relation_mentions(link, before, after)
+            pronoun = bool(clause.items) and clause.items[0].norm in _PRONOUNS
+            if link.role == "trailer" and link.data.get("value") == "next_to":
+                group = _coordinated(clauses, position)
+                if len(group) > 2:
+                    # "potatoes, onions and cabbages side by side": a row, each beside the next.
+                    for first, second in zip(group[1:], group, strict=False):
+                        relations.extend(self._pair("next_to", first, (second,), members, link))
+                    continue
+            pairs = self._relation_mentions(link, before, after, pronoun=pronoun)
             if pairs is None:
                 self.warnings.append(f"ignored {link.raw!r}: it needs a field on each side")
                 continue
             kind, subject, objects = pairs
-            subject_fields = members.get(id(subject), [])
-            object_fields = [members.get(id(o), []) for o in objects]
-            if not subject_fields or not all(object_fields):
-                continue
-            if kind == "between":
-                if objects[0] is objects[1]:
-                    pair = (object_fields[0][0], object_fields[0][1])
-                else:
-                    pair = (object_fields[0][0], object_fields[1][0])
-                relations.append(
-                    RelationIntent(
-                        kind="between", subject=subject_fields[0], objects=pair, text=link.raw
-                    )
-                )
-            else:
-                pairs_of = [(s, o) for s in subject_fields for o in object_fields[0]]
-                if kind == "next_to" and len(pairs_of) > 2:
-                    # Groups side by side: one field can touch at most two in a row, so
-                    # "two orchards next to three fields" means the groups touch.
-                    pairs_of = pairs_of[:1]
-                for s, o in pairs_of:
-                    relations.append(
-                        RelationIntent(kind=kind, subject=s, objects=(o,), text=link.raw)
-                    )
-            self.trace.append(
-                TraceStep(
-                    stage="decompose",
-                    subject=link.raw,
-                    detail=f"{subject.text!r} {kind} "
-                    + " and ".join(repr(o.text) for o in objects),
-                )
-            )
+            relations.extend(self._pair(kind, subject, objects, members, link))
         return relations
+
+    def _pair(
+        self,
+        kind: Any,
+        subject: Mention,
+        objects: tuple[Mention, ...],
+        members: dict[int, list[int]],
+        link: Item,
+    ) -> list[RelationIntent]:
+        """Field-level relations for a relation between mentions (plural ones expand)."""
+        subject_fields = members.get(id(subject), [])
+        object_fields = [members.get(id(o), []) for o in objects]
+        if not subject_fields or not all(object_fields):
+            return []
+        self.trace.append(
+            TraceStep(
+                stage="decompose",
+                subject=link.raw,
+                detail=f"{subject.text!r} {kind} " + " and ".join(repr(o.text) for o in objects),
+            )
+        )
+        if kind == "between":
+            if objects[0] is objects[1]:
+                pair = (object_fields[0][0], object_fields[0][1])
+            else:
+                pair = (object_fields[0][0], object_fields[1][0])
+            return [
+                RelationIntent(
+                    kind="between", subject=subject_fields[0], objects=pair, text=link.raw
+                )
+            ]
+        pairs = [(s, o) for s in subject_fields for o in object_fields[0]]
+        if kind == "next_to" and len(pairs) > 2:
+            # Groups side by side: one field can touch at most two in a row, so
+            # "two orchards next to three fields" means the groups touch.
+            pairs = pairs[:1]
+        return [RelationIntent(kind=kind, subject=s, objects=(o,), text=link.raw) for s, o in pairs]
 
     @staticmethod
     def _relation_mentions(
-        link: Item, before: Sequence[Mention], after: Sequence[Mention]
+        link: Item, before: Sequence[Mention], after: Sequence[Mention], *, pronoun: bool
     ) -> tuple[Any, Mention, tuple[Mention, ...]] | None:
         kind = link.data.get("value", "between") if link.role != "between" else "between"
+        if pronoun and before and after:
+            # "two potato fields and between them / north of them a wheat field": the
+            # pronoun is the object, named before; the subject comes after.
+            objects = (before[-1],) if kind != "between" else (before[-1], before[-1])
+            if kind != "between" or (before[-1].count or 1) >= 2:
+                return kind, after[0], objects
         if link.role == "between":
             if after and before and (after[0].count or 1) >= 2:
                 return "between", before[-1], (after[0], after[0])
@@ -569,8 +589,11 @@ class PromptReader:
 # --- helpers ---
 
 
+_PRONOUNS = frozenset({"it", "them", "those", "these", "they", "this", "that", "which"})
+
+
 def _coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:
-    """The mentions just before clause ``position``, with those joined to it by "and".
+    """The mentions just before clause ``position``, with those listed with it.
 
     "bananas and oranges, ripe": both are ripe; "apples next to carrots, ripe":
     only the carrots.
@@ -581,15 +604,19 @@ def _coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:
     if index < 0:
         return []
     group = [clauses[index].mentions[-1]]
-    while (
-        clauses[index].link is not None
-        and clauses[index].link.role == "conjunction"  # type: ignore[union-attr]
-        and index > 0
-        and clauses[index - 1].mentions
-    ):
+    while index > 0 and clauses[index - 1].mentions and _listing(clauses[index].link):
         index -= 1
         group.append(clauses[index].mentions[-1])
     return group
+
+
+def _listing(link: Item | None) -> bool:
+    """A link inside a list of fields: "and", or a comma (not a full stop or a relation)."""
+    if link is None:
+        return False
+    return link.role == "conjunction" or (
+        link.role == "separator" and link.norm in (",", ";", "&")
+    )
 
 
 def _word_before(items: Sequence[Item], index: int | None) -> Item | None:

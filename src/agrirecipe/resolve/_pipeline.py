@@ -52,6 +52,9 @@ if TYPE_CHECKING:
 __all__ = ["Resolution", "build_recipe", "resolve"]
 
 _T = TypeVar("_T")
+_SEASONS: tuple[Season, ...] = ("Spring", "Summer", "Fall", "Winter")
+# Nouns that name a kind of planting; a generic field keeps them ("an orchard").
+_KIND_NOUNS = frozenset({"orchard", "vineyard", "grove", "plantation", "garden"})
 _NOUN_BY_FORM = {"tree": "orchard", "vine": "vineyard"}
 # A stated size keeps a headland of at most this share of its shorter side, so a
 # small plot ("a 10 by 10 m strawberry patch") still holds plants.
@@ -188,8 +191,10 @@ def build_recipe(
     steps: list[TraceStep] = []
     _validate(intent, context)
     crops = _choose_crops(intent, context, steps)
+    scene_season = _scene_season(intent, crops, context)
     plans = [
-        _enrich(intent, index, crops[index], context, steps) for index in range(len(intent.fields))
+        _enrich(intent, index, crops[index], scene_season, context, steps)
+        for index in range(len(intent.fields))
     ]
     warnings = list(intent.warnings)
     ids = _field_ids(plans, context)
@@ -379,10 +384,41 @@ def _choose_crops(
     return [crop for crop in chosen if crop is not None]
 
 
+def _scene_season(
+    intent: SceneIntent, crops: Sequence[str], context: ResolveContext
+) -> tuple[Season, str]:
+    """The season of fields that state none: a scene shows one moment.
+
+    The season stated for other fields; else the season in which the most stated
+    stages are plausible (the first such field's typical season on a tie); else Summer.
+    """
+    stated = [f.season for f in intent.fields if f.season is not None]
+    if stated:
+        return Counter(stated).most_common(1)[0][0], "as the other fields"
+    knowledge = context.knowledge
+    staged = [
+        (crops[i], f.variety or knowledge.default_variety(crops[i]), f.stage)
+        for i, f in enumerate(intent.fields)
+        if f.stage is not None
+    ]
+    if not staged:
+        return "Summer", "scene default"
+    crop, variety, stage = staged[0]
+    typical = knowledge.typical_season(crop, stage, variety)
+    order: list[Season] = [typical] + [s for s in _SEASONS if s != typical]
+
+    def fits(season: Season) -> int:
+        return sum(s in knowledge.plausible_stages(c, season, v) for c, v, s in staged)
+
+    best = max(order, key=fits)  # max keeps the first of equals: the typical season
+    return best, f"typical for the stated stage{'s' if len(staged) > 1 else ''}"
+
+
 def _enrich(
     intent: SceneIntent,
     index: int,
     crop: str,
+    scene_season: tuple[Season, str],
     context: ResolveContext,
     steps: list[TraceStep],
 ) -> _Plan:
@@ -409,16 +445,7 @@ def _enrich(
 
     variety = pick("variety", field.variety, lambda: (knowledge.default_variety(crop), "default"))
 
-    def infer_season() -> tuple[Season, str]:
-        others = [f.season for f in intent.fields if f.season is not None]
-        if others:
-            return Counter(others).most_common(1)[0][0], "as the other fields"
-        if field.stage is not None:
-            typical = knowledge.typical_season(crop, field.stage, variety)
-            return typical, f"typical for {field.stage}"
-        return "Summer", "scene default"
-
-    season: Season = pick("season", field.season or intent.season, infer_season)
+    season: Season = pick("season", field.season or intent.season, lambda: scene_season)
     stage: Stage = pick(
         "stage",
         field.stage,
@@ -438,7 +465,10 @@ def _enrich(
         headland = min(headland, round(_MAX_HEADLAND_SHARE * min(width, length), 2))
     else:
         inferred.append("size")
-    noun = field.noun or _NOUN_BY_FORM.get(knowledge.crop_file(crop).growth_form, "field")
+    noun = field.noun
+    if noun is None or (field.generic and noun not in _KIND_NOUNS):
+        # "four fields" that became an apple crop are orchards.
+        noun = _NOUN_BY_FORM.get(knowledge.crop_file(crop).growth_form, "field")
     if notes:
         steps.append(
             TraceStep(stage="enrich", subject=field.text, detail="inferred " + "; ".join(notes))
