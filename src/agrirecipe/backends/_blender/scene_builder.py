@@ -29,6 +29,8 @@ ENGINES = {"cycles": "CYCLES", "workbench": "BLENDER_WORKBENCH", "eevee": "BLEND
 PLANT_ATTRIBUTES = ("yaw", "scale", "height_m")
 _GOLDEN_ANGLE = math.pi * (3.0 - math.sqrt(5.0))
 _SEGMENTS = {"part": 10, "scatter": 6}
+#: Materials whose brightness varies from plant to plant (leaves, not bark or fruit).
+_VARIED_MATERIALS = ("foliage", "stem", "ear")
 
 Vec3 = tuple[float, float, float]
 # An affine placement of a unit primitive: centre, then the images of its x, y, z axes.
@@ -245,21 +247,42 @@ def proxy_geometry(
     return verts, faces, face_slots, face_smooth, slots
 
 
-def make_material(name: str, srgb: Sequence[float]) -> Any:
-    """A matte Principled material (and the same colour for Workbench renders)."""
+def make_material(name: str, srgb: Sequence[float], *, vary_by_scale: bool = False) -> Any:
+    """A matte Principled material (and the same colour for Workbench renders).
+
+    With ``vary_by_scale`` the colour's brightness follows each plant's
+    ``scale`` instance attribute (vigorous plants a little lighter), so a
+    field of identical proxies does not look stamped.
+    """
     material = bpy.data.materials.new(name)
     colour = srgb_to_linear(srgb)
     material.diffuse_color = colour  # what Workbench and the viewport show
     material["agrirecipe_srgb"] = [float(c) for c in srgb]
     if material.node_tree is None:  # Blender 4.x creates materials without nodes
         material.use_nodes = True
+    nodes, links = material.node_tree.nodes, material.node_tree.links
     principled = next(
-        (node for node in material.node_tree.nodes if node.bl_idname == "ShaderNodeBsdfPrincipled"),
-        None,
+        (node for node in nodes if node.bl_idname == "ShaderNodeBsdfPrincipled"), None
     )
-    if principled is not None:
-        principled.inputs["Base Color"].default_value = colour
-        principled.inputs["Roughness"].default_value = 0.85
+    if principled is None:
+        return material
+    principled.inputs["Roughness"].default_value = 0.85
+    base = principled.inputs["Base Color"]
+    base.default_value = colour
+    if vary_by_scale:
+        scale = nodes.new("ShaderNodeAttribute")
+        scale.attribute_type = "INSTANCER"
+        scale.attribute_name = "scale"
+        brightness = nodes.new("ShaderNodeMapRange")
+        for socket, value in (
+            ("From Min", 0.8), ("From Max", 1.2), ("To Min", 0.85), ("To Max", 1.12)
+        ):  # fmt: skip
+            brightness.inputs[socket].default_value = value
+        tone = nodes.new("ShaderNodeHueSaturation")
+        tone.inputs["Color"].default_value = colour
+        links.new(scale.outputs["Fac"], brightness.inputs["Value"])
+        links.new(brightness.outputs["Result"], tone.inputs["Value"])
+        links.new(tone.outputs["Color"], base)
     return material
 
 
@@ -270,7 +293,8 @@ def build_proxies(field: dict[str, Any], parent: Any) -> Any:
     collection = bpy.data.collections.new(f"{field_id}_proxies")
     parent.children.link(collection)
     materials = {
-        name: make_material(f"{field_id}_{name}", rgb) for name, rgb in plan["materials"].items()
+        name: make_material(f"{field_id}_{name}", rgb, vary_by_scale=name in _VARIED_MATERIALS)
+        for name, rgb in plan["materials"].items()
     }
     for variant in range(int(plan["variants"])):
         verts, faces, face_slots, face_smooth, slots = proxy_geometry(plan, variant)
