@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import pytest
@@ -35,6 +36,8 @@ def test_eval_prints_the_tables_and_writes_the_report(
     assert "100/100/97/98 %" in out
     assert "6 prompts (--limit 6)" in out
     assert "<details>" not in out  # failure lists only with --failures
+    # The latency row of rules: first call timed in a new process, then in this one.
+    assert re.search(r"\| rules \| \d+\.\d\d \| \d+\.\d\d \| ", out)
     text = report.read_text(encoding="utf-8")
     assert text.startswith("# Evaluation")
     assert BEGIN_MARKER in text and "### Table I" in text and "<details>" in text
@@ -56,6 +59,7 @@ def test_eval_selects_by_category_and_lists_failures(
             "--no-retrieval",
             "--no-progress",
             "--failures",
+            "--no-fresh-process",
         ]
     )
     out, _ = capsys.readouterr()
@@ -78,7 +82,7 @@ def test_eval_selects_by_category_and_lists_failures(
 def test_eval_rejects_bad_arguments_with_exit_code_2(
     arguments: list[str], message: str, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    code = main(["eval", "--no-retrieval", "--no-progress", *arguments])
+    code = main(["eval", "--no-retrieval", "--no-progress", "--no-fresh-process", *arguments])
     _, err = capsys.readouterr()
     assert code == 2
     assert message in err

@@ -82,6 +82,11 @@ def register(subparsers: Any) -> None:
     parser.add_argument("--queries", type=Path, default=None, help="a custom knowledge-query file")
     parser.add_argument("--seed", type=int, default=0, help="seed passed to generate (default 0)")
     parser.add_argument("--no-progress", action="store_true", help="no progress bars")
+    parser.add_argument(
+        "--no-fresh-process",
+        action="store_true",
+        help="do not time each strategy's first call in a new process (saves a model load)",
+    )
     parser.set_defaults(handler=run)
 
 
@@ -151,6 +156,7 @@ def run(args: argparse.Namespace) -> int:
         seed=args.seed,
         progress=not args.no_progress,
         selection=described if selection else None,
+        fresh_process=not args.no_fresh_process,
     )
     print(render_markdown(report, failures=args.failures), end="")
     if args.write is not None:

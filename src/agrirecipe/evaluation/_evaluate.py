@@ -53,14 +53,17 @@ def evaluate(
     seed: int = 0,
     progress: bool = True,
     selection: str | None = None,
+    fresh_process: bool = False,
 ) -> EvaluationReport:
     """Run ``strategies`` over ``benchmark`` and, when ``queries`` are given, Table II.
 
     ``retrieval_resolver`` extracts the structured attributes for Table II
-    (default: "hybrid" if evaluated, else the last strategy).
+    (default: "hybrid" if evaluated, else the last strategy). With
+    ``fresh_process`` each strategy's first call is also timed in a new process.
     """
     runs: list[StrategyRun] = [
-        run_strategy(benchmark, name, seed=seed, progress=progress) for name in strategies
+        run_strategy(benchmark, name, seed=seed, progress=progress, fresh_process=fresh_process)
+        for name in strategies
     ]
     retrieval: RetrievalRun | None = None
     if queries is not None:

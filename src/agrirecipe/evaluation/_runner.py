@@ -34,6 +34,7 @@ class StrategyRun:
     cold_seconds: float | None = None
     unavailable: str | None = None
     load_average: float | None = None
+    fresh_process_seconds: float | None = None
 
     @property
     def failures(self) -> tuple[PromptScore, ...]:
@@ -49,10 +50,14 @@ def run_strategy(
     progress: bool = True,
     generate: Generate | None = None,
     generate_options: dict[str, Any] | None = None,
+    fresh_process: bool = False,
 ) -> StrategyRun:
     """Resolve every prompt of ``benchmark`` with ``resolver`` and score it.
 
-    The first (warm-up) call is timed separately as ``cold_seconds``; when it
+    The first (warm-up) call is timed separately as ``cold_seconds`` (it may
+    reuse models an earlier strategy loaded in this process); with
+    ``fresh_process`` the first call is also timed in a new Python process
+    (import and model loading included), as a user's first call. When it
     fails because the strategy cannot run here (a missing optional dependency
     or model), the run is returned as unavailable with the reason. Every other
     exception a prompt raises is scored (for an invalid prompt only an
@@ -106,7 +111,37 @@ def run_strategy(
         scores=tuple(scores),
         cold_seconds=cold,
         load_average=_load_average(),
+        fresh_process_seconds=first_call_in_new_process(resolver, seed) if fresh_process else None,
     )
+
+
+def first_call_in_new_process(resolver: str, seed: int = 0) -> float | None:
+    """Seconds from ``import agrirecipe`` to a first recipe in a new process (None on failure)."""
+    import subprocess
+
+    code = (
+        "import sys, time\n"
+        "start = time.perf_counter()\n"
+        "import agrirecipe\n"
+        "agrirecipe.generate(sys.argv[1], seed=int(sys.argv[2]), resolver=sys.argv[3])\n"
+        "print(time.perf_counter() - start)\n"
+    )
+    try:
+        done = subprocess.run(
+            [sys.executable, "-c", code, WARMUP_PROMPT, str(seed), resolver],
+            capture_output=True,
+            text=True,
+            timeout=1800,
+            check=False,
+        )
+    except subprocess.TimeoutExpired:
+        return None
+    if done.returncode != 0:
+        return None
+    try:
+        return float(done.stdout.strip().splitlines()[-1])
+    except (ValueError, IndexError):
+        return None
 
 
 def _load_average() -> float | None:
