@@ -28,6 +28,9 @@ __all__ = ["CropIndex", "EmbeddingResolver", "Match", "runs_where"]
 
 #: Cosine similarity a span needs to be read as a crop or variety name.
 ACCEPT_SIMILARITY = 0.75
+_SEEN_LIMIT = 4096
+# How much worse than its best single word a multi-word span may fit and still win.
+_SPAN_TOLERANCE = 0.02
 #: Longest span of words tried as one name.
 _MAX_SPAN = 3
 # Words of a name may also be vocabulary ("winter" in Winter Wheat, "acre" in Golden
@@ -52,6 +55,8 @@ class CropIndex:
 
     def __init__(self, hierarchy: Hierarchy, knowledge: KnowledgeBase, embedder: Embedder) -> None:
         self.embedder = embedder
+        # Spans already looked up: prompts repeat words, and a lookup costs a model call.
+        self._seen: dict[str, Match] = {}
         texts: list[str] = []
         self.rows: list[tuple[str, str | None]] = []
         for crop in hierarchy.crops.values():
@@ -60,10 +65,15 @@ class CropIndex:
                 self.rows.append((crop.name, None))
             for variety in crop.varieties:
                 for phrase in (variety.name, *variety.aliases):
+                    # The name alone ("jonagold") and with its crop ("jonagold apple"):
+                    # people type both, and a bare name embeds far from "name + crop".
                     name = normalise(phrase)
                     crop_word = normalise(crop.name)
-                    texts.append(name if crop_word in name else f"{name} {crop_word}")
-                    self.rows.append((crop.name, variety.name))
+                    for text in dict.fromkeys((name, f"{name} {crop_word}")):
+                        if text != name and crop_word in name:
+                            continue
+                        texts.append(text)
+                        self.rows.append((crop.name, variety.name))
         self.names = VectorIndex.build(texts, embedder, name=f"crop-names-{hierarchy.digest()}")
         self.crops = list(hierarchy.crops)
         descriptors = []
@@ -79,16 +89,17 @@ class CropIndex:
         )
 
     def match(self, spans: Sequence[str]) -> list[Match]:
-        """The best name for each span (one embedding batch)."""
-        if not spans:
-            return []
-        vectors = self.embedder.encode(list(spans))
-        scores, rows = self.names.search(vectors, 1)
-        matches = []
-        for span, score, row in zip(spans, scores[:, 0], rows[:, 0], strict=True):
-            crop, variety = self.rows[int(row)]
-            matches.append(Match(crop, variety, span, float(score)))
-        return matches
+        """The best name for each span (one embedding batch for the spans not seen before)."""
+        new = [span for span in dict.fromkeys(spans) if span not in self._seen]
+        if new:
+            vectors = self.embedder.encode(new)
+            scores, rows = self.names.search(vectors, 1)
+            if len(self._seen) + len(new) > _SEEN_LIMIT:
+                self._seen.clear()
+            for span, score, row in zip(new, scores[:, 0], rows[:, 0], strict=True):
+                crop, variety = self.rows[int(row)]
+                self._seen[span] = Match(crop, variety, span, float(score))
+        return [self._seen[span] for span in spans]
 
     def nearest(self, name: str, limit: int = 3) -> list[tuple[str, float]]:
         """Known crops nearest in meaning to an unknown plant name, best first."""
@@ -197,6 +208,17 @@ class EmbeddingResolver(LexicalResolver):
             best.items(), key=lambda kv: (-(kv[0][1] - kv[0][0]), -kv[1].score, kv[0][0])
         ):
             if match.score < self.accept_similarity or taken & set(range(start, end)):
+                continue
+            # A span is one name only if it fits at least as well as the names its words
+            # make alone: "gala pear" is Gala beside Pear, not a poor match for "gala apple".
+            alone = [
+                best[(p, p + 1)].score
+                for p in range(start, end)
+                if end - start > 1
+                and (p, p + 1) in best
+                and best[(p, p + 1)].score >= self.accept_similarity
+            ]
+            if alone and match.score < min(alone) - _SPAN_TOLERANCE:
                 continue
             tokens = tuple(t for item in items[start:end] for t in item.tokens)
             weak = all(t.norm in weak_words for t in tokens)
