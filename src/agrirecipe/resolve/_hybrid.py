@@ -8,9 +8,11 @@ field", "Honeycrisp apples"): a very close match is read as that name, and
 otherwise the request is refused with the known crops nearest *in meaning*.
 Prompts without such words never load the model.
 
-The local LLM ("llm" strategy) is slower by three orders of magnitude and,
-on the benchmark, never right where both of these are wrong; it is used only
-when ``use_llm=True`` and the lexical reading found no field at all.
+The local LLM ("llm" strategy) is slower by three to four orders of magnitude
+(seconds per prompt on two cores), and on the benchmark rules and retrieval
+leave no prompt for it to put right (docs/EVALUATION.md), so by default hybrid
+does not call it. With ``use_llm=True`` it is asked when the lexical reading
+found no field at all, the one case where its free reading can add something.
 """
 
 from __future__ import annotations
