@@ -8,6 +8,9 @@ from agrirecipe.resolve._intent import TraceStep
 
 __all__ = ["Explanation"]
 
+# Stages in the order they run (DESIGN.md); a strategy's own stages come after.
+_STAGE_ORDER = ("decompose", "normalise", "retrieve", "validate", "choose", "enrich", "layout")
+
 
 class Explanation(BaseModel):
     """The resolver's trace: subqueries, candidates and scores, choices, inferences, warnings."""
@@ -21,10 +24,13 @@ class Explanation(BaseModel):
     warnings: tuple[str, ...] = ()
 
     def render(self) -> str:
-        """A readable report, one stage after another."""
+        """A readable report, one stage after another (repeated steps shown once)."""
         lines = [f"prompt: {self.prompt!r}", f"resolver: {self.resolver} (seed {self.seed})"]
         current = None
-        for step in self.steps:
+        rank = {stage: index for index, stage in enumerate(_STAGE_ORDER)}
+        unique = list(dict.fromkeys(self.steps))
+        ordered = sorted(unique, key=lambda step: rank.get(step.stage, len(rank)))
+        for step in ordered:
             if step.stage != current:
                 current = step.stage
                 lines.append(f"[{step.stage}]")

@@ -37,7 +37,6 @@ from agrirecipe.recipe import (
 )
 from agrirecipe.resolve._explain import Explanation
 from agrirecipe.resolve._intent import (
-    Candidate,
     FieldIntent,
     ResolveContext,
     Resolver,
@@ -182,6 +181,7 @@ class _Plan:
     size_m: tuple[float, float]
     headland_m: float
     noun: str
+    notes: list[str]
 
 
 def build_recipe(
@@ -199,6 +199,13 @@ def build_recipe(
     warnings = list(intent.warnings)
     ids = _field_ids(plans, context)
     labels = _labels(plans)
+    for plan, field_id in zip(plans, ids, strict=True):
+        if plan.notes:
+            steps.append(
+                TraceStep(
+                    stage="enrich", subject=field_id, detail="inferred " + "; ".join(plan.notes)
+                )
+            )
     for plan, field_id in zip(plans, ids, strict=True):
         if {"stage", "season"} & set(plan.stated):
             reason = context.knowledge.implausibility(
@@ -260,11 +267,22 @@ def build_recipe(
             stage="validate",
             hint="ask for fewer or smaller fields",
         ) from exc
+    for spec in fields:
+        x, y = spec.geometry.origin_m
+        width, length = spec.geometry.size_m
+        steps.append(
+            TraceStep(
+                stage="layout",
+                subject=spec.id,
+                detail=f"{spec.variety} {spec.crop}, {spec.stage}, {spec.season}, {spec.health}; "
+                f"{width:g} x {length:g} m at ({x:g}, {y:g})",
+            )
+        )
     steps.append(
         TraceStep(
             stage="layout",
             subject="scene",
-            detail=f"{len(fields)} field(s), environment {season} at {latitude:g} deg",
+            detail=f"{len(fields)} field(s), environment {season} at latitude {latitude:g}",
         )
     )
     return recipe, steps
@@ -376,9 +394,9 @@ def _choose_crops(
             TraceStep(
                 stage="choose",
                 subject=field.text,
-                detail=f"generic field: chose {crop} (seed {context.seed})"
-                + (f", plausible in {season}" if season else ""),
-                candidates=tuple(Candidate(value=c, score=0.0, source="seeded") for c in unused),
+                detail=f"generic field: chose {crop} from {', '.join(unused)} "
+                f"(seed {context.seed}"
+                + (f"; crops plausible in {season} first)" if season else ")"),
             )
         )
     return [crop for crop in chosen if crop is not None]
@@ -469,10 +487,6 @@ def _enrich(
     if noun is None or (field.generic and noun not in _KIND_NOUNS):
         # "four fields" that became an apple crop are orchards.
         noun = _NOUN_BY_FORM.get(knowledge.crop_file(crop).growth_form, "field")
-    if notes:
-        steps.append(
-            TraceStep(stage="enrich", subject=field.text, detail="inferred " + "; ".join(notes))
-        )
     return _Plan(
         intent=field,
         crop=crop,
@@ -485,6 +499,7 @@ def _enrich(
         size_m=(width, length),
         headland_m=headland,
         noun=noun,
+        notes=notes,
     )
 
 
