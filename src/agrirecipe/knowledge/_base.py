@@ -244,6 +244,9 @@ class KnowledgeBase:
             jitter_m=field.jitter_m.value,
             missing_rate=field.missing_rate.value,
             size_variation=field.size_variation.value,
+            yaw_variation_deg=(
+                field.yaw_variation_deg.value if field.yaw_variation_deg is not None else 180.0
+            ),
         )
 
     # --- the structured lookup ---

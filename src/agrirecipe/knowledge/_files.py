@@ -71,6 +71,11 @@ class _FieldDefaults(_Strict):
     jitter_m: Sourced[float]
     missing_rate: Sourced[float]
     size_variation: Sourced[float]
+    yaw_variation_deg: Sourced[float] | None = Field(
+        default=None,
+        description="How far a plant may turn about its stem; trellised vines keep their "
+        "leaf wall along the row. None: any yaw (180).",
+    )
 
 
 class _Disease(_Strict):
