@@ -57,6 +57,7 @@ class CropIndex:
         self.embedder = embedder
         # Spans already looked up: prompts repeat words, and a lookup costs a model call.
         self._seen: dict[str, Match] = {}
+        self._nearest: dict[tuple[str, int], list[tuple[str, float]]] = {}
         texts: list[str] = []
         self.rows: list[tuple[str, str | None]] = []
         for crop in hierarchy.crops.values():
@@ -103,13 +104,18 @@ class CropIndex:
 
     def nearest(self, name: str, limit: int = 3) -> list[tuple[str, float]]:
         """Known crops nearest in meaning to an unknown plant name, best first."""
-        vectors = self.embedder.encode([f"{normalise(name)} plant"])
-        scores, rows = self.descriptors.search(vectors, limit)
-        return [
-            (self.crops[int(row)], float(score))
-            for score, row in zip(scores[0], rows[0], strict=True)
-            if row >= 0
-        ]
+        key = (normalise(name), limit)
+        if key not in self._nearest:
+            vectors = self.embedder.encode([f"{key[0]} plant"])
+            scores, rows = self.descriptors.search(vectors, limit)
+            if len(self._nearest) >= _SEEN_LIMIT:
+                self._nearest.clear()
+            self._nearest[key] = [
+                (self.crops[int(row)], float(score))
+                for score, row in zip(scores[0], rows[0], strict=True)
+                if row >= 0
+            ]
+        return self._nearest[key]
 
 
 class _IndexCache:
