@@ -515,3 +515,24 @@ def test_one_scene_one_season_when_only_stages_are_stated() -> None:
     recipe = _recipe("ripe cherries next to young carrots", "rules")
     assert len({f.season for f in recipe.fields}) == 1
     assert not recipe.warnings
+
+
+@pytest.mark.parametrize(
+    ("prompt", "count"),
+    [
+        ("carrot fields", 2),
+        ("apple orchards and a carrot field", 3),
+        ("apple trees", 1),
+        ("tomato plants with blight", 1),
+        ("Riesling and Pinot Noir vineyards", 2),
+        ("some fruit and vegetable fields", 2),
+        ("a banana plantation, mature plants", 1),
+    ],
+)
+def test_plural_fields_and_plural_plants(prompt: str, count: int) -> None:
+    assert len(_recipe(prompt, "rules").fields) == count
+
+
+def test_a_season_said_once_holds_for_the_scene() -> None:
+    recipe = _recipe("2 Gala apple orchards and 3 fields of Bintje potatoes in autumn", "rules")
+    assert {(f.season, "season" in f.stated) for f in recipe.fields} == {("Fall", True)}

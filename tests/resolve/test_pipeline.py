@@ -50,10 +50,20 @@ def test_a_stated_season_gives_the_typical_stage() -> None:
     assert field.stage == kb.typical_stage("Wheat", "Winter", field.variety)
 
 
-def test_unstated_seasons_follow_the_stated_one() -> None:
+def test_a_season_said_once_is_the_scene_season() -> None:
     recipe = resolve("apples in autumn next to carrots", resolver="rules").recipe
     carrot = next(f for f in recipe.fields if f.crop == "Carrot")
-    assert carrot.season == "Fall" and "season" in carrot.inferred
+    assert carrot.season == "Fall" and "season" in carrot.stated
+    assert recipe.environment.season == "Fall"
+
+
+def test_with_different_seasons_stated_the_rest_follow_the_most_common() -> None:
+    recipe = resolve(
+        "apples in autumn, pears in autumn, carrots in summer and a cabbage field",
+        resolver="rules",
+    ).recipe
+    cabbage = next(f for f in recipe.fields if f.crop == "Cabbage")
+    assert cabbage.season == "Fall" and "season" in cabbage.inferred
     assert recipe.environment.season == "Fall"
 
 

@@ -473,6 +473,7 @@ def _plot_spec(
     return {
         "noun": spec.get("noun") or _singular(phrase.split()[-1]),
         "plural": bool(spec.get("plural", False)),
+        "individual": bool(spec.get("individual", False)),
         "options": tuple(options),
         "category": category,
         "narrows": bool(options) or category is not None,

@@ -37,6 +37,7 @@ from agrirecipe.resolve._lexicon import Item, Lexicon, OtherCrop, tokenize, voca
 from agrirecipe.resolve._scan import assign_roles, read_latitude, read_sizes
 from agrirecipe.resolve._structure import (
     apply_corrections,
+    apply_plural_counts,
     apply_refinements,
     merge_coreferences,
     promote_weak_varieties,
@@ -114,6 +115,7 @@ class PromptReader:
         builder = MentionBuilder(self.crop_categories)
         clauses = decompose(items, builder)
         promote_weak_varieties(clauses, builder)
+        apply_plural_counts(clauses, int(vocabulary()["plural_fields"]))
         for dropped in apply_corrections(clauses):
             self.trace.append(
                 TraceStep(stage="decompose", subject=dropped, detail="replaced by a correction")
@@ -614,9 +616,7 @@ def _listing(link: Item | None) -> bool:
     """A link inside a list of fields: "and", or a comma (not a full stop or a relation)."""
     if link is None:
         return False
-    return link.role == "conjunction" or (
-        link.role == "separator" and link.norm in (",", ";", "&")
-    )
+    return link.role == "conjunction" or (link.role == "separator" and link.norm in (",", ";", "&"))
 
 
 def _word_before(items: Sequence[Item], index: int | None) -> Item | None:

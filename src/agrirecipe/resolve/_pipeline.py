@@ -463,7 +463,10 @@ def _enrich(
 
     variety = pick("variety", field.variety, lambda: (knowledge.default_variety(crop), "default"))
 
-    season: Season = pick("season", field.season or intent.season, lambda: scene_season)
+    # A season said for one field and contradicted by none holds for the scene.
+    said = {f.season for f in intent.fields if f.season is not None}
+    only = next(iter(said)) if len(said) == 1 else None
+    season: Season = pick("season", field.season or intent.season or only, lambda: scene_season)
     stage: Stage = pick(
         "stage",
         field.stage,

@@ -19,6 +19,7 @@ from agrirecipe.resolve._lexicon import Item, vocabulary
 
 __all__ = [
     "apply_corrections",
+    "apply_plural_counts",
     "apply_refinements",
     "merge_coreferences",
     "promote_weak_varieties",
@@ -67,6 +68,43 @@ def promote_weak_varieties(clauses: Sequence[Clause], builder: MentionBuilder) -
                 mention.plot = neighbour.plot
             clause.mentions, clause.loose = [mention], []
             break
+
+
+def apply_plural_counts(clauses: Sequence[Clause], plural_count: int) -> None:
+    """ "carrot fields" asks for more than one field; "fruit and vegetable fields" does not.
+
+    A plural plot noun without a number stands for ``plural_count`` fields, unless
+    the plural is shared with a coordinated mention that names no plot of its own
+    ("Riesling and Pinot Noir vineyards", "orchards of Gala and Fuji"), or the
+    mention points back at fields already named ("..., the trees are healthy").
+    """
+    definite = _definite_words()
+    for position, clause in enumerate(clauses):
+        for index, mention in enumerate(clause.mentions):
+            plots = [h for h in mention.heads if h.role == "plot"]
+            spec = plots[-1].data["value"] if plots else {}
+            if mention.count is not None or not spec.get("plural") or spec.get("individual"):
+                continue
+            first = _first_word(mention)
+            if first is not None and first.norm in definite:
+                continue
+            link = clause.link if index == 0 else None
+            if link is not None and link.role == "separator":
+                continue
+            neighbours = []
+            if index == 0 and link is not None and link.role == "conjunction" and position > 0:
+                neighbours += clauses[position - 1].mentions[-1:]
+            following = clauses[position + 1] if position + 1 < len(clauses) else None
+            if (
+                index == len(clause.mentions) - 1
+                and following is not None
+                and following.link is not None
+                and following.link.role == "conjunction"
+            ):
+                neighbours += following.mentions[:1]
+            if any(not any(h.role == "plot" for h in n.heads) for n in neighbours):
+                continue
+            mention.count = plural_count
 
 
 def apply_corrections(clauses: Sequence[Clause]) -> list[str]:
