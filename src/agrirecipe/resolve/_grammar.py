@@ -251,14 +251,6 @@ class HierarchyGrammars:
         builder.add("root", '" " span "\\n"')
         return builder.render()
 
-    def size_grammar(self, numbers: Sequence[str], units: Sequence[str]) -> str:
-        """`` <n> x <n> <unit>\\n``, `` <n> <unit>\\n`` or `` none\\n`` over the part's words."""
-        builder = GrammarBuilder()
-        builder.enum("num", numbers)
-        builder.enum("unit", units)
-        builder.add("root", '" " (num " x " num " " unit | num " " unit | "none") "\\n"')
-        return builder.render()
-
     def relations_grammar(self, parts: int, kinds: Sequence[str] | None = None) -> str:
         """`` 1 next to 2, 3 between 1 and 2\\n`` over part numbers and relation kinds, or none.
 

@@ -96,6 +96,8 @@ __all__ = ["MAX_PROMPT_TOKENS", "LlmResolver", "load_examples", "render_examples
 DATA_DIR = Path(__file__).resolve().parent / "data" / "llm"
 #: Longest request the strategy reads, in model tokens.
 MAX_PROMPT_TOKENS = 160
+#: Most fields one scene may hold (the limit of :class:`SceneIntent`).
+MAX_FIELDS = 64
 _STATE_KEYS = ("stage", "season", "health")
 _PUNCTUATION = ".,;:!?()\"'"
 _SOUTHERN = {"Spring": "Fall", "Summer": "Winter", "Fall": "Spring", "Winter": "Summer"}
@@ -184,7 +186,7 @@ class _Evidence:
     counts: list[int] = field(default_factory=list)
     distinct: bool = False
     all_words: bool = False
-    numbers: list[str] = field(default_factory=list)
+    sizes: list[str] = field(default_factory=list)  # "50 x 100 m", "2 ha"
     units: dict[str, tuple[str, float]] = field(default_factory=dict)  # word -> (kind, factor)
     relations: list[str] = field(default_factory=list)
     hemisphere: tuple[str, float] | None = None
@@ -207,6 +209,9 @@ class _Evidence:
             values.append(value)
 
 
+_FIELD_SENSES = ("crop", "variety", "category", "plot", "other_crop")
+
+
 def _collect(lexicon: Lexicon, text: str, hemisphere: Hemisphere | None = None) -> _Evidence:
     """Candidates for one run of words (exact lexicon matches, then typo matches)."""
     from agrirecipe.resolve._lexicon import tokenize, vocabulary
@@ -215,26 +220,95 @@ def _collect(lexicon: Lexicon, text: str, hemisphere: Hemisphere | None = None) 
     cues = {str(word) for word in vocab["month_cues"]}
     evidence = _Evidence()
     items = lexicon.tag(tokenize(text))
-    for index, item in enumerate(items):
+    readings: list[Sequence[Any]] = []
+    for item in items:
         senses: Sequence[Any] = item.senses
         if not senses and len(item.norm) >= 4 and item.norm.isalpha():
             match = lexicon.fuzzy(item.norm)
             if match is not None:
                 senses = match[2]
-                evidence.weak_varieties |= {
-                    (str(s.crop), str(s.value)) for s in senses if s.kind == "variety"
-                }
                 evidence.candidates.append(
                     Candidate(value=match[0], score=match[1], source="fuzzy")
                 )
+        readings.append(senses)
+    for index, (item, senses) in enumerate(zip(items, readings, strict=True)):
         previous = items[index - 1] if index else None
         negated = previous is not None and previous.has("negation")
         after_cue = previous is not None and previous.norm in cues
-        _add_senses(evidence, item, senses, negated=negated, after_cue=after_cue)
+        in_size = item.has("dimension_joiner") and previous is not None and previous.has("number")
+        kept = [s for s in senses if not (in_size and s.kind == "relation")]
+        _add_senses(evidence, item, kept, negated=negated, after_cue=after_cue)
+        if item.norm in (":", ".", ";"):
+            evidence.counts.clear()  # "three fields: ..." announces the fields that follow
+        elif _counts_fields(items, readings, index):
+            evidence.counts += [
+                int(s.value) for s in senses if s.kind in ("number", "quantity") and s.value > 1
+            ]
+            if item.norm.isdigit() and int(item.norm) > 1:
+                evidence.counts.append(int(item.norm))
+    _promote_weak_varieties(evidence, items, readings)
+    evidence.sizes = _size_options(items, readings)
     for month in evidence.states.pop("month", []):
         season = _month_season(int(month), hemisphere, vocab["month_seasons_north"])
         evidence.add_state("season", season)
     return evidence
+
+
+def _counts_fields(items: Sequence[Item], readings: Sequence[Sequence[Any]], index: int) -> bool:
+    """Whether the number at ``index`` counts fields ("two fields", "3 tomato plots")."""
+    item = items[index]
+    if not (item.norm.isdigit() or item.has("number", "quantity")):
+        return False
+    for later in range(index + 1, min(index + 4, len(items))):
+        kinds = {s.kind for s in readings[later]}
+        if kinds & set(_FIELD_SENSES):
+            return True
+        if kinds & {"area_unit", "length_unit", "number", "conjunction", "separator", "relation"}:
+            return False
+    return False
+
+
+def _promote_weak_varieties(
+    evidence: _Evidence, items: Sequence[Item], readings: Sequence[Sequence[Any]]
+) -> None:
+    """A weak variety word next to its crop's name is a variety ("Sonata strawberries")."""
+    for index, senses in enumerate(readings):
+        for sense in senses:
+            if sense.kind != "variety" or (sense.crop, sense.value) not in evidence.weak_varieties:
+                continue
+            neighbours = [readings[j] for j in (index - 1, index + 1) if 0 <= j < len(items)]
+            if any(s.kind == "crop" and s.value == sense.crop for n in neighbours for s in n):
+                evidence.weak_varieties.discard((sense.crop, sense.value))
+
+
+def _size_options(items: Sequence[Item], readings: Sequence[Sequence[Any]]) -> list[str]:
+    """The sizes the words can state: ``"50 x 100 m"`` or ``"2 ha"``, numbers as written."""
+    options: list[str] = []
+    pending: list[str] = []
+    sided: tuple[str, str] | None = None  # "100 m" waiting for "by 200 m"
+    for item, senses in zip(items, readings, strict=True):
+        kinds = {s.kind: s for s in senses}
+        if item.norm[:1].isdigit():
+            pending.append(item.norm)
+        elif "fraction" in kinds:
+            pending.append(f"{float(kinds['fraction'].value):g}")
+        elif "number" in kinds and item.norm not in ("a", "an") and item.norm.isalpha():
+            pending.append(str(kinds["number"].value))
+        elif "area_unit" in kinds and pending:
+            options.append(f"{pending[-1]} {item.norm}")
+            pending, sided = [], None
+        elif "length_unit" in kinds and pending:
+            if len(pending) >= 2:
+                options.append(f"{pending[-2]} x {pending[-1]} {item.norm}")
+            elif sided is not None and sided[1] == item.norm:
+                options.append(f"{sided[0]} x {pending[-1]} {item.norm}")
+                sided = None
+            else:
+                sided = (pending[-1], item.norm)
+            pending = []
+        elif not (kinds.keys() & {"dimension_joiner", "filler"}):
+            pending = []
+    return list(dict.fromkeys(options))
 
 
 def _month_season(month: int, hemisphere: Hemisphere | None, table: Mapping[str, Any]) -> str:
@@ -275,8 +349,6 @@ def _add_senses(
             evidence.add_state(
                 "health", "Healthy" if negated and sense.value == "Ill" else sense.value
             )
-        elif kind in ("number", "quantity") and item.norm.isalpha() and 1 < int(sense.value) < 10:
-            evidence.counts.append(int(sense.value))
         elif kind == "distinct":
             evidence.distinct = True
         elif kind == "all":
@@ -289,8 +361,6 @@ def _add_senses(
             evidence.hemisphere = sense.value
         elif kind == "place":
             evidence.place = sense.value
-    if item.norm[:1].isdigit():
-        evidence.numbers.append(item.norm)
 
 
 # --- parts of the request --------------------------------------------------------
@@ -341,21 +411,49 @@ def _parse_parts(answer: str, words: Sequence[str], request: str) -> list[_Part]
     return parts
 
 
-@dataclass(frozen=True, slots=True)
-class _Mention:
-    """Words naming a plant: a crop, one of its varieties, or a typo of either."""
+@dataclass(slots=True)
+class _Group:
+    """Consecutive words naming one field: a plant and/or a kind of field, in prompt words."""
 
     first: int
     last: int
-    crop: str
-    variety: str | None
+    crop: str | None = None
+    variety: str | None = None
+    other: str | None = None
+    category: str | None = None
+    plot: bool = False
+    plot_options: tuple[str, ...] = ()
+    weak_only: bool = True
+    after_join: bool = False
+    joins: list[int] = field(default_factory=list)
+
+    @property
+    def names_a_plant(self) -> bool:
+        return self.crop is not None or self.other is not None
 
 
-def _mentions(lexicon: Lexicon, request: str) -> tuple[list[_Mention], list[int]]:
-    """Every plant the request names, in order, and the words that join fields.
+@dataclass(frozen=True, slots=True)
+class _Mention:
+    """One lexicon item that names a plant or a kind of field."""
 
-    A joining word ("and", a comma, "next to") is where a part naming two
-    plants is best split.
+    first: int
+    last: int
+    crop: str | None = None
+    variety: str | None = None
+    weak: bool = False
+    other: str | None = None
+    category: str | None = None
+    plot: bool = False
+    plot_options: tuple[str, ...] = ()
+
+
+def _mentions(
+    lexicon: Lexicon, request: str, hierarchy: Hierarchy
+) -> tuple[list[_Mention], list[int]]:
+    """What names a field in the request, in order, and the words that join fields.
+
+    A joining word ("and", a comma, "next to") is where two fields' words are
+    best split.
     """
     from agrirecipe.resolve._lexicon import tokenize
 
@@ -369,117 +467,175 @@ def _mentions(lexicon: Lexicon, request: str) -> tuple[list[_Mention], list[int]
 
     found: list[_Mention] = []
     joins: list[int] = []
-    for item in lexicon.tag(tokenize(request)):
-        if item.has("conjunction", "separator", "relation"):
-            joins.append(word_at(item.start))
+    items = lexicon.tag(tokenize(request))
+    for index, item in enumerate(items):
+        first, last = word_at(item.start), word_at(item.end - 1)
+        previous = items[index - 1] if index else None
+        in_size = item.has("dimension_joiner") and previous is not None and previous.has("number")
+        if item.has("conjunction", "separator") or (item.has("relation") and not in_size):
+            joins.append(first if item.norm[:1].isalnum() else max(0, first))
+            continue
         senses: Sequence[Any] = item.senses
         if not senses and len(item.norm) >= 4 and item.norm.isalpha():
             match = lexicon.fuzzy(item.norm)
             senses = match[2] if match is not None else ()
         crops = [s.value for s in senses if s.kind == "crop"]
         varieties = [s for s in senses if s.kind == "variety" and not (crops and s.weak)]
-        first, last = word_at(item.start), word_at(item.end - 1)
         if crops:
-            found.append(_Mention(first, last, str(crops[0]), None))
+            found.append(_Mention(first, last, crop=str(crops[0])))
         elif varieties:
-            found.append(_Mention(first, last, str(varieties[0].crop), str(varieties[0].value)))
+            sense = varieties[0]
+            found.append(
+                _Mention(
+                    first, last, crop=str(sense.crop), variety=str(sense.value), weak=sense.weak
+                )
+            )
+        elif any(s.kind == "other_crop" for s in senses):
+            other = next(s.value for s in senses if s.kind == "other_crop")
+            found.append(_Mention(first, last, other=str(other.name)))
+        elif any(s.kind == "category" for s in senses):
+            category = next(str(s.value) for s in senses if s.kind == "category")
+            found.append(_Mention(first, last, category=category))
+        elif any(s.kind == "plot" for s in senses):
+            spec = next(s.value for s in senses if s.kind == "plot")
+            options = tuple(spec["options"])
+            plot_category: str | None = spec["category"]
+            if plot_category is None and options:
+                categories = {hierarchy.crops[c].category for c in options}
+                plot_category = next(iter(categories)) if len(categories) == 1 else None
+            found.append(
+                _Mention(first, last, plot=True, plot_options=options, category=plot_category)
+            )
     return found, joins
 
 
-def _groups(mentions: Sequence[_Mention]) -> list[list[_Mention]]:
-    """Consecutive mentions of one crop, with at most one variety, name one field."""
-    groups: list[list[_Mention]] = []
+def _fits(group: _Group, mention: _Mention, hierarchy: Hierarchy) -> bool:
+    """Whether ``mention`` can describe the same field as ``group``."""
+    if mention.other is not None or group.other is not None:
+        return False
+    if mention.crop is not None:
+        if group.crop is not None and group.crop != mention.crop:
+            return False
+        if mention.variety and group.variety and mention.variety != group.variety:
+            return False
+        category = hierarchy.crops[mention.crop].category
+        if group.category is not None and group.category != category:
+            return False
+        return not group.plot_options or mention.crop in group.plot_options
+    if mention.plot:
+        if group.plot:
+            return False
+        if group.crop is not None and mention.plot_options:
+            return group.crop in mention.plot_options
+        return group.category is None or mention.category in (None, group.category)
+    # a category word
+    if group.category is not None and group.category != mention.category:
+        return False
+    return group.crop is None or hierarchy.crops[group.crop].category == mention.category
+
+
+def _add(group: _Group, mention: _Mention) -> None:
+    group.last = mention.last
+    group.crop = group.crop or mention.crop
+    group.variety = group.variety or mention.variety
+    group.other = group.other or mention.other
+    group.category = group.category or mention.category
+    group.plot = group.plot or mention.plot
+    group.plot_options = group.plot_options or mention.plot_options
+    group.weak_only = group.weak_only and (mention.crop is None or mention.weak)
+
+
+def _groups(
+    mentions: Sequence[_Mention], joins: Sequence[int], hierarchy: Hierarchy
+) -> list[_Group]:
+    """Mentions of one field, grouped: a new group starts where a mention cannot fit.
+
+    A kind of field named after a joining word starts a group of its own ("...
+    and a 1 ha field of carrots"); one that no plant follows and that fits the
+    group before is read as more words about that field ("bananas, mature fruit").
+    """
+    groups: list[_Group] = []
     for mention in mentions:
         current = groups[-1] if groups else None
-        if current is not None and current[0].crop == mention.crop:
-            named = {m.variety for m in current if m.variety is not None}
-            if mention.variety is None or not named or mention.variety in named:
-                current.append(mention)
-                continue
-        groups.append([mention])
-    return groups
+        after_join = current is not None and any(current.last < j < mention.first for j in joins)
+        generic = mention.crop is None and mention.other is None
+        if (
+            current is not None
+            and _fits(current, mention, hierarchy)
+            and not (after_join and generic and current.names_a_plant)
+        ):
+            _add(current, mention)
+            continue
+        group = _Group(mention.first, mention.first, after_join=after_join)
+        _add(group, mention)
+        groups.append(group)
+    merged: list[_Group] = []
+    for group in groups:
+        previous = merged[-1] if merged else None
+        if (
+            previous is not None
+            and group.after_join
+            and not group.names_a_plant
+            and previous.names_a_plant
+            and _fits(previous, _Mention(0, 0, category=group.category), hierarchy)
+            and not (group.plot and previous.plot)
+        ):
+            previous.last = group.last
+            continue
+        merged.append(group)
+    # A weak reading alone ("golden" in "wheat, golden and ripe") names no field
+    # when another field is named.
+    strong = [g for g in merged if not (g.crop is not None and g.weak_only)]
+    return strong if strong else merged
 
 
 def _repair_parts(
-    parts: Sequence[_Part], words: Sequence[str], request: str, lexicon: Lexicon
+    parts: Sequence[_Part],
+    words: Sequence[str],
+    request: str,
+    lexicon: Lexicon,
+    hierarchy: Hierarchy,
 ) -> tuple[list[_Part], list[_Part], list[str]]:
-    """Deterministic checks of the model's decomposition, and the repairs they imply.
+    """Check the model's decomposition against the fields the words name; repair it.
 
-    Returns the field parts, the shared parts ("all in autumn", read with every
-    field) and a description of each repair. Afterwards every field part holds
-    one group of plant mentions, or none for a generic field ("an orchard").
+    Every part must hold exactly one field's words. The model's boundaries are
+    kept where they fall between two fields (that is where it decides which
+    field the words in between describe); elsewhere a part is split at the
+    first joining word. Returns the field parts, the shared parts ("..., all
+    in autumn", read with every field) and a description of each repair.
     """
+    mentions, joins = _mentions(lexicon, request, hierarchy)
+    groups = _groups(mentions, joins, hierarchy)
+    if not groups:
+        return [], [], []
+    model_ends = {p.last for p in parts}
+    cuts: list[int] = []  # index of the first word of each part after the first
     repairs: list[str] = []
-    mentions, joins = _mentions(lexicon, request)
-    groups = _groups(mentions)
-
-    def groups_in(first: int, last: int) -> list[list[_Mention]]:
-        return [g for g in groups if first <= g[0].first and g[-1].last <= last]
-
-    # A part naming several plants is split between them.
-    spans: list[list[int]] = []
-    for part in parts:
-        first = part.first
-        inside = groups_in(part.first, part.last)
-        for left, right in itertools.pairwise(inside):
-            between = [j for j in joins if left[-1].last < j < right[0].first]
-            cut = between[0] if between else left[-1].last + 1
-            spans.append([first, cut - 1])
-            first = cut
-        spans.append([first, part.last])
-    if len(spans) > len(parts):
-        repairs.append("parts naming several plants were split between them")
-    # A plant no part covers joins the part next to it when that part names no
-    # other crop, or becomes a part of its own.
-    for group in groups:
-        first, last = group[0].first, group[-1].last
-        if any(a <= first and last <= b for a, b in spans):
+    for left, right in itertools.pairwise(groups):
+        chosen = [e + 1 for e in model_ends if left.last <= e < right.first]
+        if chosen:
+            cuts.append(min(chosen))
             continue
-        touching = [s for s in spans if s[0] <= last + 1 and first - 1 <= s[1]]
-        target = next(
-            (s for s in touching if all(g[0].crop == group[0].crop for g in groups_in(*s))), None
-        )
-        words_text = " ".join(words[first : last + 1])
-        if target is not None:
-            target[0], target[1] = min(target[0], first), max(target[1], last)
-            repairs.append(f"{words_text!r} joined the part next to it")
-        else:
-            spans.append([first, last])
-            repairs.append(f"{words_text!r} names a plant no part covered; made it a part")
-    spans.sort()
-    # Parts naming neither a plant nor a field: shared ("all in autumn") or merged.
-    kept: list[list[int]] = []
-    leading: list[int] | None = None
+        between = [j for j in joins if left.last < j < right.first]
+        cuts.append(between[0] if between else left.last + 1)
+        repairs.append(f"split between {words[left.last]!r} and {words[right.first]!r}")
+    bounds = [0, *cuts, len(words)]
+    spans = [[bounds[i], bounds[i + 1] - 1] for i in range(len(groups))]
+    # Words after the last field, after a comma or with "all", describe every field.
     shared: list[_Part] = []
-    for span in spans:
-        part = _make_part(span[0], span[1], words, request)
-        evidence = _collect(lexicon, part.raw)
-        if evidence.names_a_field:
-            if leading is not None and not kept:
-                span[0] = min(span[0], leading[0])
-                leading = None
-            kept.append(span)
-        elif evidence.all_words:
-            shared.append(part)
-            repairs.append(f"{part.text!r} applies to every field")
-        elif kept:
-            kept[-1][1] = max(kept[-1][1], span[1])
-            repairs.append(f"{part.text!r} merged into the part before it")
-        else:
-            leading = span if leading is None else [leading[0], span[1]]
-            repairs.append(f"{part.text!r} merged into the part after it")
-    if not kept:
-        whole = _make_part(0, len(words) - 1, words, request)
-        if _collect(lexicon, whole.raw).names_a_field:
-            repairs.append("the model found no field, but the request names a crop or field")
-            kept, shared = [[0, len(words) - 1]], []
-    merged: list[list[int]] = []
-    for span in sorted(kept):
-        if merged and span[0] <= merged[-1][1]:
-            merged[-1][1] = max(merged[-1][1], span[1])
-        else:
-            merged.append(span)
-    return [_make_part(a, b, words, request) for a, b in merged], shared, repairs
+    tail_joins = [j for j in joins if j > groups[-1].last]
+    if len(groups) > 1 and tail_joins:
+        start = tail_joins[0]
+        tail = _make_part(start, len(words) - 1, words, request) if start < len(words) else None
+        if tail is not None and _collect(lexicon, tail.raw).states:
+            spans[-1][1] = start - 1
+            shared.append(tail)
+            repairs.append(f"{tail.text!r} describes every field")
+    model = [(p.first, p.last) for p in parts]
+    final = [_make_part(a, b, words, request) for a, b in spans if a <= b]
+    if [(p.first, p.last) for p in final] != model and not repairs:
+        repairs.append("parts aligned with the fields the words name")
+    return final, shared, repairs
 
 
 # --- the record ------------------------------------------------------------------
@@ -635,7 +791,9 @@ class LlmResolver(Resolver):
                 detail="model parts: " + (" | ".join(p.text for p in model_parts) or NONE),
             )
         )
-        parts, shared, repairs = _repair_parts(model_parts, words, request, lexicon)
+        parts, shared, repairs = _repair_parts(
+            model_parts, words, request, lexicon, context.hierarchy
+        )
         trace += [TraceStep(stage="validate", subject="parts", detail=r) for r in repairs]
         if not parts:
             if scene.other:
@@ -650,12 +808,18 @@ class LlmResolver(Resolver):
         record.write("Parts: " + " | ".join(p.text for p in shown) + "\n")
         suffix = "".join(f" + {p.text}" for p in shared)
         shared_raw = " ".join(p.raw for p in shared)
+        _check_adjacent_names(lexicon, request)
 
         # 3-5. one subquery per part
         fields: list[FieldIntent] = []
         first_field: list[int] = []
+        common = _collect(lexicon, shared_raw, hemisphere) if shared_raw else None
         for number, part in enumerate(parts, start=1):
-            evidence = _collect(lexicon, f"{part.raw} {shared_raw}".strip(), hemisphere)
+            evidence = _collect(lexicon, part.raw, hemisphere)
+            _check_states(evidence, part)
+            if common is not None:
+                for key, stated in common.states.items():
+                    evidence.states.setdefault(key, list(stated))  # the part's own words win
             record.write(f"Part {number}: {part.text}{suffix}\n")
             values = self._read_part(record, grammars, part, evidence)
             trace.append(
@@ -675,6 +839,13 @@ class LlmResolver(Resolver):
             )
             first_field.append(len(fields))
             fields += _field_intents(values, part, evidence, context.hierarchy)
+            if len(fields) > MAX_FIELDS:
+                raise PromptError(
+                    f"the request asks for {len(fields)} or more fields; a scene holds at most "
+                    f"{MAX_FIELDS}",
+                    stage="resolve",
+                    hint="ask for fewer fields",
+                )
 
         relations: list[RelationIntent] = []
         if len(parts) > 1:
@@ -688,6 +859,7 @@ class LlmResolver(Resolver):
                 record.write(f"Relations:{answer}")
                 relations = _parse_relations(answer, first_field, grammars.relation_kinds)
                 trace.append(TraceStep(stage="llm", subject="relations", detail=answer.strip()))
+            relations += _between_counted(scene, relations, first_field, len(fields))
 
         seasons = {f.season for f in fields if f.season is not None}
         return SceneIntent(
@@ -745,15 +917,8 @@ class LlmResolver(Resolver):
                 key.capitalize(), options, grammars.state_grammar(key, options)
             )
         if re.search(r"\d", part.text):
-            numbers = list(dict.fromkeys(evidence.numbers))
-            if numbers and evidence.units:
-                answer = record.answer(
-                    "Size:", grammars.size_grammar(numbers, list(evidence.units)), max_tokens=24
-                )
-                record.write(f"Size:{answer}")
-                values["size"] = answer.strip()
-            else:
-                record.write(f"Size: {NONE}\n")
+            options = evidence.sizes if self.narrow else [*evidence.sizes, NONE]
+            values["size"] = record.choose("Size", options or [NONE])
         return values
 
     def _crop_options(self, grammars: HierarchyGrammars, evidence: _Evidence) -> list[str]:
@@ -917,6 +1082,63 @@ def _parse_relations(
                 )
             )
     return relations
+
+
+def _between_counted(
+    scene: _Evidence,
+    relations: Sequence[RelationIntent],
+    first_field: Sequence[int],
+    field_count: int,
+) -> list[RelationIntent]:
+    """ "A between two fields of B": one part counted twice holds both sides."""
+    if "between" not in scene.relations or any(r.kind == "between" for r in relations):
+        return []
+    if len(first_field) != 2:
+        return []
+    ends = [*first_field[1:], field_count]
+    sizes = [end - start for start, end in zip(first_field, ends, strict=True)]
+    if sorted(sizes) != [1, 2]:
+        return []
+    single = first_field[sizes.index(1)]
+    pair = first_field[sizes.index(2)]
+    return [RelationIntent(kind="between", subject=single, objects=(pair, pair + 1))]
+
+
+def _check_states(evidence: _Evidence, part: _Part) -> None:
+    """One field cannot be stated in two stages, seasons or health states at once."""
+    for key, values in evidence.states.items():
+        if len(values) > 1:
+            raise PromptError(
+                f"{part.raw!r} states two different {key} values: {' and '.join(values)}",
+                stage="resolve",
+                hint=f"state one {key} per field",
+            )
+
+
+def _check_adjacent_names(lexicon: Lexicon, request: str) -> None:
+    """A variety written right before another crop's name ("Granny Smith bananas")."""
+    from agrirecipe.resolve._lexicon import tokenize
+
+    items = lexicon.tag(tokenize(request))
+    for left, right in itertools.pairwise(items):
+        if request[left.end : right.start].strip():
+            continue
+        varieties = [s for s in left.senses if s.kind == "variety" and not s.weak]
+        crops = {s.value for s in right.senses if s.kind == "crop"}
+        if (
+            varieties
+            and crops
+            and not left.has("crop")
+            and not any(v.crop in crops for v in varieties)
+        ):
+            variety = varieties[0]
+            crop = sorted(crops)[0]
+            raise PromptError(
+                f"{left.raw!r} is a variety of {variety.crop}, not of {crop} "
+                f"(in {left.raw + ' ' + right.raw!r})",
+                stage="resolve",
+                hint=f"name a {crop} variety, or ask for {variety.value} {variety.crop}",
+            )
 
 
 def _check_contradiction(crop: str, variety: str, evidence: _Evidence, part: _Part) -> None:
