@@ -263,7 +263,7 @@ def build_recipe(
         )
     except ValidationError as exc:
         raise PromptError(
-            _first_message(exc),
+            _first_message(exc).replace(" (make fields smaller or raise max_plants)", ""),
             stage="validate",
             hint="ask for fewer or smaller fields",
         ) from exc
@@ -289,9 +289,13 @@ def build_recipe(
 
 
 def _first_message(exc: ValidationError) -> str:
+    """The first problem in words, without pydantic's prefix or the model-internal path."""
     error = exc.errors()[0]
-    message = str(error["msg"])
-    return message.removeprefix("Value error, ")
+    message = str(error["msg"]).removeprefix("Value error, ")
+    path, sep, rest = message.partition(": ")
+    if sep and re.fullmatch(r"[\w\[\].]+", path):
+        message = rest
+    return message
 
 
 def _validate(intent: SceneIntent, context: ResolveContext) -> None:
