@@ -129,3 +129,47 @@ def test_hybrid_reads_the_language_like_rules(hybrid: HybridResolver) -> None:
 def test_auto_is_hybrid_when_the_embedding_stack_is_installed() -> None:
     assert get_resolver("auto").name == "hybrid"
     assert get_resolver("auto") is get_resolver("hybrid")  # one instance per process
+
+
+# Each language feature of issue 3 once more, read with retrieval instead of the lexicon.
+_FEATURES = [
+    ("an apple orchard next to two carrot fields", ["Apple", "Carrot", "Carrot"], 2),
+    ("three tomato fields with blight", ["Tomato"] * 3, 0),
+    ("Two orchards: one of Gala, one of Fuji", ["Apple", "Apple"], 0),
+    ("a pear orchard and a cherry orchard, all in autumn", ["Pear", "Cherry"], 0),
+    ("a 2 ha Granny Smith orchard north of a 50 by 100 m field of Bintje potatoes", None, 1),
+    ("a wheat field between an apple orchard and a pear orchard", ["Wheat", "Apple", "Pear"], 1),
+    ("Cripps Pink apples, ripe, in October", ["Apple"], 0),
+    ("blood oranges in bloom", ["Orange"], 0),
+]
+
+
+@pytest.mark.parametrize(("prompt", "crops", "relations"), _FEATURES)
+def test_language_features_with_retrieval(
+    embedding: EmbeddingResolver, prompt: str, crops: list[str] | None, relations: int
+) -> None:
+    ours = resolve(prompt, resolver=embedding).recipe
+    rules = resolve(prompt, resolver="rules").recipe
+    assert [f.model_dump(exclude={"agronomy"}) for f in ours.fields] == [
+        f.model_dump(exclude={"agronomy"}) for f in rules.fields
+    ]
+    if crops is not None:
+        assert [f.crop for f in ours.fields] == crops
+    assert len(ours.relations) == relations
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_generic_requests_with_retrieval(embedding: EmbeddingResolver, seed: int) -> None:
+    recipe = resolve("a mixed farm with three different vegetables", resolver=embedding, seed=seed)
+    assert len({f.crop for f in recipe.recipe.fields}) == 3
+    assert {f.category for f in recipe.recipe.fields} == {"Vegetables"}
+
+
+@pytest.mark.parametrize(
+    "prompt", ["build a parking lot", "", "a healthy diseased orchard", "a mango plantation"]
+)
+def test_invalid_prompts_with_retrieval(embedding: EmbeddingResolver, prompt: str) -> None:
+    from agrirecipe import PromptError
+
+    with pytest.raises(PromptError):
+        resolve(prompt, resolver=embedding)
