@@ -30,7 +30,7 @@ def test_eval_prints_the_tables_and_writes_the_report(
     )
     out, err = capsys.readouterr()
     assert code == 0, err
-    assert "### Table I" in out and "### Latency" in out and "### Table II" in out
+    assert "### Table I" in out and "### Table III" in out and "### Table II" in out
     assert "| Prompt type (n) | Paper: Few-shot / Finetuning / RAG / Hybrid | rules |" in out
     assert "Single-field detailed (2), accuracy" in out  # --limit 6 spreads over the types
     assert "100/100/97/98 %" in out
