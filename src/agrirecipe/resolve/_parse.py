@@ -16,6 +16,12 @@ from typing import Any, cast
 
 from agrirecipe._errors import PromptError, UnknownCropError
 from agrirecipe.recipe import HealthState, Season, Stage
+from agrirecipe.resolve._attributes import (
+    health_of,
+    single_size,
+    single_value,
+    values_of,
+)
 from agrirecipe.resolve._decompose import (
     Clause,
     Mention,
@@ -27,13 +33,12 @@ from agrirecipe.resolve._intent import (
     Candidate,
     FieldIntent,
     Hemisphere,
-    RelationIntent,
     ResolveContext,
     SceneIntent,
-    SizeIntent,
     TraceStep,
 )
 from agrirecipe.resolve._lexicon import Item, Lexicon, OtherCrop, tokenize, vocabulary
+from agrirecipe.resolve._relations import coordinated, read_relations
 from agrirecipe.resolve._scan import assign_roles, read_latitude, read_sizes
 from agrirecipe.resolve._structure import (
     apply_corrections,
@@ -131,7 +136,10 @@ class PromptReader:
             mentions = self._container_fields(items, clauses)
         self._reject_unknown_names(items, mentions)
         fields = self._expand(mentions)
-        relations = self._relations(clauses, mentions, fields)
+        members: dict[int, list[int]] = {}
+        for index, member in enumerate(fields):
+            members.setdefault(id(member.mention), []).append(index)
+        relations = read_relations(clauses, members, self.trace, self.warnings)
         scene_season = self._apply_scene_items(scene_items, fields, hemisphere)
         intents = [self._field_intent(f, hemisphere) for f in fields]
         for index, intent in enumerate(intents):
@@ -291,7 +299,7 @@ class PromptReader:
             elif refined is not None and refined.refinements:
                 targets = [refined.refinements[-1]]
             else:
-                targets = _coordinated(clauses, position)
+                targets = coordinated(clauses, position)
             for target in targets:
                 target.items.extend(seasons + others)
         return scene
@@ -387,7 +395,7 @@ class PromptReader:
         if not scene_items:
             return None
         says_all = any(i.role == "all" for i in scene_items)
-        seasons = _values(scene_items, ("season", "month"), hemisphere)
+        seasons = values_of(scene_items, ("season", "month"), hemisphere)
         if len(set(seasons)) > 1:
             raise PromptError(
                 "the scene is said to be in " + " and ".join(sorted(set(seasons))),
@@ -401,7 +409,7 @@ class PromptReader:
                     for member in fields:
                         member.items.append(item)
             for member in fields:
-                own = _values(member.items, ("season", "month"), hemisphere)
+                own = values_of(member.items, ("season", "month"), hemisphere)
                 if own and seasons and own[0] != seasons[0]:
                     raise PromptError(
                         f"{member.mention.text!r} is said to be in {own[0]} but all fields "
@@ -416,13 +424,13 @@ class PromptReader:
         for sub in member.mention.refinements or []:
             if any(item in member.items for item in sub.items):
                 text = f"{text} ({sub.text})"
-        stage: Stage | None = _single(member.items, ("stage",), "stage", text, hemisphere)  # type: ignore[assignment]
-        season: Season | None = _single(
+        stage: Stage | None = single_value(member.items, ("stage",), "stage", text, hemisphere)  # type: ignore[assignment]
+        season: Season | None = single_value(
             member.items, ("season", "month"), "season", text, hemisphere
         )  # type: ignore[assignment]
-        health: HealthState | None = _health(member.items, text)
+        health: HealthState | None = health_of(member.items, text)
         sizes = [item.data["size"] for item in member.items if item.role == "size"]
-        size = _single_size(sizes, text)
+        size = single_size(sizes, text)
         interpretations = member.interpretations or []
         strong = [i for i in interpretations if not i[2]] or []
         crop = variety = None
@@ -481,142 +489,8 @@ class PromptReader:
             )
         )
 
-    # --- relations ---
-
-    def _relations(
-        self, clauses: Sequence[Clause], mentions: Sequence[Mention], fields: Sequence[_Field]
-    ) -> list[RelationIntent]:
-        members: dict[int, list[int]] = {}
-        for index, member in enumerate(fields):
-            members.setdefault(id(member.mention), []).append(index)
-        relations: list[RelationIntent] = []
-        for position, clause in enumerate(clauses):
-            link = clause.link
-            if link is None or link.role not in ("relation", "between", "trailer"):
-                continue
-            before = [m for c in clauses[:position] for m in c.mentions]
-            after = [m for c in clauses[position:] for m in c.mentions]
-            pronoun = bool(clause.items) and clause.items[0].norm in _PRONOUNS
-            if link.role == "trailer" and link.data.get("value") == "next_to":
-                group = _coordinated(clauses, position)
-                if len(group) > 2:
-                    # "potatoes, onions and cabbages side by side": a row, each beside the next.
-                    for first, second in zip(group[1:], group, strict=False):
-                        relations.extend(self._pair("next_to", first, (second,), members, link))
-                    continue
-            pairs = self._relation_mentions(link, before, after, pronoun=pronoun)
-            if pairs is None:
-                self.warnings.append(f"ignored {link.raw!r}: it needs a field on each side")
-                continue
-            kind, subject, objects = pairs
-            relations.extend(self._pair(kind, subject, objects, members, link))
-        return relations
-
-    def _pair(
-        self,
-        kind: Any,
-        subject: Mention,
-        objects: tuple[Mention, ...],
-        members: dict[int, list[int]],
-        link: Item,
-    ) -> list[RelationIntent]:
-        """Field-level relations for a relation between mentions (plural ones expand)."""
-        subject_fields = members.get(id(subject), [])
-        object_fields = [members.get(id(o), []) for o in objects]
-        if not subject_fields or not all(object_fields):
-            return []
-        self.trace.append(
-            TraceStep(
-                stage="decompose",
-                subject=link.raw,
-                detail=f"{subject.text!r} {kind} " + " and ".join(repr(o.text) for o in objects),
-            )
-        )
-        if kind == "between":
-            if objects[0] is objects[1]:
-                pair = (object_fields[0][0], object_fields[0][1])
-            else:
-                pair = (object_fields[0][0], object_fields[1][0])
-            return [
-                RelationIntent(
-                    kind="between", subject=subject_fields[0], objects=pair, text=link.raw
-                )
-            ]
-        pairs = [(s, o) for s in subject_fields for o in object_fields[0]]
-        if kind == "next_to" and len(pairs) > 2:
-            # Groups side by side: one field can touch at most two in a row, so
-            # "two orchards next to three fields" means the groups touch.
-            pairs = pairs[:1]
-        return [RelationIntent(kind=kind, subject=s, objects=(o,), text=link.raw) for s, o in pairs]
-
-    @staticmethod
-    def _relation_mentions(
-        link: Item, before: Sequence[Mention], after: Sequence[Mention], *, pronoun: bool
-    ) -> tuple[Any, Mention, tuple[Mention, ...]] | None:
-        kind = link.data.get("value", "between") if link.role != "between" else "between"
-        if pronoun and before and after:
-            # "two potato fields and between them / north of them a wheat field": the
-            # pronoun is the object, named before; the subject comes after.
-            objects = (before[-1],) if kind != "between" else (before[-1], before[-1])
-            if kind != "between" or (before[-1].count or 1) >= 2:
-                return kind, after[0], objects
-        if link.role == "between":
-            if after and before and (after[0].count or 1) >= 2:
-                return "between", before[-1], (after[0], after[0])
-            if len(after) < 2:
-                return None
-            if before:
-                return "between", before[-1], (after[0], after[1])
-            if len(after) >= 3:
-                return "between", after[2], (after[0], after[1])
-            return None
-        if link.role == "trailer":
-            if len(before) >= 2 and before[-1].clause == before[-2].clause:
-                return kind, before[-1], (before[-2],)
-            if before and after:
-                return kind, after[0], (before[-1],)
-            if len(before) >= 2:
-                return kind, before[-1], (before[-2],)
-            return None
-        if before and after:
-            return kind, before[-1], (after[0],)
-        if len(after) >= 2:
-            return kind, after[1], (after[0],)
-        if len(before) >= 2:
-            # "... with an onion field to the north of them": the object was named before.
-            return kind, before[-1], (before[-2],)
-        return None
-
 
 # --- helpers ---
-
-
-_PRONOUNS = frozenset({"it", "them", "those", "these", "they", "this", "that", "which"})
-
-
-def _coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:
-    """The mentions just before clause ``position``, with those listed with it.
-
-    "bananas and oranges, ripe": both are ripe; "apples next to carrots, ripe":
-    only the carrots.
-    """
-    index = position - 1
-    while index >= 0 and not clauses[index].mentions:
-        index -= 1
-    if index < 0:
-        return []
-    group = [clauses[index].mentions[-1]]
-    while index > 0 and clauses[index - 1].mentions and _listing(clauses[index].link):
-        index -= 1
-        group.append(clauses[index].mentions[-1])
-    return group
-
-
-def _listing(link: Item | None) -> bool:
-    """A link inside a list of fields: "and", or a comma (not a full stop or a relation)."""
-    if link is None:
-        return False
-    return link.role == "conjunction" or (link.role == "separator" and link.norm in (",", ";", "&"))
 
 
 def _word_before(items: Sequence[Item], index: int | None) -> Item | None:
@@ -639,82 +513,6 @@ def _by_spelling(word: str, names: Sequence[str], limit: int = 3) -> tuple[str, 
 
     matches = process.extract(word, list(names), scorer=fuzz.WRatio, limit=limit)
     return tuple(str(m[0]) for m in matches)
-
-
-def _month_season(month: int, hemisphere: Hemisphere | None) -> Season:
-    table = vocabulary()["month_seasons_north"]
-    season: Season = next(s for s, months in table.items() if month in months)
-    if hemisphere == "south":
-        season = {"Spring": "Fall", "Summer": "Winter", "Fall": "Spring", "Winter": "Summer"}[
-            season
-        ]  # type: ignore[assignment]
-    return season
-
-
-def _values(
-    items: Sequence[Item], roles: tuple[str, ...], hemisphere: Hemisphere | None
-) -> list[str]:
-    values: list[str] = []
-    for item in items:
-        if item.role not in roles:
-            continue
-        if item.role == "month":
-            values.append(_month_season(int(item.data["value"]), hemisphere))
-        else:
-            values.append(str(item.data["value"]))
-    return values
-
-
-def _single(
-    items: Sequence[Item],
-    roles: tuple[str, ...],
-    attribute: str,
-    text: str,
-    hemisphere: Hemisphere | None,
-) -> str | None:
-    values = _values(items, roles, hemisphere)
-    distinct = sorted(set(values))
-    if len(distinct) > 1:
-        words = [i.raw for i in items if i.role in roles]
-        raise PromptError(
-            f"{text!r} is said to be both " + " and ".join(distinct) + f" ({', '.join(words)})",
-            stage="resolve",
-            hint=f"a field has one {attribute}; describe different fields separately",
-        )
-    return distinct[0] if distinct else None
-
-
-def _health(items: Sequence[Item], text: str) -> HealthState | None:
-    ordered = sorted(items, key=lambda item: item.start)
-    values: list[HealthState] = []
-    for index, item in enumerate(ordered):
-        if item.role != "health":
-            continue
-        value: HealthState = item.data["value"]
-        negated = index > 0 and ordered[index - 1].role == "negation"
-        if negated:
-            value = "Healthy"
-        values.append(value)
-    distinct: list[HealthState] = sorted(set(values))
-    if len(distinct) > 1:
-        words = [i.raw for i in ordered if i.role == "health"]
-        raise PromptError(
-            f"{text!r} is said to be both healthy and ill ({', '.join(words)})",
-            stage="resolve",
-            hint="a field is either healthy or ill; describe different fields separately",
-        )
-    return distinct[0] if distinct else None
-
-
-def _single_size(sizes: Sequence[SizeIntent], text: str) -> SizeIntent | None:
-    unique = {(s.width_m, s.length_m, s.area_m2): s for s in sizes}
-    if len(unique) > 1:
-        raise PromptError(
-            f"{text!r} is given two sizes: " + " and ".join(s.text for s in unique.values()),
-            stage="resolve",
-            hint="give one size per field",
-        )
-    return next(iter(unique.values()), None)
 
 
 def _describe(intent: FieldIntent) -> str:

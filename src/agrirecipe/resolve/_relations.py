@@ -1,0 +1,155 @@
+"""Relations between fields: which mentions a relation word links, and in which direction.
+
+"X north of Y" relates the mentions on either side; "X with Y to the north"
+(a trailing direction) relates the last two named; "between" takes the two
+mentions after it (or two members of one plural mention); a pronoun ("north of
+them") points back at a mention already named; "side by side" after a list
+makes a row. Plural mentions expand to their fields.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any
+
+from agrirecipe.resolve._decompose import Clause, Mention
+from agrirecipe.resolve._intent import RelationIntent, TraceStep
+from agrirecipe.resolve._lexicon import Item
+
+__all__ = ["coordinated", "listing", "read_relations"]
+
+
+def read_relations(
+    clauses: Sequence[Clause],
+    members: dict[int, list[int]],
+    trace: list[TraceStep],
+    warnings: list[str],
+) -> list[RelationIntent]:
+    """Relations between fields from the relation words between mentions.
+
+    ``members`` maps ``id(mention)`` to the indexes of the fields it became.
+    """
+    relations: list[RelationIntent] = []
+    for position, clause in enumerate(clauses):
+        link = clause.link
+        if link is None or link.role not in ("relation", "between", "trailer"):
+            continue
+        before = [m for c in clauses[:position] for m in c.mentions]
+        after = [m for c in clauses[position:] for m in c.mentions]
+        pronoun = bool(clause.items) and clause.items[0].norm in _PRONOUNS
+        if link.role == "trailer" and link.data.get("value") == "next_to":
+            group = coordinated(clauses, position)
+            if len(group) > 2:
+                # "potatoes, onions and cabbages side by side": a row, each beside the next.
+                for first, second in zip(group[1:], group, strict=False):
+                    relations.extend(_pair("next_to", first, (second,), members, link, trace))
+                continue
+        pairs = _relation_mentions(link, before, after, pronoun=pronoun)
+        if pairs is None:
+            warnings.append(f"ignored {link.raw!r}: it needs a field on each side")
+            continue
+        kind, subject, objects = pairs
+        relations.extend(_pair(kind, subject, objects, members, link, trace))
+    return relations
+
+
+def _pair(
+    kind: Any,
+    subject: Mention,
+    objects: tuple[Mention, ...],
+    members: dict[int, list[int]],
+    link: Item,
+    trace: list[TraceStep],
+) -> list[RelationIntent]:
+    """Field-level relations for a relation between mentions (plural ones expand)."""
+    subject_fields = members.get(id(subject), [])
+    object_fields = [members.get(id(o), []) for o in objects]
+    if not subject_fields or not all(object_fields):
+        return []
+    trace.append(
+        TraceStep(
+            stage="decompose",
+            subject=link.raw,
+            detail=f"{subject.text!r} {kind} " + " and ".join(repr(o.text) for o in objects),
+        )
+    )
+    if kind == "between":
+        if objects[0] is objects[1]:
+            pair = (object_fields[0][0], object_fields[0][1])
+        else:
+            pair = (object_fields[0][0], object_fields[1][0])
+        return [
+            RelationIntent(kind="between", subject=subject_fields[0], objects=pair, text=link.raw)
+        ]
+    pairs = [(s, o) for s in subject_fields for o in object_fields[0]]
+    if kind == "next_to" and len(pairs) > 2:
+        # Groups side by side: one field can touch at most two in a row, so
+        # "two orchards next to three fields" means the groups touch.
+        pairs = pairs[:1]
+    return [RelationIntent(kind=kind, subject=s, objects=(o,), text=link.raw) for s, o in pairs]
+
+
+def _relation_mentions(
+    link: Item, before: Sequence[Mention], after: Sequence[Mention], *, pronoun: bool
+) -> tuple[Any, Mention, tuple[Mention, ...]] | None:
+    kind = link.data.get("value", "between") if link.role != "between" else "between"
+    if pronoun and before and after:
+        # "two potato fields and between them / north of them a wheat field": the
+        # pronoun is the object, named before; the subject comes after.
+        objects = (before[-1],) if kind != "between" else (before[-1], before[-1])
+        if kind != "between" or (before[-1].count or 1) >= 2:
+            return kind, after[0], objects
+    if link.role == "between":
+        if after and before and (after[0].count or 1) >= 2:
+            return "between", before[-1], (after[0], after[0])
+        if len(after) < 2:
+            return None
+        if before:
+            return "between", before[-1], (after[0], after[1])
+        if len(after) >= 3:
+            return "between", after[2], (after[0], after[1])
+        return None
+    if link.role == "trailer":
+        if len(before) >= 2 and before[-1].clause == before[-2].clause:
+            return kind, before[-1], (before[-2],)
+        if before and after:
+            return kind, after[0], (before[-1],)
+        if len(before) >= 2:
+            return kind, before[-1], (before[-2],)
+        return None
+    if before and after:
+        return kind, before[-1], (after[0],)
+    if len(after) >= 2:
+        return kind, after[1], (after[0],)
+    if len(before) >= 2:
+        # "... with an onion field to the north of them": the object was named before.
+        return kind, before[-1], (before[-2],)
+    return None
+
+
+_PRONOUNS = frozenset({"it", "them", "those", "these", "they", "this", "that", "which"})
+
+
+def coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:
+    """The mentions just before clause ``position``, with those listed with it.
+
+    "bananas and oranges, ripe": both are ripe; "apples next to carrots, ripe":
+    only the carrots.
+    """
+    index = position - 1
+    while index >= 0 and not clauses[index].mentions:
+        index -= 1
+    if index < 0:
+        return []
+    group = [clauses[index].mentions[-1]]
+    while index > 0 and clauses[index - 1].mentions and listing(clauses[index].link):
+        index -= 1
+        group.append(clauses[index].mentions[-1])
+    return group
+
+
+def listing(link: Item | None) -> bool:
+    """A link inside a list of fields: "and", or a comma (not a full stop or a relation)."""
+    if link is None:
+        return False
+    return link.role == "conjunction" or (link.role == "separator" and link.norm in (",", ";", "&"))
