@@ -536,3 +536,28 @@ def test_plural_fields_and_plural_plants(prompt: str, count: int) -> None:
 def test_a_season_said_once_holds_for_the_scene() -> None:
     recipe = _recipe("2 Gala apple orchards and 3 fields of Bintje potatoes in autumn", "rules")
     assert {(f.season, "season" in f.stated) for f in recipe.fields} == {("Fall", True)}
+
+
+def test_between_them_after_both_are_named() -> None:
+    recipe = _recipe("a couple of wheat fields and a maize field in between them", "rules")
+    maize = next(f.id for f in recipe.fields if f.crop == "Maize")
+    wheat = tuple(f.id for f in recipe.fields if f.crop == "Wheat")
+    assert [(r.kind, r.subject, r.objects) for r in recipe.relations] == [("between", maize, wheat)]
+
+
+def test_some_of_them_is_part_of_the_members() -> None:
+    recipe = _recipe("four fields of different vegetables, some of them diseased", "rules")
+    assert sorted(f.health for f in recipe.fields) == ["Healthy", "Healthy", "Ill", "Ill"]
+
+
+@pytest.mark.parametrize(
+    ("prompt", "count"),
+    [("lots of grapes", 1), ("several vegetable fields", 3), ("a few vegetables", 3)],
+)
+def test_vague_amounts_count_fields_not_plants(prompt: str, count: int) -> None:
+    assert len(_recipe(prompt, "rules").fields) == count
+
+
+def test_a_listed_plural_is_shared() -> None:
+    recipe = _recipe("orchards with apple, pear and cherry trees", "rules")
+    assert [f.crop for f in recipe.fields] == ["Apple", "Pear", "Cherry"]

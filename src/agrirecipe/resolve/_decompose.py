@@ -57,6 +57,8 @@ class Mention:
     category: str | None = None
     plot: dict[str, Any] | None = None
     count: int | None = None
+    #: A vague amount ("several", "lots of"): a count only of fields, not of plants.
+    quantity: int | None = None
     distinct: bool = False
     other: bool = False
     clause: int = 0
@@ -267,7 +269,7 @@ class MentionBuilder:
                 if before_head or item.norm not in ("a", "an"):
                     mention.count = _count(value, item)
             elif item.role == "quantity" and (before_head or counts):
-                mention.count = int(item.data["value"])
+                mention.quantity = int(item.data["value"])
             elif item.role == "distinct":
                 mention.distinct = True
             elif item.role == "other":

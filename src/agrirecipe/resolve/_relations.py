@@ -93,6 +93,12 @@ def _relation_mentions(
     link: Item, before: Sequence[Mention], after: Sequence[Mention], *, pronoun: bool
 ) -> tuple[Any, Mention, tuple[Mention, ...]] | None:
     kind = link.data.get("value", "between") if link.role != "between" else "between"
+    if pronoun and not after and len(before) >= 2:
+        # "a couple of wheat fields and a maize field in between them".
+        if kind == "between" and (before[-2].count or 1) >= 2:
+            return kind, before[-1], (before[-2], before[-2])
+        if kind != "between":
+            return kind, before[-1], (before[-2],)
     if pronoun and before and after:
         # "two potato fields and between them / north of them a wheat field": the
         # pronoun is the object, named before; the subject comes after.

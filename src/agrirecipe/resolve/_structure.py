@@ -16,6 +16,7 @@ from collections.abc import Sequence
 
 from agrirecipe.resolve._decompose import Clause, Mention, MentionBuilder
 from agrirecipe.resolve._lexicon import Item, vocabulary
+from agrirecipe.resolve._relations import listing
 
 __all__ = [
     "apply_corrections",
@@ -73,6 +74,9 @@ def promote_weak_varieties(clauses: Sequence[Clause], builder: MentionBuilder) -
 def apply_plural_counts(clauses: Sequence[Clause], plural_count: int) -> None:
     """ "carrot fields" asks for more than one field; "fruit and vegetable fields" does not.
 
+    A vague amount ("several", "lots of") counts fields only when fields or a
+    category are named, never plants ("lots of grapes" is one big vineyard).
+
     A plural plot noun without a number stands for ``plural_count`` fields, unless
     the plural is shared with a coordinated mention that names no plot of its own
     ("Riesling and Pinot Noir vineyards", "orchards of Gala and Fuji"), or the
@@ -82,6 +86,13 @@ def apply_plural_counts(clauses: Sequence[Clause], plural_count: int) -> None:
     for position, clause in enumerate(clauses):
         for index, mention in enumerate(clause.mentions):
             plots = [h for h in mention.heads if h.role == "plot"]
+            fields_named = any(not h.data["value"]["individual"] for h in plots)
+            if mention.count is None and mention.quantity is not None:
+                # "several vegetable fields", "lots of vegetables": fields; "lots of grapes":
+                # many vines in one vineyard.
+                if fields_named or (mention.category is not None and not mention.has_crop):
+                    mention.count = mention.quantity
+                continue
             spec = plots[-1].data["value"] if plots else {}
             if mention.count is not None or not spec.get("plural") or spec.get("individual"):
                 continue
@@ -92,14 +103,13 @@ def apply_plural_counts(clauses: Sequence[Clause], plural_count: int) -> None:
             if link is not None and link.role == "separator":
                 continue
             neighbours = []
-            if index == 0 and link is not None and link.role == "conjunction" and position > 0:
+            if index == 0 and listing(link) and position > 0:
                 neighbours += clauses[position - 1].mentions[-1:]
             following = clauses[position + 1] if position + 1 < len(clauses) else None
             if (
                 index == len(clause.mentions) - 1
                 and following is not None
-                and following.link is not None
-                and following.link.role == "conjunction"
+                and listing(following.link)
             ):
                 neighbours += following.mentions[:1]
             if any(not any(h.role == "plot" for h in n.heads) for n in neighbours):
@@ -193,8 +203,14 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             listed = listing and bool(clause.mentions) and (sub.count or 1) == 1
             if (is_reference or listed) and _fits(sub, parent, crop_categories) and _room(parent):
                 sub.is_refinement = True
-                if first is not None and first.data.get("value") == "rest":
+                kind = first.data.get("value") if first is not None else "one"
+                if kind == "rest":
                     parent.rest = sub
+                elif kind in ("some", "half"):
+                    # "five fields, some of them diseased": the first half of the members.
+                    total = parent.count or 1
+                    share = (total + 1) // 2 if kind == "some" else max(1, total // 2)
+                    parent.refinements.extend([sub] * min(share, total - len(parent.refinements)))
                 else:
                     parent.refinements.append(sub)
                 clause.mentions, clause.loose = [], []
