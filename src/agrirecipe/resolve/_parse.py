@@ -62,6 +62,8 @@ _EXAMPLES = (
     "'a healthy Pink Lady apple orchard in summer', "
     "'two carrot fields next to a wheat field', 'some fruit and vegetable fields'"
 )
+#: The most fields one recipe holds (SceneRecipe.fields).
+_MAX_FIELDS = 64
 _ATTRIBUTE_ROLES = ("stage", "season", "month", "health", "negation", "size", "all")
 
 
@@ -136,6 +138,12 @@ class PromptReader:
             mentions = self._container_fields(items, clauses)
         self._reject_unknown_names(items, mentions)
         fields = self._expand(mentions)
+        if len(fields) > _MAX_FIELDS:
+            raise PromptError(
+                f"the prompt asks for {len(fields)} fields; a scene holds at most {_MAX_FIELDS}",
+                stage="resolve",
+                hint="ask for fewer fields, or larger ones",
+            )
         members: dict[int, list[int]] = {}
         for index, member in enumerate(fields):
             members.setdefault(id(member.mention), []).append(index)
