@@ -13,8 +13,9 @@ vocabulary as "rules"; only crop and variety mentions go through retrieval.
 
 from __future__ import annotations
 
+import contextlib
 import threading
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 
 from agrirecipe.hierarchy import Hierarchy
@@ -29,6 +30,7 @@ __all__ = ["CropIndex", "EmbeddingResolver", "Match", "runs_where"]
 #: Cosine similarity a span needs to be read as a crop or variety name.
 ACCEPT_SIMILARITY = 0.75
 _SEEN_LIMIT = 4096
+_THREADS_LOCK = threading.Lock()
 # How much worse than its best single word a multi-word span may fit and still win.
 _SPAN_TOLERANCE = 0.02
 #: Longest span of words tried as one name.
@@ -48,6 +50,28 @@ class Match:
     variety: str | None
     text: str
     score: float
+
+
+@contextlib.contextmanager
+def _one_torch_thread() -> Iterator[None]:
+    """Run a short query batch on one torch thread.
+
+    Measured on the 2-core target: a one-sentence MiniLM forward takes ~15 ms on
+    one thread and ~500 ms on two while other processes compete for the cores
+    (the OpenMP workers wait on each other). Index builds keep all threads.
+    """
+    try:
+        import torch
+    except ImportError:  # another embedder, without torch
+        yield
+        return
+    with _THREADS_LOCK:
+        previous = torch.get_num_threads()
+        torch.set_num_threads(1)
+        try:
+            yield
+        finally:
+            torch.set_num_threads(previous)
 
 
 class CropIndex:
@@ -93,7 +117,8 @@ class CropIndex:
         """The best name for each span (one embedding batch for the spans not seen before)."""
         new = [span for span in dict.fromkeys(spans) if span not in self._seen]
         if new:
-            vectors = self.embedder.encode(new)
+            with _one_torch_thread():
+                vectors = self.embedder.encode(new)
             scores, rows = self.names.search(vectors, 1)
             if len(self._seen) + len(new) > _SEEN_LIMIT:
                 self._seen.clear()
@@ -106,7 +131,8 @@ class CropIndex:
         """Known crops nearest in meaning to an unknown plant name, best first."""
         key = (normalise(name), limit)
         if key not in self._nearest:
-            vectors = self.embedder.encode([f"{key[0]} plant"])
+            with _one_torch_thread():
+                vectors = self.embedder.encode([f"{key[0]} plant"])
             scores, rows = self.descriptors.search(vectors, limit)
             if len(self._nearest) >= _SEEN_LIMIT:
                 self._nearest.clear()
@@ -123,15 +149,24 @@ class _IndexCache:
 
     def __init__(self) -> None:
         self._indexes: dict[tuple[str, str, str], CropIndex] = {}
+        # Digests hash whole files: compute them once per object (kept alive here so
+        # that its id is not reused).
+        self._by_object: dict[tuple[int, int, int], tuple[object, CropIndex]] = {}
         self._lock = threading.Lock()
 
     def get(self, context: ResolveContext, embedder: Embedder) -> CropIndex:
-        key = (context.hierarchy.digest(), context.knowledge.digest(), embedder.model_id)
+        objects = (context.hierarchy, context.knowledge, embedder)
+        fast = (id(objects[0]), id(objects[1]), id(objects[2]))
         with self._lock:
+            known = self._by_object.get(fast)
+            if known is not None:
+                return known[1]
+            key = (context.hierarchy.digest(), context.knowledge.digest(), embedder.model_id)
             index = self._indexes.get(key)
             if index is None:
                 index = CropIndex(context.hierarchy, context.knowledge, embedder)
                 self._indexes[key] = index
+            self._by_object[fast] = (objects, index)
             return index
 
 
