@@ -227,3 +227,21 @@ def test_a_different_seed_may_choose_differently_but_never_changes_named_crops()
 def test_load_hierarchy_objects_are_accepted() -> None:
     tree = load_hierarchy()
     assert resolve("a vineyard", hierarchy=tree).recipe.fields[0].crop == "Grape"
+
+
+def test_a_knowledge_base_brings_its_hierarchy(tmp_path: Path, repo_root: Path) -> None:
+    from agrirecipe import ConfigurationError
+    from agrirecipe.knowledge import load_knowledge_base
+
+    raw = yaml.safe_load((repo_root / "hierarchy.yaml").read_text(encoding="utf-8"))
+    raw["categories"]["Fruits"]["crops"]["Apple"]["varieties"].append({"name": "Elstar"})
+    path = tmp_path / "hierarchy.yaml"
+    path.write_text(yaml.safe_dump(raw), encoding="utf-8")
+    tree = load_hierarchy(path)
+    knowledge = load_knowledge_base(repo_root / "crops", tree)
+    field = resolve("Elstar apples", resolver="rules", knowledge=knowledge).recipe.fields[0]
+    assert field.variety == "Elstar"
+    with pytest.raises(ConfigurationError, match="another hierarchy"):
+        resolve(
+            "Elstar apples", resolver="rules", knowledge=knowledge, hierarchy=default_hierarchy()
+        )

@@ -102,8 +102,17 @@ def resolve(
             f"latitude_deg must be between -90 and 90 degrees, got {latitude_deg!r}",
             stage="resolve",
         )
+    if hierarchy is None and isinstance(knowledge, KnowledgeBase):
+        hierarchy = knowledge.hierarchy  # a knowledge base brings its own hierarchy
     tree = _hierarchy(hierarchy)
     kb = _knowledge(knowledge, tree)
+    if kb.hierarchy is not tree and kb.hierarchy.digest() != tree.digest():
+        raise ConfigurationError(
+            "the knowledge base was loaded for another hierarchy than the one given",
+            stage="resolve",
+            hint="load it with load_knowledge_base(folder, hierarchy) for this hierarchy, "
+            "or pass only one of them",
+        )
     strategy = get_resolver(resolver)
     context = ResolveContext(
         hierarchy=tree,
@@ -132,14 +141,22 @@ def _hierarchy(value: Hierarchy | str | Path | None) -> Hierarchy:
     if isinstance(value, Hierarchy):
         return value
     if isinstance(value, str | Path):
-        return _load_hierarchy(str(value))
+        return _load_hierarchy(str(value), _stamp(value))
     raise ConfigurationError(
         f"hierarchy must be a Hierarchy or a path, not {type(value).__name__}", stage="resolve"
     )
 
 
+def _stamp(path: str | Path) -> float:
+    """The file's modification time (a changed file is loaded again), or 0 if missing."""
+    try:
+        return Path(path).stat().st_mtime
+    except OSError:
+        return 0.0
+
+
 @functools.lru_cache(maxsize=4)
-def _load_hierarchy(path: str) -> Hierarchy:
+def _load_hierarchy(path: str, stamp: float) -> Hierarchy:
     return load_hierarchy(path)
 
 
@@ -149,9 +166,11 @@ def _knowledge(value: KnowledgeBase | str | Path | None, hierarchy: Hierarchy) -
     if value is None:
         if hierarchy is default_hierarchy():
             return default_knowledge_base()
-        return _load_knowledge(None, hierarchy)
+        return _load_knowledge(None, hierarchy, 0.0)
     if isinstance(value, str | Path):
-        return _load_knowledge(str(value), hierarchy)
+        folder = Path(value)
+        stamp = max((f.stat().st_mtime for f in folder.glob("*.yaml")), default=_stamp(folder))
+        return _load_knowledge(str(value), hierarchy, stamp)
     raise ConfigurationError(
         f"knowledge must be a KnowledgeBase or a folder path, not {type(value).__name__}",
         stage="resolve",
@@ -159,7 +178,7 @@ def _knowledge(value: KnowledgeBase | str | Path | None, hierarchy: Hierarchy) -
 
 
 @functools.lru_cache(maxsize=4)
-def _load_knowledge(path: str | None, hierarchy: Hierarchy) -> KnowledgeBase:
+def _load_knowledge(path: str | None, hierarchy: Hierarchy, stamp: float) -> KnowledgeBase:
     return load_knowledge_base(path, hierarchy)
 
 
