@@ -30,6 +30,7 @@ from __future__ import annotations
 import contextlib
 import ctypes
 import os
+import sys
 import threading
 from collections import OrderedDict
 from pathlib import Path
@@ -120,6 +121,27 @@ class _LogCapture:
     @property
     def text(self) -> str:
         return " ".join(" ".join(self.lines).split())
+
+
+class _StderrCapture:
+    """Captures file descriptor 2 while active: llama.cpp's grammar parser prints its
+    errors there directly, and they belong in our error message, not on the console."""
+
+    def __enter__(self) -> _StderrCapture:
+        import tempfile
+
+        sys.stderr.flush()
+        self._file = tempfile.TemporaryFile()
+        self._saved = os.dup(2)
+        os.dup2(self._file.fileno(), 2)
+        return self
+
+    def __exit__(self, *exc_info: object) -> None:
+        os.dup2(self._saved, 2)
+        os.close(self._saved)
+        self._file.seek(0)
+        self.text = " ".join(self._file.read().decode("utf-8", "replace").split())
+        self._file.close()
 
 
 class LlamaCppModel:
@@ -266,13 +288,14 @@ class LlamaCppModel:
             self._samplers.move_to_end(grammar)
             llama_cpp.llama_sampler_reset(sampler)
             return sampler
-        with _LogCapture() as log:
+        with _LogCapture() as log, _StderrCapture() as stderr:
             sampler = llama_cpp.llama_sampler_init_grammar(
                 self._vocab, grammar.encode("utf-8"), b"root"
             )
         if not sampler:
+            detail = stderr.text or log.text or "parse error"
             raise ModelError(
-                f"llama.cpp rejected the GBNF grammar: {log.text or 'parse error'}",
+                f"llama.cpp rejected the GBNF grammar: {detail}",
                 stage="llm",
                 hint="a grammar needs a 'root' rule and GBNF syntax "
                 "(https://github.com/ggml-org/llama.cpp/blob/master/grammars/README.md)",
@@ -416,6 +439,24 @@ class LlamaCppModel:
                     hint="raise max_tokens",
                 )
             return text
+
+    def accepts(self, grammar: str, text: str) -> bool:
+        """Whether llama.cpp's grammar engine lets the model emit exactly ``text``.
+
+        Walks ``text``'s tokens through the compiled grammar (as generation
+        would) and checks that the grammar may end there. Grammars work on
+        characters, so any tokenization of ``text`` gives the same verdict.
+        """
+        import llama_cpp
+
+        with self._lock:
+            llama = self._load()
+            sampler = self._sampler(grammar)
+            for token in llama.tokenize(text.encode("utf-8"), add_bos=False, special=False):
+                if not self._allowed(sampler, np.array([token], dtype=np.int64))[0]:
+                    return False
+                llama_cpp.llama_sampler_accept(sampler, token)
+            return self._grammar_complete(sampler)
 
     def _grammar_complete(self, sampler: Any) -> bool:
         """Whether the grammar accepts ending here (it allows the end-of-text token)."""

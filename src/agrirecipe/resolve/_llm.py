@@ -235,7 +235,7 @@ def _collect(lexicon: Lexicon, text: str, hemisphere: Hemisphere | None = None) 
         previous = items[index - 1] if index else None
         negated = previous is not None and previous.has("negation")
         after_cue = previous is not None and previous.norm in cues
-        in_size = item.has("dimension_joiner") and previous is not None and previous.has("number")
+        in_size = item.has("dimension_joiner") and _is_number(previous)
         kept = [s for s in senses if not (in_size and s.kind == "relation")]
         _add_senses(evidence, item, kept, negated=negated, after_cue=after_cue)
         if item.norm in (":", ".", ";"):
@@ -252,6 +252,10 @@ def _collect(lexicon: Lexicon, text: str, hemisphere: Hemisphere | None = None) 
         season = _month_season(int(month), hemisphere, vocab["month_seasons_north"])
         evidence.add_state("season", season)
     return evidence
+
+
+def _is_number(item: Item | None) -> bool:
+    return item is not None and (item.norm[:1].isdigit() or item.has("number", "fraction"))
 
 
 def _counts_fields(items: Sequence[Item], readings: Sequence[Sequence[Any]], index: int) -> bool:
@@ -471,7 +475,7 @@ def _mentions(
     for index, item in enumerate(items):
         first, last = word_at(item.start), word_at(item.end - 1)
         previous = items[index - 1] if index else None
-        in_size = item.has("dimension_joiner") and previous is not None and previous.has("number")
+        in_size = item.has("dimension_joiner") and _is_number(previous)
         if item.has("conjunction", "separator") or (item.has("relation") and not in_size):
             joins.append(first if item.norm[:1].isalnum() else max(0, first))
             continue
