@@ -82,6 +82,7 @@ class CropIndex:
         # Spans already looked up: prompts repeat words, and a lookup costs a model call.
         self._seen: dict[str, Match] = {}
         self._nearest: dict[tuple[str, int], list[tuple[str, float]]] = {}
+        self._lock = threading.Lock()
         texts: list[str] = []
         self.rows: list[tuple[str, str | None]] = []
         for crop in hierarchy.crops.values():
@@ -115,6 +116,10 @@ class CropIndex:
 
     def match(self, spans: Sequence[str]) -> list[Match]:
         """The best name for each span (one embedding batch for the spans not seen before)."""
+        with self._lock:
+            return self._match(spans)
+
+    def _match(self, spans: Sequence[str]) -> list[Match]:
         new = [span for span in dict.fromkeys(spans) if span not in self._seen]
         if new:
             with _one_torch_thread():
@@ -130,9 +135,14 @@ class CropIndex:
     def nearest(self, name: str, limit: int = 3) -> list[tuple[str, float]]:
         """Known crops nearest in meaning to an unknown plant name, best first."""
         key = (normalise(name), limit)
+        with self._lock:
+            return self._nearest_to(key)
+
+    def _nearest_to(self, key: tuple[str, int]) -> list[tuple[str, float]]:
+        name, limit = key
         if key not in self._nearest:
             with _one_torch_thread():
-                vectors = self.embedder.encode([f"{key[0]} plant"])
+                vectors = self.embedder.encode([f"{name} plant"])
             scores, rows = self.descriptors.search(vectors, limit)
             if len(self._nearest) >= _SEEN_LIMIT:
                 self._nearest.clear()

@@ -11,7 +11,7 @@ errors for what cannot be honoured) is the same reading of the same words.
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any, cast
 
 from agrirecipe._errors import PromptError, UnknownCropError
@@ -77,7 +77,6 @@ class _Field:
     category: str | None
     plot: dict[str, Any] | None
     group: int | None = None
-    extra: dict[str, Any] = field(default_factory=dict)
 
 
 class PromptReader:
