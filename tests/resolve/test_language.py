@@ -561,3 +561,16 @@ def test_vague_amounts_count_fields_not_plants(prompt: str, count: int) -> None:
 def test_a_listed_plural_is_shared() -> None:
     recipe = _recipe("orchards with apple, pear and cherry trees", "rules")
     assert [f.crop for f in recipe.fields] == ["Apple", "Pear", "Cherry"]
+
+
+@pytest.mark.parametrize(
+    ("prompt", "count"),
+    [("carrots in 3 fields", 3), ("an orchard with 200 apple trees", 1)],
+)
+def test_numbers_count_fields_not_plants(prompt: str, count: int) -> None:
+    assert len(_recipe(prompt, "rules").fields) == count
+
+
+def test_plants_name_the_field_after_its_crop() -> None:
+    recipe = _recipe("young lettuce plants (romaine)", "rules")
+    assert [(f.id, f.variety) for f in recipe.fields] == [("lettuce_field_1", "Romaine")]

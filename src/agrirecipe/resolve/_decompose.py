@@ -240,7 +240,7 @@ class MentionBuilder:
                 current = Mention(clause=clause.index)
                 self._absorb(current, pending, before_head=True)
             elif self.compatible(current, item):
-                self._absorb(current, pending, before_head=False, counts=item.role == "head")
+                self._absorb(current, pending, before_head=False, counts=_counts_fields(item))
             else:
                 _check_adjacent_variety(current, item, pending)
                 cut = _pre_head_start(pending)
@@ -274,6 +274,14 @@ class MentionBuilder:
                 mention.distinct = True
             elif item.role == "other":
                 mention.other = True
+
+
+def _counts_fields(item: Item) -> bool:
+    """Whether a number before this head counts fields: "carrots in 3 fields", "two
+    apples orchards" do; "an orchard with 200 trees" does not (it counts plants)."""
+    if item.role == "plot":
+        return not item.data["value"]["individual"]
+    return item.role == "head"
 
 
 def _count(value: float, item: Item) -> int:

@@ -471,7 +471,9 @@ def _plot_spec(
     if category is not None and category not in hierarchy.categories:
         category = None
     return {
-        "noun": spec.get("noun") or _singular(phrase.split()[-1]),
+        # "tomato plants" names plants, not the plot: the field is named after its crop.
+        "noun": spec.get("noun")
+        or (None if spec.get("individual") else _singular(phrase.split()[-1])),
         "plural": bool(spec.get("plural", False)),
         "individual": bool(spec.get("individual", False)),
         "options": tuple(options),
