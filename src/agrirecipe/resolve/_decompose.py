@@ -14,13 +14,14 @@ link the mentions on either side ("north of", "next to", "between X and Y").
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
 from agrirecipe._errors import PromptError, UnknownCropError
 from agrirecipe.resolve._intent import SizeIntent
-from agrirecipe.resolve._lexicon import Item
+from agrirecipe.resolve._lexicon import Item, vocabulary
 
 __all__ = ["Clause", "Mention", "MentionBuilder", "decompose", "resolve_weak_varieties"]
 
@@ -276,12 +277,21 @@ class MentionBuilder:
                 mention.other = True
 
 
+@functools.lru_cache(maxsize=1)
+def _plant_words() -> frozenset[str]:
+    nouns = vocabulary()["plot_nouns"]
+    return frozenset(
+        phrase.split()[-1] for phrase, spec in nouns.items() if (spec or {}).get("individual")
+    )
+
+
 def _counts_fields(item: Item) -> bool:
     """Whether a number before this head counts fields: "carrots in 3 fields", "two
     apples orchards" do; "an orchard with 200 trees" does not (it counts plants)."""
     if item.role == "plot":
         return not item.data["value"]["individual"]
-    return item.role == "head"
+    # "apple trees", "tomato plants": crop names that end in a word for the plants.
+    return item.role == "head" and item.tokens[-1].norm not in _plant_words()
 
 
 def _count(value: float, item: Item) -> int:
