@@ -12,6 +12,7 @@
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Sequence
 
 from agrirecipe.resolve._decompose import Clause, Mention, MentionBuilder
@@ -178,14 +179,19 @@ def _room(parent: Mention) -> bool:
 
 def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]) -> list[Mention]:
     """Fold refinements into their plural mention; return the remaining top-level mentions."""
+    _join_of_which(clauses)
     top: list[Mention] = []
     parent: Mention | None = None
     enumerating = False
     for clause in clauses:
         first = next((i for i in clause.items if i.norm != "the"), None)
-        is_reference = first is not None and (
-            first.role == "reference"
-            or (first.role == "number" and bool(first.data.get("reference")))
+        share_of = _counted_reference(clause.items)
+        is_reference = share_of is not None or (
+            first is not None
+            and (
+                first.role == "reference"
+                or (first.role == "number" and bool(first.data.get("reference")))
+            )
         )
         link = clause.link
         joined = link is not None and link.role in ("separator", "conjunction")
@@ -204,7 +210,12 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             if (is_reference or listed) and _fits(sub, parent, crop_categories) and _room(parent):
                 sub.is_refinement = True
                 kind = first.data.get("value") if first is not None else "one"
-                if kind == "rest":
+                if share_of is not None:
+                    # "four fields, two of them blighted": exactly that many members.
+                    sub.count = None
+                    room = (parent.count or 1) - len(parent.refinements)
+                    parent.refinements.extend([sub] * min(share_of, room))
+                elif kind == "rest":
                     parent.rest = sub
                 elif kind in ("some", "half"):
                     # "five fields, some of them diseased": the first half of the members.
@@ -223,6 +234,41 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             last = clause.mentions[-1]
             parent = last if (last.count or 1) >= 2 else None
     return top
+
+
+#: Words after "<number> of" that point back at a plural mention ("two of them").
+_BACK_POINTERS = frozenset({"them", "which", "these", "those", "the fields", "the plots"})
+
+
+def _join_of_which(clauses: Sequence[Clause]) -> None:
+    """ "three of which are blighted": "which" cut the clause; put it back together."""
+    for clause, following in itertools.pairwise(clauses):
+        words = [i.role for i in clause.items]
+        if (
+            words == ["number", "of"]
+            and not clause.mentions
+            and following.link is not None
+            and following.link.norm in _BACK_POINTERS
+        ):
+            clause.items = [*clause.items, following.link, *following.items]
+            clause.loose = [*clause.loose, following.link, *following.loose]
+            clause.mentions, following.mentions = following.mentions, []
+            for mention in clause.mentions:
+                mention.clause = clause.index
+            following.items, following.loose = [], []
+
+
+def _counted_reference(items: Sequence[Item]) -> int | None:
+    """The count of "<number> of them" / "two of which" opening a clause, else None."""
+    words = [i for i in items if i.norm != "the"]
+    if len(words) < 3 or words[0].role != "number" or words[1].role != "of":
+        return None
+    if words[2].norm not in _BACK_POINTERS:
+        return None
+    value = float(words[0].data.get("value", 0))
+    if value != int(value) or value < 1:
+        return None
+    return int(value)
 
 
 def _definite_words() -> set[str]:
