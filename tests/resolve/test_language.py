@@ -574,3 +574,54 @@ def test_numbers_count_fields_not_plants(prompt: str, count: int) -> None:
 def test_plants_name_the_field_after_its_crop() -> None:
     recipe = _recipe("young lettuce plants (romaine)", "rules")
     assert [(f.id, f.variety) for f in recipe.fields] == [("lettuce_field_1", "Romaine")]
+
+
+# --- a counted share of a plural mention ------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "please make 4 fields of potatoes, two of them infected with late blight",
+        "four potato fields, 2 of which are blighted",
+        "four potato fields, two of them diseased and the others healthy",
+    ],
+)
+def test_n_of_them_refines_exactly_n_members(prompt: str) -> None:
+    recipe = _recipe(prompt, "rules")
+    assert [f.crop for f in recipe.fields] == ["Potato"] * 4
+    assert Counter(f.health for f in recipe.fields) == {"Ill": 2, "Healthy": 2}
+
+
+def test_one_of_them_refines_one_member() -> None:
+    intent = resolve("three tomato fields, one of them flowering", resolver="rules").intent
+    assert [f.crop for f in intent.fields] == ["Tomato"] * 3
+    assert [f.stage for f in intent.fields] == ["Reproductive", None, None]
+
+
+def test_the_rest_keep_what_is_said_for_all() -> None:
+    recipe = _recipe("five young carrot fields, three of which are diseased", "rules")
+    assert Counter(f.health for f in recipe.fields) == {"Ill": 3, "Healthy": 2}
+    assert {f.stage for f in recipe.fields} == {"Vegetative"}
+
+
+# --- a colour names the variety whose name says it -----------------------------------
+
+
+@pytest.mark.parametrize(
+    ("prompt", "crop", "variety"),
+    [
+        ("a blossoming cherry orchard (Kordia) east of a field of red onions", "Onion", "Red Baron"),
+        ("a red cabbage field", "Cabbage", "Red Express"),
+        ("a bed of red lettuce", "Lettuce", "Lollo Rosso"),
+        ("a grove of red oranges", "Orange", "Moro"),
+        ("yellow apples", "Apple", "Golden Delicious"),
+    ],
+)
+def test_a_colour_selects_the_variety_named_for_it(prompt: str, crop: str, variety: str) -> None:
+    assert _has(_recipe(prompt, "rules"), crop=crop, variety=variety)
+
+
+def test_a_colour_no_variety_is_named_for_leaves_the_variety_open() -> None:
+    intent = resolve("a field of red apples", resolver="rules").intent
+    assert [(f.crop, f.variety) for f in intent.fields] == [("Apple", None)]

@@ -429,10 +429,38 @@ def _build_lexicon(hierarchy: Hierarchy, knowledge: KnowledgeBase, crop_names: b
                         phrase, Sense("variety", variety.name, crop=crop.name, weak=weak)
                     )
                 # "Nantes carrots": the variety followed by its crop's name.
+            _add_colour_varieties(lexicon, crop, vocab)
     lexicon.prepare_fuzzy(
         ("crop", "variety", "category", "plot", "stage", "season", "month", "health", "relation")
     )
     return lexicon
+
+
+def _add_colour_varieties(lexicon: Lexicon, crop: Any, vocab: dict[str, Any]) -> None:
+    """ "red onions" -> the onion variety named red ("Red Baron"), from the hierarchy's names.
+
+    A colour names a variety only when exactly one variety of the crop has a word for
+    that colour in its name or aliases; a phrase the lexicon already knows is kept.
+    """
+    for colour, name_words in vocab["variety_colours"].items():
+        said = {normalise(str(w)) for w in name_words}
+        matches = [
+            variety
+            for variety in crop.varieties
+            if any(
+                said & set(normalise(phrase).split())
+                for phrase in (variety.name, *variety.aliases)
+            )
+        ]
+        if len(matches) != 1:
+            continue
+        sense = Sense("variety", matches[0].name, crop=crop.name)
+        for adjective in vocab["colour_words"].get(colour, ()):
+            for phrase in (crop.name, *crop.aliases):
+                for form in (normalise(phrase), *_plurals(normalise(phrase))):
+                    text = f"{normalise(str(adjective))} {form}"
+                    if not lexicon.lookup(text.split()):
+                        lexicon.add(text, sense)
 
 
 def _singular(word: str) -> str:
