@@ -611,7 +611,11 @@ def test_the_rest_keep_what_is_said_for_all() -> None:
 @pytest.mark.parametrize(
     ("prompt", "crop", "variety"),
     [
-        ("a blossoming cherry orchard (Kordia) east of a field of red onions", "Onion", "Red Baron"),
+        (
+            "a blossoming cherry orchard (Kordia) east of a field of red onions",
+            "Onion",
+            "Red Baron",
+        ),
         ("a red cabbage field", "Cabbage", "Red Express"),
         ("a bed of red lettuce", "Lettuce", "Lollo Rosso"),
         ("a grove of red oranges", "Orange", "Moro"),
