@@ -448,8 +448,7 @@ def _add_colour_varieties(lexicon: Lexicon, crop: Any, vocab: dict[str, Any]) ->
             variety
             for variety in crop.varieties
             if any(
-                said & set(normalise(phrase).split())
-                for phrase in (variety.name, *variety.aliases)
+                said & set(normalise(phrase).split()) for phrase in (variety.name, *variety.aliases)
             )
         ]
         if len(matches) != 1:
