@@ -144,3 +144,34 @@ def test_a_missing_hierarchy_file(tmp_path: object) -> None:
 def test_latitude_in_the_prompt_must_be_on_earth() -> None:
     with pytest.raises(PromptError, match="not on Earth"):
         resolve("an apple orchard at latitude 123", resolver="rules")
+
+
+@pytest.mark.parametrize(
+    ("prompt", "word"),
+    [
+        ("a parking lot with trees", "parking lot"),
+        ("a car park with some bushes", "car park"),
+        ("a house with grass and flowers", "house"),
+        ("a city full of plants", "city"),
+        ("an airport surrounded by grass", "airport"),
+        ("a road lined with trees", "road"),
+    ],
+)
+def test_scenery_with_plants_in_general_is_not_a_crop_field(prompt: str, word: str) -> None:
+    with pytest.raises(PromptError, match=word) as caught:
+        resolve(prompt, resolver="rules")
+    assert type(caught.value) is PromptError
+    assert caught.value.hint and "crop fields" in caught.value.hint
+
+
+@pytest.mark.parametrize(
+    ("prompt", "crop"),
+    [
+        ("an apple orchard next to the road", "Apple"),
+        ("a road between two wheat fields", "Wheat"),
+        ("a parking lot next to a field of potatoes", "Potato"),
+    ],
+)
+def test_crops_next_to_scenery_are_still_built(prompt: str, crop: str) -> None:
+    recipe = resolve(prompt, resolver="rules").recipe
+    assert {f.crop for f in recipe.fields} == {crop}

@@ -117,6 +117,7 @@ class PromptReader:
         assign_roles(items)
         prompt_latitude, latitude_text, items = read_latitude(prompt, items)
         items = read_sizes(items)
+        self._reject_scenery(items)
         self._reject_other_crops(items)
         builder = MentionBuilder(self.crop_categories)
         clauses = decompose(items, builder)
@@ -177,6 +178,29 @@ class PromptReader:
         )
 
     # --- unknown and non-agricultural requests ---
+
+    def _reject_scenery(self, items: Sequence[Item]) -> None:
+        """ "a parking lot with trees": non-agricultural scenery with plants in general only.
+
+        Such a prompt names no crop, category, field or farm: the plant words in it
+        (trees, grass, bushes) are the scenery's, not a request for a crop field.
+        """
+        scenery = [item for item in items if item.role == "non_agricultural"]
+        if not scenery:
+            return
+        generic = {str(word) for word in vocabulary()["generic_vegetation"]}
+        for item in items:
+            if item.role in ("head", "weak_variety", "container"):
+                return
+            if item.role in ("plot", "other_crop") and item.norm not in generic:
+                return
+        raise PromptError(
+            f"{scenery[0].raw!r} is not an agricultural scene, and the prompt names no crop "
+            "or field",
+            stage="resolve",
+            hint="agrirecipe builds crop fields, orchards, vineyards and farms; name a crop, "
+            f"a variety or a kind of field, e.g. {_EXAMPLES}",
+        )
 
     def _reject_other_crops(self, items: Sequence[Item]) -> None:
         for item in items:
