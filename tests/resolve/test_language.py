@@ -629,3 +629,41 @@ def test_a_colour_selects_the_variety_named_for_it(prompt: str, crop: str, varie
 def test_a_colour_no_variety_is_named_for_leaves_the_variety_open() -> None:
     intent = resolve("a field of red apples", resolver="rules").intent
     assert [(f.crop, f.variety) for f in intent.fields] == [("Apple", None)]
+
+
+# --- fields placed by a trailing direction ----------------------------------------------
+
+
+def _relations(recipe: SceneRecipe) -> set[tuple[str, str, tuple[str, ...]]]:
+    crop = {f.id: f.crop for f in recipe.fields}
+    return {(r.kind, crop[r.subject], tuple(crop[o] for o in r.objects)) for r in recipe.relations}
+
+
+def test_opposite_placements_relate_to_each_other() -> None:
+    recipe = _recipe("wheat to the north, maize to the south", "rules")
+    assert _relations(recipe) == {("north_of", "Wheat", ("Maize",))}
+
+
+def test_placements_around_a_field_between_them() -> None:
+    recipe = _recipe(
+        "A farm: wheat to the north, maize to the south and a strawberry patch between them",
+        "rules",
+    )
+    assert _relations(recipe) == {
+        ("north_of", "Wheat", ("Strawberry",)),
+        ("south_of", "Maize", ("Strawberry",)),
+        ("between", "Strawberry", ("Wheat", "Maize")),
+    }
+
+
+def test_placements_around_a_field_named_first() -> None:
+    recipe = _recipe("an apple orchard, wheat to the north and maize to the south", "rules")
+    assert _relations(recipe) == {
+        ("north_of", "Wheat", ("Apple",)),
+        ("south_of", "Maize", ("Apple",)),
+    }
+
+
+def test_between_them_after_three_fields() -> None:
+    recipe = _recipe("wheat, maize and a strawberry patch between them", "rules")
+    assert _relations(recipe) == {("between", "Strawberry", ("Wheat", "Maize"))}

@@ -30,9 +30,17 @@ def read_relations(
     ``members`` maps ``id(mention)`` to the indexes of the fields it became.
     """
     relations: list[RelationIntent] = []
+    placed = _placements(clauses, members)
+    for position, subject, centre in _placement_pairs(clauses, members, placed):
+        link = clauses[position].link
+        assert link is not None
+        kind = link.data["value"]
+        relations.extend(_pair(kind, subject, (centre,), members, link, trace))
     for position, clause in enumerate(clauses):
         link = clause.link
         if link is None or link.role not in ("relation", "between", "trailer"):
+            continue
+        if position in placed:
             continue
         before = [m for c in clauses[:position] for m in c.mentions]
         after = [m for c in clauses[position:] for m in c.mentions]
@@ -99,6 +107,9 @@ def _relation_mentions(
             return kind, before[-1], (before[-2], before[-2])
         if kind != "between":
             return kind, before[-1], (before[-2],)
+    if pronoun and not after and len(before) >= 3 and kind == "between":
+        # "wheat, maize and a strawberry patch between them".
+        return kind, before[-1], (before[-3], before[-2])
     if pronoun and before and after:
         # "two potato fields and between them / north of them a wheat field": the
         # pronoun is the object, named before; the subject comes after.
@@ -131,6 +142,75 @@ def _relation_mentions(
         # "... with an onion field to the north of them": the object was named before.
         return kind, before[-1], (before[-2],)
     return None
+
+
+_OPPOSITE = {
+    "north_of": "south_of",
+    "south_of": "north_of",
+    "east_of": "west_of",
+    "west_of": "east_of",
+}
+
+
+def _placements(clauses: Sequence[Clause], members: dict[int, list[int]]) -> dict[int, Mention]:
+    """Fields placed by a trailing direction right after them: "wheat to the north, ...".
+
+    Maps the position of the trailer's clause to the one mention of the clause before
+    it ("an orchard with wheat to the north" names two and is read as before).
+    """
+    placed: dict[int, Mention] = {}
+    for position, clause in enumerate(clauses):
+        link = clause.link
+        if link is None or link.role != "trailer" or link.data.get("value") not in _OPPOSITE:
+            continue
+        if position == 0 or clause.mentions or clause.items:
+            continue
+        previous = clauses[position - 1].mentions
+        if len(previous) == 1 and id(previous[0]) in members:
+            placed[position] = previous[0]
+    return placed
+
+
+def _placement_pairs(
+    clauses: Sequence[Clause], members: dict[int, list[int]], placed: dict[int, Mention]
+) -> list[tuple[int, Mention, Mention]]:
+    """(trailer position, placed field, what it is placed relative to) for each placement.
+
+    A placed field is related to the nearest field named without a direction (the
+    one before it, else the first after it): "an orchard, wheat to the north and
+    maize to the south", "wheat to the north, maize to the south and strawberries
+    between them". With no such field, opposite placements relate to each other:
+    "wheat to the north, maize to the south" is wheat north of maize. A placement
+    left without a partner is dropped here and read the usual way.
+    """
+    placed_ids = {id(m) for m in placed.values()}
+    free = [m for c in clauses for m in c.mentions if id(m) not in placed_ids and id(m) in members]
+    pairs: list[tuple[int, Mention, Mention]] = []
+    waiting: list[tuple[int, Mention]] = []
+    for position, mention in placed.items():
+        earlier = [m for m in free if m.clause < mention.clause]
+        later = [m for m in free if m.clause > mention.clause]
+        centre = earlier[-1] if earlier else (later[0] if later else None)
+        if centre is not None:
+            pairs.append((position, mention, centre))
+            continue
+        kind = clauses[position].link.data["value"]  # type: ignore[union-attr]
+        partner = next(
+            (
+                (p, m)
+                for p, m in waiting
+                if clauses[p].link.data["value"] == _OPPOSITE[kind]  # type: ignore[union-attr]
+            ),
+            None,
+        )
+        if partner is None:
+            waiting.append((position, mention))
+            continue
+        waiting.remove(partner)
+        pairs.append((partner[0], partner[1], mention))
+    for position, _ in waiting:
+        del placed[position]
+    return pairs
 
 
 _PRONOUNS = frozenset({"it", "them", "those", "these", "they", "this", "that", "which"})
