@@ -134,3 +134,36 @@ def test_block_size_must_be_positive() -> None:
 
 def test_count_tokens(model: LlamaCppModel) -> None:
     assert model.count_tokens("apple") < model.count_tokens("a Pink Lady apple orchard")
+
+
+def test_warm_prefix_is_saved_and_loaded_bit_identically(
+    model: LlamaCppModel, monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
+    monkeypatch.setenv("AGRIRECIPE_CACHE_DIR", str(tmp_path))
+    prefix = FEW_SHOT * 6  # several whole blocks
+    grammar = choice_grammar(CROPS)
+    prompts = [prefix + f"Request: {text}\nCrop:" for text in ("pear trees", "young wheat")]
+    reference = LlamaCppModel(model.path, state_cache=False)
+    try:
+        reference.warm(prefix)
+        expected = [reference.complete(p, grammar=grammar) for p in prompts]
+    finally:
+        reference.close()
+    assert not (tmp_path / "llm-state").exists()  # state_cache=False writes nothing
+
+    for _ in range(2):  # the first saves the prefix, the second loads it
+        fresh = LlamaCppModel(model.path)
+        try:
+            fresh.warm(prefix)
+            assert [fresh.complete(p, grammar=grammar) for p in prompts] == expected
+        finally:
+            fresh.close()
+    (saved,) = (tmp_path / "llm-state").iterdir()
+
+    saved.write_bytes(b"damaged")  # a damaged file is evaluated again, not trusted
+    fresh = LlamaCppModel(model.path)
+    try:
+        fresh.warm(prefix)
+        assert [fresh.complete(p, grammar=grammar) for p in prompts] == expected
+    finally:
+        fresh.close()

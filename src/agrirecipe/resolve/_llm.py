@@ -819,6 +819,9 @@ class LlmResolver(Resolver):
         scene = _collect(lexicon, request)
         hemisphere = _hemisphere(scene, context)
         trace: list[TraceStep] = []
+        warm = getattr(model, "warm", None)
+        if callable(warm):
+            warm(self.prefix)  # the few-shot prefix, from the on-disk cache after the first run
         record = _Record(model, self.prefix, request)
 
         # 1. decompose, 2. validate and repair
