@@ -27,11 +27,13 @@ reasons, both measured on 2 CPU cores with Gemma 3 (a 262,144-token vocabulary):
 
 from __future__ import annotations
 
+import atexit
 import contextlib
 import ctypes
 import os
 import sys
 import threading
+import weakref
 from collections import OrderedDict
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Protocol, runtime_checkable
@@ -253,6 +255,9 @@ class LlamaCppModel:
         self._candidates = (llama_cpp.llama_token_data * self._n_vocab)()
         self._candidate_view = np.ctypeslib.as_array(self._candidates)
         self._llama = llama
+        # llama-cpp-python frees its model in __del__, which fails with a TypeError
+        # when it runs during interpreter shutdown; free it while Python is whole.
+        atexit.register(_close_at_exit, weakref.ref(self))
         return llama
 
     def close(self) -> None:
@@ -544,6 +549,12 @@ class LlamaCppModel:
 
         eos = int(llama_cpp.llama_vocab_eos(self._vocab))
         return bool(self._allowed(sampler, np.array([eos], dtype=np.int64))[0])
+
+
+def _close_at_exit(reference: weakref.ref[LlamaCppModel]) -> None:
+    model = reference()
+    if model is not None:
+        model.close()
 
 
 _DEFAULT: dict[str, LlamaCppModel] = {}
