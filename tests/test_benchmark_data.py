@@ -68,3 +68,12 @@ def test_knowledge_queries_name_catalogue_assets_and_cover_every_crop() -> None:
         hierarchy.check_key(query.key)
     assert {q.key.crop for q in queries} == set(hierarchy.crops)
     assert len({q.query.lower() for q in queries}) == len(queries)
+
+
+def test_held_out_prompts_cover_every_type_and_repeat_no_development_prompt() -> None:
+    benchmark = load_benchmark()
+    heldout = benchmark.select(splits=["heldout"]).prompts
+    dev = benchmark.select(splits=["dev"]).prompts
+    assert len(heldout) >= 60
+    assert {p.type for p in heldout} == set(PROMPT_TYPES)
+    assert not {p.prompt.lower() for p in heldout} & {p.prompt.lower() for p in dev}

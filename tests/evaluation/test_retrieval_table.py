@@ -39,5 +39,6 @@ def test_table_ii_ranks_the_true_asset_for_every_method() -> None:
         "season": "Fall",
         "health": "Ill",
     }
+    assert first.stated == ("crop", "variety", "stage", "season", "health")
     assert first.ranks["exact"] == 1
     assert first.ranks["paper_filter"] == first.ranks["oracle_filter"]

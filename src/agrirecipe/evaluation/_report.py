@@ -424,8 +424,8 @@ def render_markdown(report: EvaluationReport, *, failures: bool = True) -> str:
             "### Development prompts vs held-out prompts",
             "",
             "The resolvers were developed against `prompts.yaml`; `prompts_heldout.yaml` was "
-            "written after they were finished and never shown to them. A gap between the two "
-            "is over-fitting to the development prompts.",
+            "written apart and added only for the final run, so no resolver was tuned on it. "
+            "A gap between the two is over-fitting to the development prompts.",
             "",
         ]
         lines += _split_table(report)
@@ -468,12 +468,25 @@ def render_markdown(report: EvaluationReport, *, failures: bool = True) -> str:
                         f"{m.expected.season}, {m.expected.health}",
                         str(m.ranks.get(method) or f"not in top {retrieval.k}"),
                         m.top_rag or "–",
-                        ", ".join(f"{k}={v}" for k, v in m.extracted.items()) or (m.error or "–"),
+                        ", ".join(
+                            f"{k}={v}" + ("" if k in m.stated else " (inferred)")
+                            for k, v in m.extracted.items()
+                        )
+                        or (m.error or "–"),
                     ]
                     for m in misses
                 ]
                 lines += (
-                    _table(["query", "expected", "rank", "RAG's top hit", "extracted"], rows)
+                    _table(
+                        [
+                            "query",
+                            "expected",
+                            "rank",
+                            "RAG's top hit",
+                            "extracted (filter: stated)",
+                        ],
+                        rows,
+                    )
                     if rows
                     else ["None."]
                 )

@@ -44,6 +44,7 @@ class QueryResult:
     expected: AssetKey
     ranks: dict[str, int | None]
     extracted: dict[str, str] = field(default_factory=dict)
+    stated: tuple[str, ...] = ()
     top_rag: str | None = None
     error: str | None = None
 
@@ -128,6 +129,7 @@ def run_retrieval(
         oracle = {name: getattr(expected, name) for name in _FILTERABLE}
         ranks["oracle_filter"] = _rank(retriever.search_filtered(item.query, k, **oracle), expected)
         extracted: dict[str, str] = {}
+        stated_names: tuple[str, ...] = ()
         error: str | None = None
         begin = time.perf_counter()
         try:
@@ -139,9 +141,8 @@ def run_retrieval(
             seconds["extract"] += time.perf_counter() - begin
             spec = scene.recipe.fields[0]
             extracted = {name: getattr(spec, name) for name in _FILTERABLE}
-            stated: dict[str, str] = {
-                name: value for name, value in extracted.items() if name in spec.stated
-            }
+            stated_names = tuple(name for name in _FILTERABLE if name in spec.stated)
+            stated = {name: extracted[name] for name in stated_names}
             begin = time.perf_counter()
             filtered = retriever.search_filtered(
                 item.query,
@@ -171,6 +172,7 @@ def run_retrieval(
                 expected=expected,
                 ranks=ranks,
                 extracted=extracted,
+                stated=stated_names,
                 top_rag=_describe(rag_hits[0].entry.key) if rag_hits else None,
                 error=error,
             )
