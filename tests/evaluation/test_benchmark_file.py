@@ -145,3 +145,12 @@ def test_several_files_load_with_their_split_and_ids_stay_unique(tmp_path: Path)
     )
     with pytest.raises(BenchmarkError, match=r"duplicate prompt id 'd-1'.*also in"):
         load_benchmark([dev, heldout])
+
+
+def test_round_robin_takes_each_group_in_turn() -> None:
+    from agrirecipe.evaluation import round_robin
+
+    items = ["a1", "a2", "a3", "b1", "c1", "c2"]
+    assert round_robin(items, lambda s: s[0], 4) == ["a1", "b1", "c1", "a2"]
+    assert round_robin(items, lambda s: s[0], 100) == ["a1", "b1", "c1", "a2", "c2", "a3"]
+    assert round_robin([], lambda s: s, 3) == []

@@ -4,12 +4,8 @@ from __future__ import annotations
 
 import argparse
 import sys
-from collections.abc import Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
-
-if TYPE_CHECKING:
-    from agrirecipe.evaluation import KnowledgeQuery
+from typing import Any
 
 
 def register(subparsers: Any) -> None:
@@ -100,6 +96,7 @@ def run(args: argparse.Namespace) -> int:
         load_benchmark,
         load_knowledge_queries,
         render_markdown,
+        round_robin,
         update_document,
     )
     from agrirecipe.resolve import available_resolvers
@@ -146,7 +143,8 @@ def run(args: argparse.Namespace) -> int:
     if not args.no_retrieval:
         queries = load_knowledge_queries(args.queries)
         if args.limit is not None:
-            queries = _spread(queries, args.limit)
+            # Every crop in turn, so a small subset still covers them all.
+            queries = tuple(round_robin(queries, lambda q: q.key.crop, args.limit))
     described = f"{len(benchmark)} prompts" + (f" ({'; '.join(selection)})" if selection else "")
     report = evaluate(
         benchmark,
@@ -163,18 +161,3 @@ def run(args: argparse.Namespace) -> int:
         path = update_document(args.write, render_markdown(report, failures=True))
         print(f"wrote {path}", file=sys.stderr)
     return 0
-
-
-def _spread(queries: Sequence[KnowledgeQuery], limit: int) -> tuple[KnowledgeQuery, ...]:
-    """At most ``limit`` queries, taken from each crop in turn so a subset covers all crops."""
-    by_crop: dict[str, list[KnowledgeQuery]] = {}
-    for query in queries:
-        by_crop.setdefault(query.key.crop, []).append(query)
-    chosen: list[KnowledgeQuery] = []
-    depth = 0
-    while len(chosen) < min(limit, len(queries)):
-        for group in by_crop.values():
-            if depth < len(group) and len(chosen) < limit:
-                chosen.append(group[depth])
-        depth += 1
-    return tuple(chosen)

@@ -23,6 +23,7 @@ from agrirecipe.evaluation._benchmark import (
     TruthRelation,
     load_benchmark,
     load_knowledge_queries,
+    round_robin,
 )
 from agrirecipe.evaluation._evaluate import DEFAULT_STRATEGIES, evaluate, models_description
 from agrirecipe.evaluation._reference import (
@@ -106,6 +107,7 @@ __all__ = [
     "optimal_assignment",
     "percentile",
     "render_markdown",
+    "round_robin",
     "run_retrieval",
     "run_strategy",
     "score_prompt",

@@ -9,10 +9,10 @@ raises :class:`BenchmarkError` naming the offending entry.
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Literal, TypeVar
+from typing import Any, Literal, TypeVar, get_args
 
 import yaml
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
@@ -39,19 +39,14 @@ __all__ = [
     "TruthRelation",
     "load_benchmark",
     "load_knowledge_queries",
+    "round_robin",
 ]
 
+#: Prompt types, in the order tables show them (the paper's three first).
 PromptType = Literal[
-    "single_detailed", "single_generic", "multi_detailed", "multi_generic", "invalid"
+    "single_detailed", "single_generic", "multi_generic", "multi_detailed", "invalid"
 ]
-#: Prompt types in the order tables show them (the paper's three first).
-PROMPT_TYPES: tuple[PromptType, ...] = (
-    "single_detailed",
-    "single_generic",
-    "multi_generic",
-    "multi_detailed",
-    "invalid",
-)
+PROMPT_TYPES: tuple[PromptType, ...] = get_args(PromptType)
 Tag = Literal[
     "paper",
     "paraphrase",
@@ -62,16 +57,7 @@ Tag = Literal[
     "month_season",
     "implausible",
 ]
-TAGS: tuple[Tag, ...] = (
-    "paper",
-    "paraphrase",
-    "alias",
-    "typo",
-    "ambiguous",
-    "size_relation",
-    "month_season",
-    "implausible",
-)
+TAGS: tuple[Tag, ...] = get_args(Tag)
 #: "dev": prompts the resolvers were developed against; "heldout": written after.
 Split = Literal["dev", "heldout"]
 Attribute = Literal["category", "crop", "variety", "stage", "season", "health"]
@@ -312,22 +298,30 @@ class Benchmark(_Strict):
             and (not splits or p.split in splits)
         ]
         if limit is not None:
-            by_type: dict[str, list[BenchmarkPrompt]] = {}
-            for prompt in chosen:
-                by_type.setdefault(prompt.type, []).append(prompt)
-            interleaved: list[BenchmarkPrompt] = []
-            depth = 0
-            while len(interleaved) < min(limit, len(chosen)):
-                for group in by_type.values():
-                    if depth < len(group) and len(interleaved) < limit:
-                        interleaved.append(group[depth])
-                depth += 1
-            keep = {p.id for p in interleaved}
+            keep = {p.id for p in round_robin(chosen, lambda p: p.type, limit)}
             chosen = [p for p in chosen if p.id in keep]
         return Benchmark(source=self.source, prompts=tuple(chosen))
 
     def __len__(self) -> int:
         return len(self.prompts)
+
+
+_Item = TypeVar("_Item")
+
+
+def round_robin(items: Sequence[_Item], group: Callable[[_Item], str], limit: int) -> list[_Item]:
+    """At most ``limit`` items, the first of each group in turn, so a subset covers every group."""
+    groups: dict[str, list[_Item]] = {}
+    for item in items:
+        groups.setdefault(group(item), []).append(item)
+    chosen: list[_Item] = []
+    depth = 0
+    while len(chosen) < min(limit, len(items)):
+        for members in groups.values():
+            if depth < len(members) and len(chosen) < limit:
+                chosen.append(members[depth])
+        depth += 1
+    return chosen
 
 
 class _KeyFile(_Strict):
