@@ -13,9 +13,8 @@ vocabulary as "rules"; only crop and variety mentions go through retrieval.
 
 from __future__ import annotations
 
-import contextlib
 import threading
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 from agrirecipe.hierarchy import Hierarchy
@@ -30,7 +29,6 @@ __all__ = ["CropIndex", "EmbeddingResolver", "Match", "runs_where"]
 #: Cosine similarity a span needs to be read as a crop or variety name.
 ACCEPT_SIMILARITY = 0.75
 _SEEN_LIMIT = 4096
-_THREADS_LOCK = threading.Lock()
 # How much worse than its best single word a multi-word span may fit and still win.
 _SPAN_TOLERANCE = 0.02
 #: Longest span of words tried as one name.
@@ -50,28 +48,6 @@ class Match:
     variety: str | None
     text: str
     score: float
-
-
-@contextlib.contextmanager
-def _one_torch_thread() -> Iterator[None]:
-    """Run a short query batch on one torch thread.
-
-    Measured on the 2-core target: a one-sentence MiniLM forward takes ~15 ms on
-    one thread and ~500 ms on two while other processes compete for the cores
-    (the OpenMP workers wait on each other). Index builds keep all threads.
-    """
-    try:
-        import torch
-    except ImportError:  # another embedder, without torch
-        yield
-        return
-    with _THREADS_LOCK:
-        previous = torch.get_num_threads()
-        torch.set_num_threads(1)
-        try:
-            yield
-        finally:
-            torch.set_num_threads(previous)
 
 
 class CropIndex:
@@ -122,8 +98,8 @@ class CropIndex:
     def _match(self, spans: Sequence[str]) -> list[Match]:
         new = [span for span in dict.fromkeys(spans) if span not in self._seen]
         if new:
-            with _one_torch_thread():
-                vectors = self.embedder.encode(new)
+            # SentenceTransformerEmbedder runs short batches on one torch thread.
+            vectors = self.embedder.encode(new)
             scores, rows = self.names.search(vectors, 1)
             if len(self._seen) + len(new) > _SEEN_LIMIT:
                 self._seen.clear()
@@ -141,8 +117,7 @@ class CropIndex:
     def _nearest_to(self, key: tuple[str, int]) -> list[tuple[str, float]]:
         name, limit = key
         if key not in self._nearest:
-            with _one_torch_thread():
-                vectors = self.embedder.encode([f"{name} plant"])
+            vectors = self.embedder.encode([f"{name} plant"])
             scores, rows = self.descriptors.search(vectors, limit)
             if len(self._nearest) >= _SEEN_LIMIT:
                 self._nearest.clear()
