@@ -28,7 +28,6 @@ reasons, both measured on 2 CPU cores with Gemma 3 (a 262,144-token vocabulary):
 from __future__ import annotations
 
 import atexit
-import contextlib
 import ctypes
 import os
 import sys
@@ -280,9 +279,12 @@ class LlamaCppModel:
         self._samplers.clear()
 
     def __del__(self) -> None:
-        # At interpreter shutdown the llama.cpp library may already be gone.
-        with contextlib.suppress(Exception):
+        # At interpreter shutdown the llama.cpp library, and even the contextlib
+        # module, may already be gone: a plain try needs no module.
+        try:  # noqa: SIM105 - contextlib may already be gone at shutdown
             self._free_samplers()
+        except Exception:
+            pass
 
     # --- grammars ------------------------------------------------------------
 
