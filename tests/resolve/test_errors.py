@@ -109,6 +109,60 @@ def test_impossible_sizes_and_counts(prompt: str) -> None:
         resolve(prompt, resolver="rules")
 
 
+@pytest.mark.parametrize("strategy", ["rules", "hybrid"])
+@pytest.mark.parametrize(
+    ("prompt", "plot", "crop"),
+    [
+        ("a vineyard of cabbages", "a vineyard holds Grape", "Cabbage"),
+        ("an orchard of carrots", "an orchard holds Apple, Pear, Cherry or Orange", "Carrot"),
+        ("a carrot orchard", "an orchard holds", "Carrot"),
+        ("a vineyard full of young tomatoes", "a vineyard holds Grape", "Tomato"),
+        ("an orchard planted with wheat", "an orchard holds", "Wheat"),
+        ("a cornfield of wheat", "a cornfield holds Maize", "Wheat"),
+    ],
+)
+def test_a_plot_that_cannot_hold_the_crop(strategy: str, prompt: str, plot: str, crop: str) -> None:
+    with pytest.raises(PromptError, match="contradiction") as caught:
+        resolve(prompt, resolver=strategy)
+    assert plot in str(caught.value) and f"{crop} is not grown in one" in str(caught.value)
+    assert caught.value.hint and f"{crop.lower()} field" in caught.value.hint
+
+
+@pytest.mark.parametrize(
+    ("prompt", "crops"),
+    [
+        # the plot noun agrees, or only names the plants, or may mean a neighbour
+        ("an orchard of Gala apples", ["Apple"]),
+        ("a banana orchard", ["Banana"]),
+        ("tomato vines in summer", ["Tomato"]),
+        ("banana trees", ["Banana"]),
+        ("an apple orchard with a carrot field", ["Apple", "Carrot"]),
+        ("cabbages next to a vineyard", ["Cabbage", "Grape"]),
+        # a correction takes the contradiction back
+        ("a vineyard of cabbages? no, sorry, a vineyard of Riesling", ["Grape"]),
+    ],
+)
+def test_plots_that_hold_their_crop(prompt: str, crops: list[str]) -> None:
+    recipe = resolve(prompt, resolver="rules").recipe
+    assert [f.crop for f in recipe.fields] == crops
+
+
+@pytest.mark.parametrize(
+    ("prompt", "crop", "count"),
+    [
+        ("three different fruit crops, all of them apples", "Apple", 3),
+        ("three different vegetables, all carrots", "Carrot", 3),
+        ("two different vegetable fields, both potatoes", "Potato", 2),
+        ("three different fruit crops, two of them apples", "Apple", 2),
+        ("two different fruits: apples and apples", "Apple", 2),
+    ],
+)
+def test_different_crops_named_the_same(prompt: str, crop: str, count: int) -> None:
+    with pytest.raises(PromptError, match=f"makes {count} of them {crop}") as caught:
+        resolve(prompt, resolver="rules")
+    assert caught.value.hint and "drop 'different'" in caught.value.hint
+
+
 def test_impossible_relations() -> None:
     with pytest.raises(PromptError):
         resolve(

@@ -168,6 +168,35 @@ def test_three_different_vegetables(seed: int) -> None:
     assert len({f.crop for f in recipe.fields}) == 3
 
 
+@pytest.mark.parametrize(
+    ("prompt", "crops"),
+    [
+        ("three different fruit crops, one of them apples", None),
+        ("two different fruits: Gala and Fuji", ["Apple", "Apple"]),
+        ("three different vegetables: carrots, potatoes and tomatoes", None),
+    ],
+)
+def test_different_crops_that_are_different(prompt: str, crops: list[str] | None) -> None:
+    recipe = _recipe(prompt, "rules")
+    if crops is None:  # different crops
+        assert len({f.crop for f in recipe.fields}) == len(recipe.fields) == 3
+    else:  # the same crop, told apart by the varieties named
+        assert [f.crop for f in recipe.fields] == crops
+        assert len({f.variety for f in recipe.fields}) == 2
+
+
+@pytest.mark.parametrize("strategy", STRATEGIES)
+@pytest.mark.parametrize("seed", range(3))
+def test_different_fields_of_one_crop_get_different_varieties(strategy: str, seed: int) -> None:
+    recipe = _recipe("three different potato fields, one of them Bintje", strategy, seed=seed)
+    assert [f.crop for f in recipe.fields] == ["Potato"] * 3
+    assert len({f.variety for f in recipe.fields}) == 3
+    assert "Bintje" in {f.variety for f in recipe.fields}
+    assert sum("variety" in f.inferred for f in recipe.fields) == 2
+    apples = _recipe("two different apple orchards", strategy, seed=seed)
+    assert len({f.variety for f in apples.fields}) == 2
+
+
 def test_too_many_different_crops_is_an_error() -> None:
     from agrirecipe import PromptError
 
@@ -241,6 +270,19 @@ def test_stage_words(words: str, stage: str) -> None:
 
 def test_tasseling_maize() -> None:
     assert _recipe("sweetcorn tasselling in july", "rules").fields[0].stage == "Reproductive"
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "Fontane potatoes with late blight, canopy growing in summer",
+        "winter wheat at stem elongation",
+        "Butterhead lettuce at the rosette stage",
+        "maize germinating in May",
+    ],
+)
+def test_growth_stage_scale_words_are_vegetative(prompt: str) -> None:
+    assert _recipe(prompt, "rules").fields[0].stage == "Vegetative"
 
 
 @pytest.mark.parametrize(
@@ -485,6 +527,41 @@ def test_a_relation_to_something_that_is_not_a_field_is_dropped_with_a_warning()
     assert len(recipe.fields) == 1
     assert recipe.relations == ()
     assert any("parking lot" in w for w in recipe.warnings)
+
+
+@pytest.mark.parametrize("strategy", STRATEGIES)
+def test_the_fields_of_one_mention_side_by_side_are_a_row(strategy: str) -> None:
+    recipe = _recipe("Give me two different fruits side by side, summer", strategy)
+    first, second = (f.id for f in recipe.fields)
+    assert [(r.kind, r.subject, r.objects) for r in recipe.relations] == [
+        ("next_to", second, (first,))
+    ]
+    three = _recipe("three carrot fields next to each other", strategy)
+    ids = [f.id for f in three.fields]
+    assert {(r.subject, r.objects[0]) for r in three.relations} == {
+        (ids[1], ids[0]),
+        (ids[2], ids[1]),
+    }
+
+
+@pytest.mark.parametrize("strategy", STRATEGIES)
+def test_the_fruit_of_named_fields_is_not_a_fruit_field(strategy: str) -> None:
+    recipe = _recipe(
+        "San Marzano and Roma tomatoes in January in the southern hemisphere, fruit ripe",
+        strategy,
+    )
+    assert [(f.variety, f.stage, f.season) for f in recipe.fields] == [
+        ("San Marzano", "Maturation", "Summer"),
+        ("Roma", "Maturation", "Summer"),
+    ]
+    peppers = _recipe("jalapenos, fruits ready to pick", strategy)
+    assert [(f.crop, f.stage) for f in peppers.fields] == [("Pepper", "Maturation")]
+    # a field of fruit after another field is still a field of its own
+    mixed = _recipe("a wheat field, some fruit, ripe", strategy)
+    assert [f.category for f in mixed.fields] == ["Cereals", "Fruits"]
+    trees = _recipe("a wheat field, fruit trees in bloom", strategy)
+    assert trees.fields[0].crop == "Wheat"
+    assert trees.fields[1].crop in {"Apple", "Pear", "Cherry", "Orange"}
 
 
 def test_a_list_side_by_side_is_a_row() -> None:

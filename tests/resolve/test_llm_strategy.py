@@ -207,6 +207,9 @@ def test_non_agricultural_prompt(
         ("a healthy diseased apple orchard", "two different health"),
         ("100 apple orchards", "at most 64"),
         ("a potato field 0 by 50 m", "cannot measure"),
+        ("a vineyard of cabbages", "a vineyard holds Grape"),
+        ("a carrot orchard", "an orchard holds"),
+        ("three different fruit crops, all of them apples", "names only Apple"),
     ],
 )
 def test_contradictions_and_impossible_requests(
@@ -214,6 +217,21 @@ def test_contradictions_and_impossible_requests(
 ) -> None:
     with pytest.raises(PromptError, match=message):
         resolver.resolve_intent(prompt, context)
+
+
+def test_plants_parts_and_rows(resolver: LlmResolver, context: ResolveContext) -> None:
+    """Words about a named field's plants or fruit are not fields; a counted part in a row."""
+    assert fields(resolver.resolve_intent("tomato vines in summer", context)) == [
+        ("Tomato", None, None, "Summer", None)
+    ]
+    ripe = resolver.resolve_intent("Roma and San Marzano tomatoes, fruit ripe", context)
+    assert [(f.crop, f.stage) for f in ripe.fields] == [("Tomato", "Maturation")] * 2
+    row = resolver.resolve_intent("two different fruits side by side", context)
+    assert [(r.kind, r.subject, r.objects) for r in row.relations] == [("next_to", 1, (0,))]
+    apples = resolver.resolve_intent("two different apple orchards", context)
+    assert [(f.crop, f.distinct_group) for f in apples.fields] == [("Apple", 0)] * 2
+    trees = resolver.resolve_intent("a wheat field, fruit trees in bloom", context)
+    assert [f.crop for f in trees.fields][0] == "Wheat" and len(trees.fields) == 2
 
 
 def test_overlong_prompt(resolver: LlmResolver, context: ResolveContext) -> None:

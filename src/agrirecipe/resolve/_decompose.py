@@ -61,7 +61,15 @@ class Mention:
     #: A vague amount ("several", "lots of"): a count only of fields, not of plants.
     quantity: int | None = None
     distinct: bool = False
+    #: "three different vegetables" asks for different crops; "two different apple
+    #: orchards" (a crop already named) for different fields of that crop.
+    distinct_crops: bool = False
     other: bool = False
+    #: A contradiction in the mention's own words ("a vineyard of cabbages"), raised
+    #: unless a correction ("..., no, I mean ...") drops the mention.
+    conflict: PromptError | None = None
+    #: The phrase goes on in the next mention ("a vineyard | of cabbages").
+    continued: bool = False
     clause: int = 0
     refinements: list[Mention] = field(default_factory=list)
     rest: Mention | None = None
@@ -173,8 +181,8 @@ class MentionBuilder:
                 and not set(spec["options"]) & set(mention.plot["options"])
             ):
                 return False  # "an orchard vineyard": two plots, two fields
-            if mention.has_crop and spec["options"] and len(spec["options"]) == 1:
-                return any(c == spec["options"][0] for c, _, _ in mention.interpretations or ())
+            if mention.has_crop and spec["options"]:
+                return not _plot_excludes(spec, mention)  # "a carrot orchard": two things
             return True
         interpretations = _interpretations(item)
         categories = [str(s.value) for s in item.senses_of("category")]
@@ -206,6 +214,8 @@ class MentionBuilder:
         mention.items.append(item)
         if item.role == "plot":
             spec = item.data["value"]
+            if spec["individual"] and mention.has_crop and _plot_excludes(spec, mention):
+                return  # "tomato vines" are tomato plants, not a vineyard
             if mention.plot is None or spec["narrows"]:
                 mention.plot = spec
             return
@@ -240,14 +250,21 @@ class MentionBuilder:
             if current is None:
                 current = Mention(clause=clause.index)
                 self._absorb(current, pending, before_head=True)
+            elif not pending and _names_plants_of(current, item):
+                item.role = "filler"  # "tomato vines": the tomato's own vines
+                current.items.append(item)
+                continue
             elif self.compatible(current, item):
+                current.conflict = current.conflict or _plot_conflict(current, item, pending)
                 self._absorb(current, pending, before_head=False, counts=_counts_fields(item))
             else:
+                conflict = _plot_conflict(current, item, pending)
+                current.continued = conflict is not None
                 _check_adjacent_variety(current, item, pending)
                 cut = _pre_head_start(pending)
                 self._absorb(current, pending[:cut], before_head=False)
                 clause.mentions.append(current)
-                current = Mention(clause=clause.index)
+                current = Mention(clause=clause.index, conflict=conflict)
                 self._absorb(current, pending[cut:], before_head=True)
             pending = []
             self.add_head(current, item)
@@ -258,6 +275,7 @@ class MentionBuilder:
             clause.loose = pending
         for mention in clause.mentions:
             resolve_weak_varieties(mention)
+            mention.distinct_crops = mention.distinct and not mention.has_crop
 
     @staticmethod
     def _absorb(
@@ -336,6 +354,85 @@ def _check_adjacent_variety(mention: Mention, item: Item, pending: Sequence[Item
             stage="resolve",
             hint=f"did you mean {last.raw} {owner.lower()}s, or another {crops[0]} variety?",
         )
+
+
+# "of"-words that put the crop inside the plot ("a vineyard of cabbages", "an orchard
+# planted with carrots"); "with" may as well mean a neighbour ("an orchard with a
+# carrot field"), "under" a cover ("an orchard under snow").
+_NOT_CONTAINMENT = frozenset({"with", "under"})
+
+
+def _plot_conflict(mention: Mention, item: Item, pending: Sequence[Item]) -> PromptError | None:
+    """'a vineyard of cabbages', 'a carrot orchard': a plot noun that cannot hold the crop.
+
+    Only a plot noun for a kind of planting (orchard, grove, vineyard, cornfield)
+    restricts its crops; a noun for the plants themselves ("tomato vines", "banana
+    trees") just names the crop's plants, and crops a noun tolerates by usage
+    ("a banana orchard") pass.
+    """
+    if item.role == "plot":
+        plot, crops = item.data["value"], _named_crops(mention.interpretations)
+        joined = not pending  # "a carrot orchard"
+    elif item.role == "head" and mention.plot is not None and not mention.has_crop:
+        plot, crops = mention.plot, _named_crops(_interpretations(item))
+        # "a vineyard of (young) cabbages"
+        joined = (
+            bool(pending)
+            and pending[0].role == "of"
+            and pending[0].norm not in _NOT_CONTAINMENT
+            and all(p.role in _PRE_HEAD for p in pending[1:])
+        )
+    else:
+        return None
+    allowed = (*plot["options"], *plot["tolerates"])
+    if not joined or plot["individual"] or not plot["options"] or not crops:
+        return None
+    if any(crop in allowed for crop in crops):
+        return None
+    word = plot["noun"] or "plot"
+    if plot["noun"] == "field":  # "cornfield", "wheatfield"
+        word = next(h for h in (item, *mention.heads) if h.role == "plot").norm.rstrip("s")
+    article = "an" if word[0] in "aeiou" else "a"
+    crop = crops[0]
+    return PromptError(
+        f"{_phrase(mention, item, pending)!r} is a contradiction: {article} {word} holds "
+        f"{_listing(plot['options'])}, and {crop} is not grown in one",
+        stage="resolve",
+        hint=f"ask for a {crop.lower()} field, or {article} {word} next to a {crop.lower()} field",
+    )
+
+
+def _names_plants_of(mention: Mention, item: Item) -> bool:
+    """'tomato vines': a crop alias that is also a word for plants, right after another crop."""
+    if item.role != "head" or not mention.has_crop:
+        return False
+    plots = [s.value for s in item.senses_of("plot") if s.value["individual"]]
+    if not plots:
+        return False
+    return _combine(mention.interpretations, _interpretations(item)) is None
+
+
+def _plot_excludes(plot: dict[str, Any], mention: Mention) -> bool:
+    allowed = (*plot["options"], *plot["tolerates"])
+    crops = _named_crops(mention.interpretations)
+    return bool(plot["options"]) and not any(crop in allowed for crop in crops)
+
+
+def _listing(names: Sequence[str]) -> str:
+    return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " or " + names[-1]
+
+
+def _named_crops(interpretations: Sequence[Interpretation] | None) -> list[str]:
+    crops: list[str] = []
+    for crop, _, weak in interpretations or ():
+        if not weak and crop not in crops:
+            crops.append(crop)
+    return crops
+
+
+def _phrase(mention: Mention, item: Item, pending: Sequence[Item]) -> str:
+    words = sorted([*mention.heads, *pending, item], key=lambda i: i.start)
+    return " ".join(w.raw for w in words)
 
 
 def resolve_weak_varieties(mention: Mention) -> None:

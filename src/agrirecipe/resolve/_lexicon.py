@@ -494,6 +494,8 @@ def _plot_spec(
             and crop not in options
             and knowledge.crop_file(crop).growth_form in forms
         ]
+    # Crops the noun's growth forms leave out but usage still puts there ("a banana orchard").
+    tolerates = [c for c in spec.get("exclude", ()) if c in hierarchy.crops]
     category = spec.get("category")
     if category is not None and category not in hierarchy.categories:
         category = None
@@ -504,6 +506,7 @@ def _plot_spec(
         "plural": bool(spec.get("plural", False)),
         "individual": bool(spec.get("individual", False)),
         "options": tuple(options),
+        "tolerates": tuple(tolerates),
         "category": category,
         "narrows": bool(options) or category is not None,
     }

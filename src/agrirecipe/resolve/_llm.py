@@ -393,7 +393,8 @@ def _add_senses(
             evidence.all_words = True
         elif kind in ("area_unit", "length_unit"):
             evidence.units.setdefault(item.norm, (kind, float(sense.value)))
-        elif kind == "relation":
+        elif kind == "relation" or (kind == "relation_trailer" and sense.value == "next_to"):
+            # "next to", "side by side" (the model reads trailing directions backwards)
             evidence.relations.append(str(sense.value))
         elif kind == "hemisphere":
             evidence.hemisphere = sense.value
@@ -494,7 +495,7 @@ def _mentions(
     A joining word ("and", a comma, "next to") is where two fields' words are
     best split.
     """
-    from agrirecipe.resolve._lexicon import tokenize
+    from agrirecipe.resolve._lexicon import tokenize, vocabulary
 
     spans = _word_spans(request)
 
@@ -508,8 +509,13 @@ def _mentions(
     joins: list[int] = []
     items = lexicon.tag(tokenize(request))
     readings = _readings(lexicon, items)
+    parts = {str(word) for word in vocabulary()["plant_part_words"]}
     for index, item in enumerate(items):
         first, last = word_at(item.start), word_at(item.end - 1)
+        if _plants_of_previous(found, first, readings[index]) or (
+            item.norm in parts and _part_of_named(found, items, readings, index)
+        ):
+            continue  # "tomato vines", "tomatoes, fruit ripe": words about a field named
         if item.has("conjunction", "separator") or (
             item.has("relation") and not _in_size(items, index)
         ):
@@ -549,6 +555,25 @@ def _mentions(
                 _Mention(first, last, plot=True, plot_options=options, category=plot_category)
             )
     return found, joins
+
+
+def _plants_of_previous(found: Sequence[_Mention], first: int, senses: Sequence[Any]) -> bool:
+    """'tomato vines': a crop alias that also names plants, right after another crop."""
+    if not found or found[-1].crop is None or found[-1].last != first - 1:
+        return False
+    crops = {s.value for s in senses if s.kind == "crop"}
+    plants = any(s.kind == "plot" and s.value["individual"] for s in senses)
+    return plants and bool(crops) and found[-1].crop not in crops
+
+
+def _part_of_named(
+    found: Sequence[_Mention], items: Sequence[Item], readings: Sequence[Sequence[Any]], index: int
+) -> bool:
+    """'..., fruit ripe' after a named crop: the crop's fruit, next to a stage or health word."""
+    if not any(m.crop is not None for m in found):
+        return False
+    near = [i for i in (index - 1, index + 1) if 0 <= i < len(items)]
+    return any(s.kind in ("stage", "health") for i in near for s in readings[i])
 
 
 def _fits(group: _Group, mention: _Mention, hierarchy: Hierarchy) -> bool:
@@ -613,7 +638,13 @@ def _groups(
                 _add(current, mention)
                 article = False
                 continue
-            if not fits and mention.plot and not article and current.other is None:
+            # "a wheat field, fruit trees in bloom": a kind of field after a joining
+            # word is a field of its own.
+            own = bool(mention.plot_options) and any(
+                current.last < j <= mention.first  # a comma counts as the next word's
+                for j in joins
+            )
+            if not fits and mention.plot and not article and current.other is None and not own:
                 current.last = mention.last
                 continue
         group = _Group(mention.first, mention.first, after_join=after_join)
@@ -852,6 +883,7 @@ class LlmResolver(Resolver):
         suffix = "".join(f" + {p.text}" for p in shared)
         shared_raw = " ".join(p.raw for p in shared)
         _check_adjacent_names(lexicon, request)
+        _check_plots(lexicon, request, context.hierarchy)
 
         # 3-5. one subquery per part
         fields: list[FieldIntent] = []
@@ -902,6 +934,12 @@ class LlmResolver(Resolver):
                 relations = _parse_relations(answer, first_field, grammars.relation_kinds)
                 trace.append(TraceStep(stage="llm", subject="relations", detail=answer.strip()))
             relations += _between_counted(scene, relations, first_field, len(fields))
+        elif len(fields) > 1 and "next_to" in scene.relations:
+            # "two different fruits side by side": one counted part's fields in a row
+            relations = [
+                RelationIntent(kind="next_to", subject=b, objects=(a,))
+                for a, b in itertools.pairwise(range(len(fields)))
+            ]
 
         seasons = {f.season for f in fields if f.season is not None}
         return SceneIntent(
@@ -1084,6 +1122,15 @@ def _field_intents(
         ]
     variety = values.get("variety", NONE)
     _check_contradiction(crop, variety, evidence, part)
+    distinct = evidence.distinct and count > 1
+    if distinct and evidence.categories and variety == NONE:
+        # "three different fruit crops, all of them apples"
+        raise PromptError(
+            f"{part.raw!r} asks for {count} different crops, but names only {crop}",
+            stage="resolve",
+            hint="name a different crop for each field, or drop 'different' to have "
+            f"several {crop.lower()} fields",
+        )
     mention = evidence.varieties.get((crop, variety)) or evidence.crops.get(crop)
     return [
         FieldIntent(
@@ -1093,6 +1140,8 @@ def _field_intents(
             crop=crop,
             variety=None if variety == NONE else variety,
             size=size,
+            # "two different apple orchards": different varieties of the crop
+            distinct_group=0 if distinct else None,
             **{**states, **per_field[index]},
         )
         for index in range(count)
@@ -1191,6 +1240,25 @@ def _check_adjacent_names(lexicon: Lexicon, request: str) -> None:
                 stage="resolve",
                 hint=f"name a {crop} variety, or ask for {variety.value} {variety.crop}",
             )
+
+
+def _check_plots(lexicon: Lexicon, request: str, hierarchy: Hierarchy) -> None:
+    """A plot that cannot hold the crop written into it ("a vineyard of cabbages").
+
+    The same reading of the words as the lexical strategies', so that a
+    correction ("..., no, I mean ...") still takes the contradiction back.
+    """
+    from agrirecipe.resolve._decompose import MentionBuilder, decompose
+    from agrirecipe.resolve._lexicon import tokenize
+    from agrirecipe.resolve._scan import assign_roles, read_sizes
+    from agrirecipe.resolve._structure import apply_corrections, raise_conflicts
+
+    items = lexicon.tag(tokenize(request))
+    assign_roles(items)
+    builder = MentionBuilder({c.name: c.category for c in hierarchy.crops.values()})
+    clauses = decompose(read_sizes(items), builder)
+    apply_corrections(clauses)
+    raise_conflicts(clauses)
 
 
 def _check_contradiction(crop: str, variety: str, evidence: _Evidence, part: _Part) -> None:

@@ -44,8 +44,10 @@ from agrirecipe.resolve._structure import (
     apply_corrections,
     apply_plural_counts,
     apply_refinements,
+    dissolve_plant_parts,
     merge_coreferences,
     promote_weak_varieties,
+    raise_conflicts,
 )
 
 __all__ = ["NOTHING_FOUND", "NearestCrops", "PromptReader", "UnknownWords"]
@@ -126,6 +128,13 @@ class PromptReader:
         for dropped in apply_corrections(clauses):
             self.trace.append(
                 TraceStep(stage="decompose", subject=dropped, detail="replaced by a correction")
+            )
+        raise_conflicts(clauses)
+        for dissolved in dissolve_plant_parts(clauses):
+            self.trace.append(
+                TraceStep(
+                    stage="decompose", subject=dissolved, detail="the named fields' own fruit"
+                )
             )
         mentions = apply_refinements(clauses, self.crop_categories)
         mentions = merge_coreferences(clauses, mentions, builder)
@@ -383,6 +392,8 @@ class PromptReader:
                 )
                 members.append(self._member(mention, sub))
             if mention.distinct and count > 1:
+                if mention.distinct_crops:
+                    _check_distinct(mention, members)
                 for member in members:
                     member.group = next_group
                 next_group += 1
@@ -522,6 +533,30 @@ class PromptReader:
 
 
 # --- helpers ---
+
+
+def _check_distinct(mention: Mention, members: Sequence[_Field]) -> None:
+    """'three different fruit crops, all of them apples': 'different' crops named the same.
+
+    Two members are the same when both are fixed to one crop and their varieties
+    do not tell them apart ("two different fruits: Gala and Fuji" are different).
+    """
+    fixed: dict[str, list[str | None]] = {}
+    for member in members:
+        strong = {(c, v) for c, v, weak in member.interpretations or () if not weak}
+        crops = {c for c, _ in strong}
+        if len(crops) == 1:
+            named = {v for _, v in strong}
+            fixed.setdefault(crops.pop(), []).append(named.pop() if len(named) == 1 else None)
+    for crop, varieties in fixed.items():
+        if len(varieties) > 1 and (None in varieties or len(set(varieties)) < len(varieties)):
+            raise PromptError(
+                f"{mention.text!r} asks for {len(members)} different crops, but the prompt "
+                f"makes {len(varieties)} of them {crop}",
+                stage="resolve",
+                hint="name a different crop for each field, or drop 'different' to have "
+                f"several {crop.lower()} fields",
+            )
 
 
 def _word_before(items: Sequence[Item], index: int | None) -> Item | None:

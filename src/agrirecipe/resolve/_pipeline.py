@@ -43,6 +43,7 @@ from agrirecipe.resolve._intent import (
     SceneIntent,
     TraceStep,
 )
+from agrirecipe.resolve._lexicon import vocabulary
 from agrirecipe.resolve._registry import get_resolver
 
 if TYPE_CHECKING:
@@ -210,9 +211,10 @@ def build_recipe(
     steps: list[TraceStep] = []
     _validate(intent, context)
     crops = _choose_crops(intent, context, steps)
+    varieties = _distinct_varieties(intent, crops, context, steps)
     scene_season = _scene_season(intent, crops, context)
     plans = [
-        _enrich(intent, index, crops[index], scene_season, context, steps)
+        _enrich(intent, index, crops[index], varieties[index], scene_season, context, steps)
         for index in range(len(intent.fields))
     ]
     warnings = list(intent.warnings)
@@ -425,6 +427,46 @@ def _choose_crops(
     return [crop for crop in chosen if crop is not None]
 
 
+def _distinct_varieties(
+    intent: SceneIntent, crops: Sequence[str], context: ResolveContext, steps: list[TraceStep]
+) -> list[str | None]:
+    """Different varieties for "different" fields of one named crop ("two different apple
+    orchards"): the default variety first, then seeded choices among those not yet used.
+
+    Returns a variety per field, None where the field's own or default variety stands.
+    """
+    rng = random.Random(context.seed)
+    chosen: list[str | None] = [None] * len(intent.fields)
+    groups: dict[tuple[int, str], list[int]] = {}
+    for index, field in enumerate(intent.fields):
+        if field.distinct_group is not None:
+            groups.setdefault((field.distinct_group, crops[index]), []).append(index)
+    for (_, crop), members in groups.items():
+        if len(members) < 2:
+            continue
+        used = {intent.fields[i].variety for i in members if intent.fields[i].variety}
+        names = [v.name for v in context.hierarchy.crop(crop).varieties]
+        default = context.knowledge.default_variety(crop)
+        for index in members:
+            if intent.fields[index].variety is not None:
+                continue
+            unused = [v for v in names if v not in used]
+            if not unused:
+                break  # more fields than varieties: the rest keep the default
+            variety = default if default in unused else rng.choice(unused)
+            used.add(variety)
+            chosen[index] = variety
+            steps.append(
+                TraceStep(
+                    stage="choose",
+                    subject=intent.fields[index].text,
+                    detail=f"different {crop} fields: variety {variety} "
+                    f"(not yet used of {', '.join(names)}; seed {context.seed})",
+                )
+            )
+    return chosen
+
+
 def _scene_season(
     intent: SceneIntent, crops: Sequence[str], context: ResolveContext
 ) -> tuple[Season, str]:
@@ -459,6 +501,7 @@ def _enrich(
     intent: SceneIntent,
     index: int,
     crop: str,
+    distinct_variety: str | None,
     scene_season: tuple[Season, str],
     context: ResolveContext,
     steps: list[TraceStep],
@@ -484,7 +527,15 @@ def _enrich(
         notes.append(f"{name} {value} ({why})")
         return value
 
-    variety = pick("variety", field.variety, lambda: (knowledge.default_variety(crop), "default"))
+    variety = pick(
+        "variety",
+        field.variety,
+        lambda: (
+            (distinct_variety, "different from the other fields")
+            if distinct_variety is not None
+            else (knowledge.default_variety(crop), "default")
+        ),
+    )
 
     # A season said for one field and contradicted by none holds for the scene.
     said = {f.season for f in intent.fields if f.season is not None}
@@ -512,7 +563,9 @@ def _enrich(
     noun = field.noun
     if noun is None or (field.generic and noun not in _KIND_NOUNS):
         # "four fields" that became an apple crop are orchards.
-        noun = _NOUN_BY_FORM.get(knowledge.crop_file(crop).growth_form, "field")
+        noun = vocabulary()["crop_plot_nouns"].get(crop) or _NOUN_BY_FORM.get(
+            knowledge.crop_file(crop).growth_form, "field"
+        )
     return _Plan(
         intent=field,
         crop=crop,

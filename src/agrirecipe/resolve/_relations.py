@@ -9,6 +9,7 @@ makes a row. Plural mentions expand to their fields.
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Sequence
 from typing import Any
 
@@ -51,6 +52,21 @@ def read_relations(
                 # "potatoes, onions and cabbages side by side": a row, each beside the next.
                 for first, second in zip(group[1:], group, strict=False):
                     relations.extend(_pair("next_to", first, (second,), members, link, trace))
+                continue
+            fields = members.get(id(group[0]), []) if len(group) == 1 else []
+            if len(fields) >= 2:
+                # "two different fruits side by side": the fields of one mention in a row.
+                trace.append(
+                    TraceStep(
+                        stage="decompose",
+                        subject=link.raw,
+                        detail=f"the {len(fields)} fields of {group[0].text!r} in a row",
+                    )
+                )
+                relations.extend(
+                    RelationIntent(kind="next_to", subject=b, objects=(a,), text=link.raw)
+                    for a, b in itertools.pairwise(fields)
+                )
                 continue
         pairs = _relation_mentions(link, before, after, pronoun=pronoun)
         if pairs is None:

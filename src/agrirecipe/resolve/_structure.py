@@ -23,8 +23,10 @@ __all__ = [
     "apply_corrections",
     "apply_plural_counts",
     "apply_refinements",
+    "dissolve_plant_parts",
     "merge_coreferences",
     "promote_weak_varieties",
+    "raise_conflicts",
 ]
 
 
@@ -134,6 +136,8 @@ def apply_corrections(clauses: Sequence[Clause]) -> list[str]:
         for earlier in reversed(clauses[:position]):
             if earlier.mentions:
                 dropped.append(earlier.mentions.pop().text)
+                while earlier.mentions and earlier.mentions[-1].continued:
+                    dropped.append(earlier.mentions.pop().text)
                 break
     return dropped
 
@@ -269,6 +273,48 @@ def _counted_reference(items: Sequence[Item]) -> int | None:
     if value != int(value) or value < 1:
         return None
     return int(value)
+
+
+def raise_conflicts(clauses: Sequence[Clause]) -> None:
+    """Raise the first contradiction of a mention still standing after corrections."""
+    for clause in clauses:
+        for mention in clause.mentions:
+            if mention.conflict is not None:
+                raise mention.conflict
+
+
+def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
+    """', fruit ripe' after named fields: the fields' own fruit, so its words are attributes.
+
+    A clause whose only mention is a plant-part word ("fruit", "berries") with a stage
+    or health word and no count, following a clause that named fields, becomes a
+    head-less clause, so its attributes go to those fields. Returns what was dissolved.
+    """
+    parts = {str(word) for word in vocabulary()["plant_part_words"]}
+    dissolved: list[str] = []
+    for position, clause in enumerate(clauses):
+        if (
+            position == 0
+            or len(clause.mentions) != 1
+            or not any(c.mentions for c in clauses[:position])
+        ):
+            continue
+        mention = clause.mentions[0]
+        if (
+            not all(h.norm in parts for h in mention.heads)
+            or mention.count is not None
+            or mention.quantity is not None
+            or mention.distinct
+            or mention.other
+            or not any(i.role in ("stage", "health") for i in mention.items)
+        ):
+            continue
+        for head in mention.heads:
+            head.role = "filler"
+        clause.loose = [*clause.loose, *mention.items]
+        clause.mentions = []
+        dissolved.append(mention.text)
+    return dissolved
 
 
 def _definite_words() -> set[str]:
