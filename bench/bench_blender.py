@@ -33,6 +33,8 @@ import time
 from pathlib import Path
 from typing import Any
 
+import _doc
+
 # The recipe, machine description and peak-memory probe are shared with the layout benchmark.
 from bench_layout_usd import build_recipe, cpu_model, peak_rss_mb
 
@@ -224,14 +226,7 @@ def main() -> int:
 
 def update_doc(section: str) -> None:
     """Replace this benchmark's section of docs/PERFORMANCE.md (append it the first time)."""
-    text = DOC.read_text(encoding="utf-8") if DOC.exists() else "# Performance\n"
-    if START in text and END in text:
-        before, rest = text.split(START, 1)
-        after = rest.split(END, 1)[1].lstrip("\n")
-        text = before + section + ("\n" + after if after else "")
-    else:
-        text = text.rstrip("\n") + "\n\n" + section
-    DOC.write_text(text, encoding="utf-8")
+    _doc.update_doc(section, START, END, DOC)
 
 
 if __name__ == "__main__":

@@ -39,6 +39,8 @@ from functools import partial
 from pathlib import Path
 from typing import TypeVar
 
+import _doc
+
 from agrirecipe.recipe import SceneRecipe
 
 REPO = Path(__file__).resolve().parent.parent
@@ -296,20 +298,8 @@ def report(results: Results) -> str:
 
 
 def update_doc(section: str) -> None:
-    header = (
-        "# Performance\n\n"
-        "Measured numbers, written by the benchmark scripts in `bench/`. Re-run a script to\n"
-        "refresh its section; each script only replaces the text between its own markers.\n\n"
-    )
-    text = DOC.read_text(encoding="utf-8") if DOC.exists() else header
-    if START in text and END in text:
-        before, rest = text.split(START, 1)
-        after = rest.split(END, 1)[1].lstrip("\n")
-        text = before + section + ("\n" + after if after else "")
-    else:
-        text = text.rstrip("\n") + "\n\n" + section
-    DOC.parent.mkdir(parents=True, exist_ok=True)
-    DOC.write_text(text, encoding="utf-8")
+    """Replace this benchmark's section of docs/PERFORMANCE.md (append it the first time)."""
+    _doc.update_doc(section, START, END, DOC)
 
 
 def main() -> int:

@@ -31,6 +31,8 @@ import sys
 import time
 from pathlib import Path
 
+import _doc
+
 # The machine description and peak-memory probe are shared with the layout benchmark.
 from bench_layout_usd import cpu_model, peak_rss_mb
 
@@ -176,16 +178,8 @@ def report(results: dict[str, object]) -> str:
 
 
 def update_doc(section: str) -> None:
-    """Replace this benchmark's section in docs/PERFORMANCE.md, or append it at the end."""
-    text = DOC.read_text(encoding="utf-8") if DOC.exists() else "# Performance\n"
-    if START in text and END in text:
-        before, rest = text.split(START, 1)
-        after = rest.split(END, 1)[1].lstrip("\n")
-        text = before + section + ("\n" + after if after else "")
-    else:
-        text = text.rstrip("\n") + "\n\n" + section
-    DOC.parent.mkdir(parents=True, exist_ok=True)
-    DOC.write_text(text, encoding="utf-8")
+    """Replace this benchmark's section of docs/PERFORMANCE.md (append it the first time)."""
+    _doc.update_doc(section, START, END, DOC)
 
 
 def main() -> int:

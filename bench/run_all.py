@@ -11,7 +11,12 @@ import subprocess
 import sys
 from pathlib import Path
 
-BENCHMARKS = ("bench_layout_usd.py", "bench_blender.py", "bench_unreal_script_size.py")
+BENCHMARKS = (
+    "bench_layout_usd.py",
+    "bench_blender.py",
+    "bench_unreal_script_size.py",
+    "bench_llm_threads.py",
+)
 
 
 def main() -> int:

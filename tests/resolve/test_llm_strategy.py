@@ -231,7 +231,40 @@ def test_plants_parts_and_rows(resolver: LlmResolver, context: ResolveContext) -
     apples = resolver.resolve_intent("two different apple orchards", context)
     assert [(f.crop, f.distinct_group) for f in apples.fields] == [("Apple", 0)] * 2
     trees = resolver.resolve_intent("a wheat field, fruit trees in bloom", context)
-    assert [f.crop for f in trees.fields][0] == "Wheat" and len(trees.fields) == 2
+    assert trees.fields[0].crop == "Wheat" and len(trees.fields) == 2
+
+
+def test_the_model_is_asked_only_where_a_choice_is_left(
+    resolver: LlmResolver, context: ResolveContext
+) -> None:
+    def trace(prompt: str) -> dict[str, str]:
+        intent = resolver.resolve_intent(prompt, context)
+        return {s.subject: s.detail for s in intent.trace if s.subject in ("request", "model")}
+
+    single = trace("a Granny Smith apple orchard in spring")
+    assert single == {
+        "request": "at most one field named: one part (the model is not asked)",
+        "model": "asked 0 time(s); every other line had one candidate",
+    }
+    joined = trace("Gala apples north of Nantes carrots")
+    assert joined["request"].startswith("parts fixed by the joining words")
+    assert joined["model"].startswith("asked 1 time")  # which field is north
+    # no joining word between the two fields: the model draws the boundary
+    unjoined = trace("Gala apples Nantes carrots in summer")
+    assert unjoined["request"].startswith("model parts:")
+    intent = resolver.resolve_intent("Gala apples Nantes carrots in summer", context)
+    assert [(f.crop, f.variety) for f in intent.fields] == [("Apple", "Gala"), ("Carrot", "Nantes")]
+
+
+def test_one_side_reads_as_a_square(resolver: LlmResolver, context: ResolveContext) -> None:
+    intent = resolver.resolve_intent("a Bintje potato field 100 m long", context)
+    size = intent.fields[0].size
+    assert size is not None and (size.width_m, size.length_m) == (100.0, 100.0)
+    both = resolver.resolve_intent("a carrot field 40 m wide and 80 m long", context)
+    size = both.fields[0].size
+    assert size is not None and (size.width_m, size.length_m) == (40.0, 80.0)
+    with pytest.raises(PromptError):
+        generate("an apple orchard 2 mm long", resolver="llm")
 
 
 def test_overlong_prompt(resolver: LlmResolver, context: ResolveContext) -> None:

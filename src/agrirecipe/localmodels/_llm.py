@@ -169,7 +169,7 @@ class LlamaCppModel:
             )
         self.model_path = Path(model_path) if model_path is not None else None
         self.n_ctx = n_ctx
-        self.n_threads = n_threads or max(1, min(os.cpu_count() or 1, 8))
+        self._threads = n_threads
         self.seed = seed
         self.block_tokens = block_tokens
         self.state_cache = state_cache
@@ -189,6 +189,15 @@ class LlamaCppModel:
     def path(self) -> Path:
         """The GGUF file."""
         return self.model_path or default_gguf_path()
+
+    @property
+    def n_threads(self) -> int:
+        """CPU threads llama.cpp uses: as given, else every core up to 8.
+
+        For the default 270M model one or two threads make little difference on
+        2 cores, idle or shared (bench/bench_llm_threads.py, docs/PERFORMANCE.md).
+        """
+        return self._threads or max(1, min(os.cpu_count() or 1, 8))
 
     @property
     def model_id(self) -> str:

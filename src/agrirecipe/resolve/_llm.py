@@ -20,7 +20,11 @@ from the hierarchy and the recipe schema (:mod:`agrirecipe.resolve._grammar`)::
     Relations: 1 next to 2
 
 1. **Decompose**: the model splits the request into parts; the grammar only
-   offers runs of the request's own words, in order, without overlap.
+   offers runs of the request's own words, in order, without overlap. It is
+   asked where two fields the words name have no joining word ("and", a
+   comma, "next to") between them; elsewhere the joining words fix every
+   boundary, step 2 would overrule any other answer, and the line is written
+   without asking (``narrow=False`` always asks).
 2. **Validate and repair the parts** (deterministic): a part naming two plants
    is split between them, a plant no part covers joins the part next to it,
    words naming no plant are merged into a neighbour or, with "all", shared
@@ -30,9 +34,11 @@ from the hierarchy and the recipe schema (:mod:`agrirecipe.resolve._grammar`)::
    words, counts, plants the hierarchy does not hold).
 4. **Per-field subquery**: one line per attribute, each a choice among the
    retrieved candidates. The model decides wherever more than one is left
-   ("cherry" in "a cherry orchard": Cherry or Tomato; "Parts"; sizes;
-   relations); a single candidate is written without asking, and with nothing
-   retrieved every canonical value plus "none" is offered.
+   ("cherry" in "a cherry orchard": Cherry or Tomato; sizes; relations other
+   than one "next to" between two parts, which reads one way only); a single
+   candidate is written without asking, and with nothing retrieved every
+   canonical value plus "none" is offered. The trace says how often the model
+   was asked.
 5. **Validate the record** (deterministic): "other" is an
    :class:`~agrirecipe.UnknownCropError` listing the nearest known crops; a
    variety of one crop named beside another crop is a contradiction
@@ -339,11 +345,17 @@ def _size_options(items: Sequence[Item], readings: Sequence[Sequence[Any]]) -> l
             if len(pending) >= 2:
                 options.append(f"{pending[-2]} x {pending[-1]} {item.norm}")
             elif sided is not None and sided[1] == item.norm:
+                square = f"{sided[0]} x {sided[0]} {item.norm}"
+                if square in options:  # "40 m wide and 80 m long" is one rectangle
+                    options.remove(square)
                 options.append(f"{sided[0]} x {pending[-1]} {item.norm}")
                 sided = None
             else:
                 sided = (pending[-1], item.norm)
             pending = []
+        elif "side" in kinds and sided is not None:
+            # "a 100 m long field": one side only reads as a square (as the lexical reader)
+            options.append(f"{sided[0]} x {sided[0]} {sided[1]}")
         elif not (kinds.keys() & {"dimension_joiner", "filler"}):
             pending = []
     return list(dict.fromkeys(options))
@@ -485,6 +497,7 @@ class _Mention:
     plot: bool = False
     plot_options: tuple[str, ...] = ()
     article: bool = False  # "a", "another", "two": a new field may follow
+    definite: bool = False  # "the trees": points back at a field named before
 
 
 def _mentions(
@@ -510,6 +523,7 @@ def _mentions(
     items = lexicon.tag(tokenize(request))
     readings = _readings(lexicon, items)
     parts = {str(word) for word in vocabulary()["plant_part_words"]}
+    definite_words = {str(word) for word in vocabulary()["definite_words"]}
     for index, item in enumerate(items):
         first, last = word_at(item.start), word_at(item.end - 1)
         if _plants_of_previous(found, first, readings[index]) or (
@@ -551,8 +565,16 @@ def _mentions(
             if plot_category is None and options:
                 categories = {hierarchy.crops[c].category for c in options}
                 plot_category = next(iter(categories)) if len(categories) == 1 else None
+            definite = index > 0 and items[index - 1].norm in definite_words
             found.append(
-                _Mention(first, last, plot=True, plot_options=options, category=plot_category)
+                _Mention(
+                    first,
+                    last,
+                    plot=True,
+                    plot_options=options,
+                    category=plot_category,
+                    definite=definite,
+                )
             )
     return found, joins
 
@@ -640,9 +662,13 @@ def _groups(
                 continue
             # "a wheat field, fruit trees in bloom": a kind of field after a joining
             # word is a field of its own.
-            own = bool(mention.plot_options) and any(
-                current.last < j <= mention.first  # a comma counts as the next word's
-                for j in joins
+            own = (
+                bool(mention.plot_options)
+                and not mention.definite
+                and any(
+                    current.last < j <= mention.first  # a comma counts as the next word's
+                    for j in joins
+                )
             )
             if not fits and mention.plot and not article and current.other is None and not own:
                 current.last = mention.last
@@ -657,25 +683,44 @@ def _groups(
     return strong if strong else groups
 
 
+def _field_groups(
+    lexicon: Lexicon, request: str, hierarchy: Hierarchy
+) -> tuple[list[_Group], list[int]]:
+    """The fields the words name (grouped mentions) and the joining words' indexes."""
+    mentions, joins = _mentions(lexicon, request, hierarchy)
+    return _groups(mentions, joins, hierarchy), joins
+
+
+def _boundary_open(groups: Sequence[_Group], joins: Sequence[int]) -> bool:
+    """Whether two neighbouring fields have no joining word between them, so the model
+    must decide where one field's words end ("apples with scab carrots young")."""
+    return any(
+        not any(left.last < j < right.first for j in joins)
+        for left, right in itertools.pairwise(groups)
+    )
+
+
 def _repair_parts(
-    parts: Sequence[_Part],
+    parts: Sequence[_Part] | None,
     words: Sequence[str],
     request: str,
     lexicon: Lexicon,
-    hierarchy: Hierarchy,
+    fields: tuple[Sequence[_Group], Sequence[int]],
 ) -> tuple[list[_Part], list[_Part], list[str]]:
     """Check the model's decomposition against the fields the words name; repair it.
 
     Every part must hold exactly one field's words. The model's boundaries are
     kept where they fall between two fields (that is where it decides which
     field the words in between describe); elsewhere a part is split at the
-    first joining word. Returns the field parts, the shared parts ("..., all
+    first joining word. ``parts`` is None when the model was not asked (no
+    boundary was open). Returns the field parts, the shared parts ("..., all
     in autumn", read with every field) and a description of each repair.
     """
-    mentions, joins = _mentions(lexicon, request, hierarchy)
-    groups = _groups(mentions, joins, hierarchy)
+    groups, joins = fields
     if not groups:
         return [], [], []
+    asked = parts is not None
+    parts = parts or []
     model_ends = {p.last for p in parts}
     cuts: list[int] = []  # index of the first word of each part after the first
     repairs: list[str] = []
@@ -687,7 +732,7 @@ def _repair_parts(
         between = [j for j in joins if left.last < j < right.first]
         chosen = [e + 1 for e in model_ends if left.last <= e < right.first]
         cut = between[0] if between else min(chosen) if chosen else left.last + 1
-        if cut not in chosen:
+        if asked and cut not in chosen:
             repairs.append(f"boundary moved to before {words[cut]!r}")
         cuts.append(cut)
     bounds = [0, *cuts, len(words)]
@@ -704,7 +749,7 @@ def _repair_parts(
             repairs.append(f"{tail.text!r} describes every field")
     model = [(p.first, p.last) for p in parts]
     final = [_make_part(a, b, words, request) for a, b in spans if a <= b]
-    if [(p.first, p.last) for p in final] != model and not repairs:
+    if asked and [(p.first, p.last) for p in final] != model and not repairs:
         repairs.append("parts aligned with the fields the words name")
     return final, shared, repairs
 
@@ -855,19 +900,24 @@ class LlmResolver(Resolver):
             warm(self.prefix)  # the few-shot prefix, from the on-disk cache after the first run
         record = _Record(model, self.prefix, request)
 
-        # 1. decompose, 2. validate and repair
-        answer = record.answer("Parts:", grammars.parts_grammar(words), max_tokens=2 * size + 24)
-        model_parts = _parse_parts(answer, words, request)
-        trace.append(
-            TraceStep(
-                stage="decompose",
-                subject="request",
-                detail="model parts: " + (" | ".join(p.text for p in model_parts) or NONE),
+        # 1. decompose, 2. validate and repair. The model is asked only where two
+        # fields have no joining word between them: elsewhere the joining words fix
+        # every boundary and its answer would be overruled (a third of the strategy's
+        # time went to that answer; docs/EVALUATION.md).
+        groups = _field_groups(lexicon, request, context.hierarchy)
+        model_parts: list[_Part] | None = None
+        if _boundary_open(*groups) or not self.narrow:
+            answer = record.answer(
+                "Parts:", grammars.parts_grammar(words), max_tokens=2 * size + 24
             )
-        )
-        parts, shared, repairs = _repair_parts(
-            model_parts, words, request, lexicon, context.hierarchy
-        )
+            model_parts = _parse_parts(answer, words, request)
+            detail = "model parts: " + (" | ".join(p.text for p in model_parts) or NONE)
+        elif len(groups[0]) > 1:
+            detail = "parts fixed by the joining words (the model is not asked)"
+        else:
+            detail = "at most one field named: one part (the model is not asked)"
+        trace.append(TraceStep(stage="decompose", subject="request", detail=detail))
+        parts, shared, repairs = _repair_parts(model_parts, words, request, lexicon, groups)
         trace += [TraceStep(stage="validate", subject="parts", detail=r) for r in repairs]
         if not parts:
             if scene.other:
@@ -926,6 +976,10 @@ class LlmResolver(Resolver):
             kinds = list(dict.fromkeys(scene.relations)) if self.narrow else None
             if kinds == []:
                 record.write(f"Relations: {NONE}\n")
+            elif kinds == ["next_to"] and len(parts) == 2 and len(scene.relations) == 1:
+                # one "next to" between two fields reads one way only (it is symmetric)
+                record.write("Relations: 1 next to 2\n")
+                relations = _parse_relations(" 1 next to 2", first_field, ["next_to"])
             else:
                 answer = record.answer(
                     "Relations:", grammars.relations_grammar(len(parts), kinds), max_tokens=48
@@ -941,6 +995,13 @@ class LlmResolver(Resolver):
                 for a, b in itertools.pairwise(range(len(fields)))
             ]
 
+        trace.append(
+            TraceStep(
+                stage="llm",
+                subject="model",
+                detail=f"asked {record.asked} time(s); every other line had one candidate",
+            )
+        )
         seasons = {f.season for f in fields if f.season is not None}
         return SceneIntent(
             prompt=prompt,
@@ -981,6 +1042,8 @@ class LlmResolver(Resolver):
             return values
         if crop.startswith(ANY_PREFIX):
             options = ["yes"] if evidence.distinct and self.narrow else ["yes", "no"]
+            if values["count"] == "1" and self.narrow:
+                options = ["no"]  # one field differs from no other
             values["different"] = record.choose("Different", options)
         else:
             options = self._variety_options(hierarchy, crop, evidence)
