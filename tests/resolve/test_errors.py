@@ -163,6 +163,31 @@ def test_different_crops_named_the_same(prompt: str, crop: str, count: int) -> N
     assert caught.value.hint and "drop 'different'" in caught.value.hint
 
 
+@pytest.mark.parametrize(
+    "prompt",
+    ["a lettuce field of -2 hectares", "a carrot field -50 by 100 m", "a potato field -100 m long"],
+)
+def test_negative_sizes(prompt: str) -> None:
+    with pytest.raises(PromptError, match="cannot measure '-"):
+        resolve(prompt, resolver="rules")
+    # a dash between numbers or words is not a minus sign
+    assert resolve("a carrot field, 2 ha - healthy", resolver="rules").recipe.fields
+
+
+def test_a_count_that_the_list_after_it_exceeds() -> None:
+    with pytest.raises(PromptError, match="announces 2 field") as caught:
+        resolve("two fields: sweetcorn, durum wheat and romaine lettuce", resolver="rules")
+    assert caught.value.hint and "count" in caught.value.hint
+    listed = resolve("three fields: russet potatoes, chantenay carrots and sturon onions")
+    assert [f.crop for f in listed.recipe.fields] == ["Potato", "Carrot", "Onion"]
+
+
+@pytest.mark.parametrize("prompt", ["whats the weather in leuven tomorrow?", "whats up"])
+def test_everyday_words_are_not_typos_of_crops(prompt: str) -> None:
+    with pytest.raises(PromptError):
+        resolve(prompt, resolver="rules")
+
+
 def test_impossible_relations() -> None:
     with pytest.raises(PromptError):
         resolve(

@@ -744,3 +744,95 @@ def test_placements_around_a_field_named_first() -> None:
 def test_between_them_after_three_fields() -> None:
     recipe = _recipe("wheat, maize and a strawberry patch between them", "rules")
     assert _relations(recipe) == {("between", "Strawberry", ("Wheat", "Maize"))}
+
+
+# --- generalisation fixes found by the blind held-out set 2 -----------------------------
+
+
+@pytest.mark.parametrize("strategy", STRATEGIES)
+def test_a_variety_named_again_is_the_same_field(strategy: str) -> None:
+    recipe = _recipe(
+        "imperator and danvers carrots, 100 m x 25 m each, imperator north of danvers",
+        strategy,
+    )
+    imperator, danvers = recipe.fields
+    assert (imperator.variety, danvers.variety) == ("Imperator", "Danvers")
+    assert [(r.kind, r.subject, r.objects) for r in recipe.relations] == [
+        ("north_of", imperator.id, (danvers.id,))
+    ]
+    # a definite back-reference keeps the relation's direction
+    named = _recipe("Gala and Fuji apples, the Gala north of the Fuji", strategy)
+    gala, fuji = named.fields
+    assert [(r.kind, r.subject, r.objects) for r in named.relations] == [
+        ("north_of", gala.id, (fuji.id,))
+    ]
+    # the same variety on both sides of a relation is two fields
+    twice = _recipe("Valencia oranges next to Valencia oranges", strategy)
+    assert [f.variety for f in twice.fields] == ["Valencia", "Valencia"]
+    assert len(twice.relations) == 1
+
+
+def test_an_orchard_with_a_field_of_another_crop_is_two_fields() -> None:
+    recipe = _recipe("a 2 ha orchard with a potato field to the west of it", "rules")
+    orchard, potatoes = recipe.fields
+    assert orchard.crop in {"Apple", "Pear", "Cherry", "Orange"}
+    assert potatoes.crop == "Potato"
+    assert orchard.geometry.size_m[0] * orchard.geometry.size_m[1] == pytest.approx(20000, 0.01)
+    assert [(r.kind, r.subject) for r in recipe.relations] == [("west_of", potatoes.id)]
+
+
+@pytest.mark.parametrize(
+    ("prompt", "latitude"),
+    [
+        ("a Cripps Pink block ready to pick, march, hawke's bay NZ", -39.6),
+        ("a Gala orchard in NZ in march", -41.0),
+        ("Golden Delicious in South Tyrol in October", 46.6),
+        ("blood oranges near Valencia in april", 39.5),
+        ("give us a potato field", 50.8),  # "us" is not the United States
+    ],
+)
+def test_places_and_their_abbreviations(prompt: str, latitude: float) -> None:
+    recipe = _recipe(prompt, "rules")
+    assert recipe.environment.latitude_deg == latitude
+    if latitude < 0:
+        assert recipe.fields[0].season == "Fall"  # March in the south
+
+
+@pytest.mark.parametrize(
+    ("prompt", "expected"),
+    [
+        (
+            "for the conference demo tomorrow: comice pears in blossom",
+            [("Pear", "Doyenne du Comice")],
+        ),
+        ("a Conference orchard", [("Pear", "Conference")]),
+        ("conference pears", [("Pear", "Conference")]),
+    ],
+)
+def test_a_variety_that_is_an_everyday_word_needs_its_crop_or_plot(
+    prompt: str, expected: list[tuple[str, str]]
+) -> None:
+    assert [(f.crop, f.variety) for f in _recipe(prompt, "rules").fields] == expected
+
+
+def test_a_weak_month_alone_between_commas_is_a_month() -> None:
+    recipe = _recipe("Agria potatoes north of a field of Elsanta strawberries, may", "rules")
+    assert {f.season for f in recipe.fields} == {"Spring"}
+    assert _recipe("apples. May I have them ripe?", "rules").fields[0].season == "Fall"
+
+
+@pytest.mark.parametrize(
+    ("prompt", "crop", "stage"),
+    [
+        (
+            "san marzano tomatos with blight, fruit ripening on the vine, agust",
+            "Tomato",
+            "Maturation",
+        ),
+        ("Young strawberry plants on raised beds", "Strawberry", "Vegetative"),
+        ("vine-ripened tomatoes", "Tomato", "Maturation"),
+    ],
+)
+def test_where_the_fruit_hangs_is_not_a_field(prompt: str, crop: str, stage: str) -> None:
+    recipe = _recipe(prompt, "rules")
+    assert [(f.crop, f.stage) for f in recipe.fields] == [(crop, stage)]

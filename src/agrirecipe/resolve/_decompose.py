@@ -202,9 +202,10 @@ class MentionBuilder:
             ]
             if not interpretations:
                 return False
-        if mention.plot is not None:
-            options = mention.plot["options"]
-            if len(options) == 1 and not any(c == options[0] for c, _, _ in interpretations):
+        if mention.plot is not None and mention.plot["options"] and interpretations:
+            # "a 2 ha orchard with a potato field": the orchard cannot be the potatoes
+            allowed = (*mention.plot["options"], *mention.plot["tolerates"])
+            if not any(c in allowed for c, _, _ in interpretations):
                 return False
         return _combine(mention.interpretations, interpretations) is not None
 
@@ -441,6 +442,7 @@ def resolve_weak_varieties(mention: Mention) -> None:
     if not weak_items:
         return
     strong_crops = {c for c, _, weak in mention.interpretations or () if not weak}
+    plot_crops = set(mention.plot["options"]) if mention.plot and not strong_crops else set()
     for item in weak_items:
         options: list[Interpretation] = [
             (s.crop, str(s.value), False)
@@ -454,6 +456,17 @@ def resolve_weak_varieties(mention: Mention) -> None:
                 item.role = "head"
                 mention.heads.append(item)
                 continue
+        # "a conference orchard": a plot that holds the variety's crop names it too
+        held: list[Interpretation] = [
+            (s.crop, str(s.value), False)
+            for s in item.senses_of("variety")
+            if s.crop is not None and s.crop in plot_crops
+        ]
+        if len({crop for crop, _, _ in held}) == 1 and mention.interpretations is None:
+            mention.interpretations = held
+            item.role = "head"
+            mention.heads.append(item)
+            continue
         item.role = "filler"
 
 

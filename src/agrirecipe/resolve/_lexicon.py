@@ -147,8 +147,9 @@ def normalise(text: str) -> str:
 
 # Numbers (with a decimal point or comma), words, and single punctuation marks.
 # Hyphens and apostrophes inside words are dropped so "harvest-ready" == "harvest ready";
-# a hyphen between spaces is a dash ("two orchards - Gala and Fuji").
-_TOKEN = re.compile(r"\d+(?:[.,]\d+)*|[^\W\d_]+|[^\w\s'’\-]|(?<=\s)-(?=\s)")
+# a hyphen between spaces is a dash ("two orchards - Gala and Fuji"), and one written
+# onto a number is a minus sign ("-2 ha", not the dash of "50-100").
+_TOKEN = re.compile(r"\d+(?:[.,]\d+)*|[^\W\d_]+|[^\w\s'’\-]|(?<=\s)-(?=\s)|(?<![\w.])[-−](?=\d)")
 
 
 def tokenize(prompt: str) -> list[Token]:
@@ -222,7 +223,10 @@ class Lexicon:
 
     def add(self, phrase: str, sense: Sense, *, derived: bool = False) -> None:
         """Add a sense to a phrase; a derived form (a plural) never shadows a real entry."""
-        words = tuple(normalise(phrase).split())
+        # Split as prompts are, so "hawke's bay" matches what a user types.
+        words = tuple(token.norm for token in tokenize(phrase)) or tuple(
+            normalise(phrase).split()  # a lone dash is a token only between spaces
+        )
         if not words:
             return
         senses = self.phrases.setdefault(words, [])
@@ -326,6 +330,8 @@ def other_crops(hierarchy: Hierarchy) -> dict[str, OtherCrop]:
 # vocabulary.yaml sections: lists of phrases with one sense each...
 _PLAIN_LISTS: dict[str, SenseKind] = {
     "filler": "filler",
+    "filler_phrases": "filler",
+    "common_words": "filler",
     "negations": "negation",
     "dimension_joiners": "dimension_joiner",
     "conjunctions": "conjunction",

@@ -102,10 +102,13 @@ def _pair(
             pair = (object_fields[0][0], object_fields[0][1])
         else:
             pair = (object_fields[0][0], object_fields[1][0])
+        if len({subject_fields[0], *pair}) < 3:
+            return []
         return [
             RelationIntent(kind="between", subject=subject_fields[0], objects=pair, text=link.raw)
         ]
-    pairs = [(s, o) for s in subject_fields for o in object_fields[0]]
+    # a field named twice ("Valencia oranges ... near Valencia") is not beside itself
+    pairs = [(s, o) for s in subject_fields for o in object_fields[0] if s != o]
     if kind == "next_to" and len(pairs) > 2:
         # Groups side by side: one field can touch at most two in a row, so
         # "two orchards next to three fields" means the groups touch.
@@ -246,7 +249,8 @@ def coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:
     group = [clauses[index].mentions[-1]]
     while index > 0 and clauses[index - 1].mentions and listing(clauses[index].link):
         index -= 1
-        group.append(clauses[index].mentions[-1])
+        if clauses[index].mentions[-1] not in group:  # a field named again stands twice
+            group.append(clauses[index].mentions[-1])
     return group
 
 

@@ -56,12 +56,22 @@ def assign_roles(items: Sequence[Item]) -> None:
     """Give every item its role (in place)."""
     cues = {str(word) for word in vocabulary()["month_cues"]}
     previous: Item | None = None
-    for item in items:
-        item.role = _role(item, previous, cues)
+    for index, item in enumerate(items):
+        following = items[index + 1] if index + 1 < len(items) else None
+        item.role = _role(item, previous, cues, alone=_alone(previous, following))
         previous = item
 
 
-def _role(item: Item, previous: Item | None, cues: set[str]) -> str:
+def _alone(previous: Item | None, following: Item | None) -> bool:
+    """Between separators (or at the end): ", may" is a month, "may I" is not."""
+    return (
+        previous is not None
+        and previous.has("separator")
+        and (following is None or following.has("separator"))
+    )
+
+
+def _role(item: Item, previous: Item | None, cues: set[str], *, alone: bool = False) -> str:
     senses = item.senses
     if not senses:
         value = number_value(item.norm)
@@ -82,6 +92,7 @@ def _role(item: Item, previous: Item | None, cues: set[str]) -> str:
         if (
             kind == "month"
             and sense.weak
+            and not alone
             and (previous is None or previous.norm.split()[-1] not in cues)
         ):
             continue
@@ -123,6 +134,8 @@ def read_sizes(items: list[Item]) -> list[Item]:
     pending_items: list[Item] = []
     while index < len(items):
         matched = _match_area(items, index) or _match_rectangle(items, index)
+        if matched is not None or _match_side(items, index) is not None:
+            _reject_negative(items, index)
         if matched is not None:
             size, width = matched
             out.append(_size_item(items[index : index + width], size))
@@ -161,6 +174,22 @@ def _size_item(parts: Sequence[Item], size: SizeIntent) -> Item:
     item = Item(tokens, (Sense("filler"),), role="size")
     item.data["size"] = size
     return item
+
+
+_MINUS = frozenset({"-", "−", "–"})
+
+
+def _reject_negative(items: Sequence[Item], index: int) -> None:
+    """'-2 hectares': a minus sign written onto a size's number (not '50-100 m')."""
+    if index == 0:
+        return
+    sign = items[index - 1]
+    if sign.raw not in _MINUS or sign.end != items[index].start:
+        return
+    if index >= 2 and _amount(items[index - 2]) is not None:
+        return  # a range or a dash between numbers
+    words = " ".join(item.raw for item in items[index : index + 2])
+    _positive(-1.0, sign.raw + words)
 
 
 def _positive(value: float, text: str) -> float:

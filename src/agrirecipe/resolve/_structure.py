@@ -15,6 +15,7 @@ from __future__ import annotations
 import itertools
 from collections.abc import Sequence
 
+from agrirecipe._errors import PromptError
 from agrirecipe.resolve._decompose import Clause, Mention, MentionBuilder
 from agrirecipe.resolve._lexicon import Item, vocabulary
 from agrirecipe.resolve._relations import listing
@@ -211,7 +212,16 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
                 enumerating or link.norm in (":", "-", "—", "–")
             )
             listed = listing and bool(clause.mentions) and (sub.count or 1) == 1
-            if (is_reference or listed) and _fits(sub, parent, crop_categories) and _room(parent):
+            fits = _fits(sub, parent, crop_categories)
+            if listed and enumerating and fits and not _room(parent) and parent.rest is None:
+                # "two fields: sweetcorn, durum wheat and romaine lettuce"
+                raise PromptError(
+                    f"{parent.text!r} announces {parent.count} field(s), but "
+                    f"{len(parent.refinements) + 1} or more are listed after it",
+                    stage="resolve",
+                    hint="make the count match the list, or drop the count",
+                )
+            if (is_reference or listed) and fits and _room(parent):
                 sub.is_refinement = True
                 kind = first.data.get("value") if first is not None else "one"
                 if share_of is not None:
@@ -344,12 +354,17 @@ def merge_coreferences(
         is_definite = first is not None and first.norm in definite
         bare = clause.link is not None and clause.link.role == "separator"
         summary = _is_summary(mention)
+        # "imperator and danvers carrots, ..., imperator north of danvers": a variety
+        # named again without an article is the field already named.
+        repeated = [m for m in reversed(kept) if _same_variety(m, mention)]
+        if repeated and _related_to(clauses, clause, repeated[0]):
+            repeated = []  # "Valencia oranges next to Valencia oranges": two fields
         anaphoric = (
             (mention.count is None or summary)
             and not mention.distinct
             and not mention.other
             and not mention.refinements
-            and (is_definite or bare)
+            and (is_definite or bare or bool(repeated))
         )
         if not anaphoric:
             kept.append(mention)
@@ -366,7 +381,7 @@ def merge_coreferences(
             v is not None for _, v, weak in mention.interpretations or () if not weak
         )
         if names_variety:
-            run = run[:1]
+            run = [m for m in repeated if _compatible(builder, m, mention)][:1] or run[:1]
         if not run and is_definite:
             run = [m for m in reversed(kept) if _compatible(builder, m, mention)][:1]
         if not run:
@@ -379,8 +394,33 @@ def merge_coreferences(
                 for head in mention.heads:
                     if head.role in ("head", "plot"):
                         builder.add_head(target, head)
-        clause.mentions.remove(mention)
+        if len(run) == 1:
+            # The field stands where it was named again, so relation words around
+            # this clause ("the Gala north of the Fuji") link the right fields.
+            clause.mentions[clause.mentions.index(mention)] = run[0]
+        else:
+            clause.mentions.remove(mention)
     return kept
+
+
+def _related_to(clauses: Sequence[Clause], clause: Clause, earlier: Mention) -> bool:
+    """Whether ``clause`` opens with a relation word right after ``earlier``."""
+    link = clause.link
+    if link is None or link.role not in ("relation", "between", "trailer"):
+        return False
+    before = [m for c in clauses[: clause.index] for m in c.mentions]
+    return bool(before) and before[-1] is earlier
+
+
+def _same_variety(earlier: Mention, mention: Mention) -> bool:
+    """Both name the same variety outright (not a weak reading) and ``mention`` no count."""
+    if mention.count is not None:
+        return False
+
+    def named(m: Mention) -> set[tuple[str, str]]:
+        return {(c, v) for c, v, weak in m.interpretations or () if v is not None and not weak}
+
+    return bool(named(mention)) and named(mention) <= named(earlier)
 
 
 def _is_summary(mention: Mention) -> bool:
