@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING, Literal
 
 from agrirecipe._errors import ConfigurationError
 from agrirecipe._files import write_atomic
-from agrirecipe.recipe import SceneRecipe, dump_recipe, load_recipe
+from agrirecipe.recipe import DEFAULT_MAX_PLANTS, SceneRecipe, dump_recipe, load_recipe
 
 if TYPE_CHECKING:
     from agrirecipe.hierarchy import Hierarchy
@@ -87,6 +87,7 @@ def generate(
     knowledge: KnowledgeBase | str | Path | None = None,
     latitude_deg: float | None = None,
     explain: bool = False,
+    max_plants: int = DEFAULT_MAX_PLANTS,
 ) -> Scene:
     """Turn a natural-language request into a :class:`Scene`.
 
@@ -95,7 +96,9 @@ def generate(
     ``hierarchy``/``knowledge`` default to the shipped files; a path loads a
     user's own. ``latitude_deg`` places the scene (default: Belgium, 50.9 N)
     unless the prompt says otherwise. With ``explain=True`` the scene's
-    ``explanation`` shows what each stage produced.
+    ``explanation`` shows what each stage produced. ``max_plants`` caps the
+    scene's planting positions (default 10 million; a 5 ha wheat field holds
+    about 7.6 million).
     """
     from agrirecipe.resolve import resolve
 
@@ -107,5 +110,6 @@ def generate(
         knowledge=knowledge,
         latitude_deg=latitude_deg,
         explain=explain,
+        max_plants=max_plants,
     )
     return Scene(resolution.recipe, explanation=resolution.explanation)

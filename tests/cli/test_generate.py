@@ -92,3 +92,11 @@ def test_bad_prompts_exit_2_with_a_message(
     assert main(["generate", prompt, "-o", str(tmp_path / "out")]) == 2
     assert message in capsys.readouterr().err
     assert not (tmp_path / "out").exists()
+
+
+def test_max_plants(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    command = ["generate", "a 2 ha wheat field", "-o", str(tmp_path / "out"), "--backends", ""]
+    assert main([*command, "--max-plants", "1000000"]) == 2
+    assert "more than the cap of 1,000,000" in capsys.readouterr().err
+    assert not (tmp_path / "out").exists()
+    assert main(command) == 0  # ~3 million plants: under the default cap

@@ -188,6 +188,19 @@ def test_everyday_words_are_not_typos_of_crops(prompt: str) -> None:
         resolve(prompt, resolver="rules")
 
 
+def test_the_plant_cap_is_a_setting() -> None:
+    prompt = "winter wheat just emerging in autumn, 5 hectares"
+    recipe = resolve(prompt, resolver="rules").recipe  # ~7.6 million plants
+    assert 5_000_000 < recipe.nominal_plant_count <= 10_000_000
+    with pytest.raises(PromptError, match="more than the cap of 1,000,000") as caught:
+        resolve(prompt, resolver="rules", max_plants=1_000_000)
+    assert caught.value.hint and "max_plants=N" in caught.value.hint
+    with pytest.raises(PromptError, match="cap of 10,000,000"):
+        resolve("a 10 ha wheat field", resolver="rules")
+    big = resolve("a 10 ha wheat field", resolver="rules", max_plants=20_000_000).recipe
+    assert big.nominal_plant_count > 10_000_000
+
+
 def test_impossible_relations() -> None:
     with pytest.raises(PromptError):
         resolve(
@@ -208,6 +221,8 @@ def test_impossible_relations() -> None:
         ({"resolver": 3}, "resolver"),
         ({"hierarchy": 3}, "hierarchy"),
         ({"knowledge": 3}, "knowledge"),
+        ({"max_plants": 0}, "max_plants"),
+        ({"max_plants": 2.5}, "max_plants"),
     ],
 )
 def test_bad_arguments(options: dict[str, object], match: str) -> None:

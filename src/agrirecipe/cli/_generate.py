@@ -11,6 +11,7 @@ from typing import Any
 def register(subparsers: Any) -> None:
     """Add the ``generate`` sub-command."""
     from agrirecipe._scene import DEFAULT_BACKENDS
+    from agrirecipe.recipe import DEFAULT_MAX_PLANTS
 
     parser = subparsers.add_parser(
         "generate",
@@ -35,6 +36,12 @@ def register(subparsers: Any) -> None:
     parser.add_argument("--hierarchy", type=Path, help="a custom hierarchy.yaml")
     parser.add_argument("--latitude", type=float, default=None, help="scene latitude in degrees")
     parser.add_argument("--explain", action="store_true", help="show what each stage produced")
+    parser.add_argument(
+        "--max-plants",
+        type=int,
+        default=DEFAULT_MAX_PLANTS,
+        help=f"cap on the scene's planting positions (default {DEFAULT_MAX_PLANTS:,})",
+    )
     parser.set_defaults(handler=run)
 
 
@@ -49,6 +56,7 @@ def run(args: argparse.Namespace) -> int:
         hierarchy=args.hierarchy,
         latitude_deg=args.latitude,
         explain=args.explain,
+        max_plants=args.max_plants,
     )
     if args.explain and scene.explanation is not None:
         print(scene.explanation.render(), file=sys.stderr)

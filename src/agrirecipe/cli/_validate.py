@@ -20,7 +20,7 @@ def register(subparsers: Any) -> None:
     parser.add_argument("files", nargs="+", type=Path, metavar="FILE", help="recipe JSON files")
     parser.add_argument("--hierarchy", type=Path, help="a custom hierarchy.yaml")
     parser.add_argument(
-        "--max-plants", type=int, default=None, help="cap on plants per recipe (default 5,000,000)"
+        "--max-plants", type=int, default=None, help="cap on plants per recipe (default 10,000,000)"
     )
     parser.set_defaults(handler=run)
 

@@ -52,7 +52,7 @@ __all__ = [
 
 SCHEMA_VERSION = "1.0"
 #: Default cap on the nominal number of plants in one recipe (see ``max_plants`` context).
-DEFAULT_MAX_PLANTS = 5_000_000
+DEFAULT_MAX_PLANTS = 10_000_000
 
 Stage = Literal["Vegetative", "Reproductive", "Maturation"]
 Season = Literal["Spring", "Summer", "Fall", "Winter"]

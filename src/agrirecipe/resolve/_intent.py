@@ -32,7 +32,7 @@ from typing import TYPE_CHECKING, ClassVar, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
-from agrirecipe.recipe import HealthState, RelationKind, Season, Stage
+from agrirecipe.recipe import DEFAULT_MAX_PLANTS, HealthState, RelationKind, Season, Stage
 
 if TYPE_CHECKING:
     from agrirecipe.hierarchy import Hierarchy
@@ -206,6 +206,8 @@ class ResolveContext:
     seed: int = 0
     latitude_deg: float | None = None
     explain: bool = False
+    #: The most planting positions the recipe may hold (SceneRecipe's ``max_plants``).
+    max_plants: int = DEFAULT_MAX_PLANTS
 
 
 class Resolver(ABC):

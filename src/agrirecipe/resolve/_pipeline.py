@@ -27,6 +27,7 @@ from agrirecipe.enrich import DEFAULT_LATITUDE_DEG, build_environment, build_fie
 from agrirecipe.hierarchy import Hierarchy, default_hierarchy, load_hierarchy
 from agrirecipe.knowledge import KnowledgeBase, default_knowledge_base, load_knowledge_base
 from agrirecipe.recipe import (
+    DEFAULT_MAX_PLANTS,
     AttributeName,
     FieldSpec,
     HealthState,
@@ -79,13 +80,15 @@ def resolve(
     knowledge: KnowledgeBase | str | Path | None = None,
     latitude_deg: float | None = None,
     explain: bool = False,
+    max_plants: int = DEFAULT_MAX_PLANTS,
 ) -> Resolution:
     """Turn a natural-language request into a validated :class:`SceneRecipe`.
 
     ``resolver`` is a strategy name ("rules", "embedding", "llm", "hybrid",
     "auto") or a :class:`Resolver`. ``hierarchy`` and ``knowledge`` are objects
     or paths (the shipped ones when None). ``latitude_deg`` overrides a place
-    named in the prompt. Raises :class:`~agrirecipe.PromptError` (or its
+    named in the prompt. ``max_plants`` caps the planting positions of the whole
+    scene (default 10 million). Raises :class:`~agrirecipe.PromptError` (or its
     subclass :class:`~agrirecipe.UnknownCropError`) for requests that cannot
     be honoured, :class:`~agrirecipe.ConfigurationError` for bad arguments.
     """
@@ -102,6 +105,10 @@ def resolve(
         raise ConfigurationError(
             f"latitude_deg must be between -90 and 90 degrees, got {latitude_deg!r}",
             stage="resolve",
+        )
+    if isinstance(max_plants, bool) or not isinstance(max_plants, int) or max_plants < 1:
+        raise ConfigurationError(
+            f"max_plants must be a positive whole number, got {max_plants!r}", stage="resolve"
         )
     if hierarchy is None and isinstance(knowledge, KnowledgeBase):
         hierarchy = knowledge.hierarchy  # a knowledge base brings its own hierarchy
@@ -121,6 +128,7 @@ def resolve(
         seed=seed,
         latitude_deg=None if latitude_deg is None else float(latitude_deg),
         explain=explain,
+        max_plants=max_plants,
     )
     intent = strategy.resolve_intent(prompt, context)
     recipe, steps = build_recipe(intent, context, resolver=strategy.name)
@@ -273,20 +281,26 @@ def build_recipe(
         latitude = intent.latitude_deg if intent.latitude_deg is not None else DEFAULT_LATITUDE_DEG
     season = _dominant_season([f.season for f in fields])
     try:
-        recipe = SceneRecipe(
-            prompt=intent.prompt,
-            seed=context.seed,
-            resolver=resolver,
-            environment=build_environment(season, latitude),
-            fields=tuple(fields),
-            relations=relations,
-            warnings=tuple(warnings),
+        recipe = SceneRecipe.model_validate(
+            {
+                "prompt": intent.prompt,
+                "seed": context.seed,
+                "resolver": resolver,
+                "environment": build_environment(season, latitude),
+                "fields": tuple(fields),
+                "relations": relations,
+                "warnings": tuple(warnings),
+            },
+            context={"max_plants": context.max_plants},
         )
     except ValidationError as exc:
+        message = _first_message(exc)
+        capped = "(make fields smaller or raise max_plants)" in message
+        raise_cap = "; or raise the cap: generate(..., max_plants=N), --max-plants N"
         raise PromptError(
-            _first_message(exc).replace(" (make fields smaller or raise max_plants)", ""),
+            message.replace(" (make fields smaller or raise max_plants)", ""),
             stage="validate",
-            hint="ask for fewer or smaller fields",
+            hint="ask for fewer or smaller fields" + (raise_cap if capped else ""),
         ) from exc
     for spec in fields:
         x, y = spec.geometry.origin_m
