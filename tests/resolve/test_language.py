@@ -836,3 +836,71 @@ def test_a_weak_month_alone_between_commas_is_a_month() -> None:
 def test_where_the_fruit_hangs_is_not_a_field(prompt: str, crop: str, stage: str) -> None:
     recipe = _recipe(prompt, "rules")
     assert [(f.crop, f.stage) for f in recipe.fields] == [(crop, stage)]
+
+
+@pytest.mark.parametrize("strategy", STRATEGIES)
+def test_fields_on_either_side_and_in_the_middle(strategy: str) -> None:
+    flanked = _recipe(
+        "ripe Durondeau and Williams pears on either side of a Jonagored block", strategy
+    )
+    durondeau, williams, jonagold = (f.id for f in flanked.fields)
+    assert [(r.kind, r.subject, r.objects) for r in flanked.relations] == [
+        ("between", jonagold, (durondeau, williams))
+    ]
+    each = _recipe("a vineyard with a strawberry field on each side, both of them ripe", strategy)
+    assert [f.crop for f in each.fields] == ["Grape", "Strawberry", "Strawberry"]
+    vineyard, first, second = (f.id for f in each.fields)
+    assert [(r.kind, r.subject, r.objects) for r in each.relations] == [
+        ("between", vineyard, (first, second))
+    ]
+    assert [f.stage for f in each.fields[1:]] == ["Maturation", "Maturation"]
+    middle = _recipe(
+        "walla walla onions, red express cabbage and beef tomatoes, put the tomatoes in the middle",
+        strategy,
+    )
+    onions, cabbage, tomatoes = (f.id for f in middle.fields)
+    assert [(r.kind, r.subject, r.objects) for r in middle.relations] == [
+        ("between", tomatoes, (onions, cabbage))
+    ]
+
+
+@pytest.mark.parametrize(
+    ("prompt", "expected"),
+    [
+        # a plural crop followed by its varieties lists its members
+        (
+            "two beds of lettuce, lolo rosso and bibb, both bolting; the bibb one has downy mildew",
+            [("Lollo Rosso", "Healthy"), ("Butterhead", "Ill")],
+        ),
+        (
+            "two wheat fields, a spring wheat one and a dinkel one",
+            [("Spring Wheat", "Healthy"), ("Spelt", "Healthy")],
+        ),
+        # a definite back-reference finds a listed member
+        (
+            "three fields: russet potatoes, chantenay carrots and sturon onions, "
+            "the carrots have some leaf blight",
+            [("Russet Burbank", "Healthy"), ("Chantenay", "Ill"), ("Sturon", "Healthy")],
+        ),
+    ],
+)
+def test_members_named_after_a_plural(prompt: str, expected: list[tuple[str, str]]) -> None:
+    assert [(f.variety, f.health) for f in _recipe(prompt, "rules").fields] == expected
+
+
+def test_one_of_a_crop_after_a_full_plural_is_one_more_field() -> None:
+    assert len(_recipe("three fields of sweet peppers and one of chillies", "rules").fields) == 4
+    listed = _recipe("two apple orchards, one of Gala and one of Fuji", "rules")
+    assert [f.variety for f in listed.fields] == ["Gala", "Fuji"]
+
+
+@pytest.mark.parametrize(
+    ("prompt", "stages"),
+    [
+        ("harvest-ready maize and wheat in january", ["Maturation", "Maturation"]),
+        ("young carrots and potatoes", ["Vegetative", "Vegetative"]),
+        ("young carrots and potatoes in bloom", ["Vegetative", "Reproductive"]),
+    ],
+)
+def test_a_leading_stage_describes_a_list_of_bare_crops(prompt: str, stages: list[str]) -> None:
+    assert [f.stage for f in _recipe(prompt, "rules").fields] == stages

@@ -406,8 +406,9 @@ def _add_senses(
         elif kind in ("area_unit", "length_unit"):
             evidence.units.setdefault(item.norm, (kind, float(sense.value)))
         elif kind == "relation" or (kind == "relation_trailer" and sense.value == "next_to"):
-            # "next to", "side by side" (the model reads trailing directions backwards)
-            evidence.relations.append(str(sense.value))
+            # "next to", "side by side" (the model reads trailing directions backwards);
+            # "on either side of" is a "between" whose order the model decides
+            evidence.relations.append("between" if sense.value == "flanks" else str(sense.value))
         elif kind == "hemisphere":
             evidence.hemisphere = sense.value
         elif kind == "place":
@@ -664,6 +665,7 @@ def _groups(
             # word is a field of its own.
             own = (
                 bool(mention.plot_options)
+                and current.crop not in mention.plot_options  # "Gala orchard, trees in bloom"
                 and not mention.definite
                 and any(
                     current.last < j <= mention.first  # a comma counts as the next word's

@@ -42,12 +42,14 @@ from agrirecipe.resolve._relations import coordinated, read_relations
 from agrirecipe.resolve._scan import assign_roles, read_latitude, read_sizes
 from agrirecipe.resolve._structure import (
     apply_corrections,
+    apply_each_side,
     apply_plural_counts,
     apply_refinements,
     dissolve_plant_parts,
     merge_coreferences,
     promote_weak_varieties,
     raise_conflicts,
+    share_leading_attributes,
 )
 
 __all__ = ["NOTHING_FOUND", "NearestCrops", "PromptReader", "UnknownWords"]
@@ -136,8 +138,10 @@ class PromptReader:
                     stage="decompose", subject=dissolved, detail="the named fields' own fruit"
                 )
             )
+        share_leading_attributes(clauses)
         mentions = apply_refinements(clauses, self.crop_categories)
         mentions = merge_coreferences(clauses, mentions, builder)
+        apply_each_side(clauses)
         scene_items = self._attach_loose(clauses, mentions)
         for mention in mentions:
             for sub in (mention, *mention.refinements):

@@ -68,7 +68,10 @@ def read_relations(
                     for a, b in itertools.pairwise(fields)
                 )
                 continue
-        pairs = _relation_mentions(link, before, after, pronoun=pronoun)
+        if link.role == "trailer" and link.data.get("value") in ("each_side", "middle"):
+            pairs = _surrounded(str(link.data["value"]), clauses, position, before)
+        else:
+            pairs = _relation_mentions(link, before, after, pronoun=pronoun)
         if pairs is None:
             warnings.append(f"ignored {link.raw!r}: it needs a field on each side")
             continue
@@ -116,6 +119,30 @@ def _pair(
     return [RelationIntent(kind=kind, subject=s, objects=(o,), text=link.raw) for s, o in pairs]
 
 
+def _surrounded(
+    value: str, clauses: Sequence[Clause], position: int, before: Sequence[Mention]
+) -> tuple[Any, Mention, tuple[Mention, ...]] | None:
+    """'Z with X on each side' and 'X, Y and Z, Z in the middle': Z between the other two.
+
+    For "on each side" the mention just before the words is on both sides (its
+    count was made two by :func:`~agrirecipe.resolve._structure.apply_each_side`)
+    and the one before it is in the middle.
+    """
+    distinct: list[Mention] = []
+    for mention in before:  # a field named twice counts once
+        if not any(mention is seen for seen in distinct):
+            distinct.append(mention)
+    if value == "each_side":
+        if len(distinct) < 2 or (distinct[-1].count or 1) < 2:
+            return None
+        return "between", distinct[-2], (distinct[-1], distinct[-1])
+    middle = before[-1] if before else None
+    others = [m for m in distinct if m is not middle]
+    if middle is None or len(others) != 2:
+        return None
+    return "between", middle, (others[0], others[1])
+
+
 def _relation_mentions(
     link: Item, before: Sequence[Mention], after: Sequence[Mention], *, pronoun: bool
 ) -> tuple[Any, Mention, tuple[Mention, ...]] | None:
@@ -135,6 +162,15 @@ def _relation_mentions(
         objects = (before[-1],) if kind != "between" else (before[-1], before[-1])
         if kind != "between" or (before[-1].count or 1) >= 2:
             return kind, after[0], objects
+    if kind == "flanks":
+        # "Durondeau and Williams pears on either side of a Jonagold block"
+        if not after:
+            return None
+        if before and (before[-1].count or 1) >= 2:
+            return "between", after[0], (before[-1], before[-1])
+        if len(before) >= 2:
+            return "between", after[0], (before[-2], before[-1])
+        return None
     if link.role == "between":
         if after and before and (after[0].count or 1) >= 2:
             return "between", before[-1], (after[0], after[0])

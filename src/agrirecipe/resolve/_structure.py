@@ -22,12 +22,14 @@ from agrirecipe.resolve._relations import listing
 
 __all__ = [
     "apply_corrections",
+    "apply_each_side",
     "apply_plural_counts",
     "apply_refinements",
     "dissolve_plant_parts",
     "merge_coreferences",
     "promote_weak_varieties",
     "raise_conflicts",
+    "share_leading_attributes",
 ]
 
 
@@ -207,13 +209,35 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
                 if clause.mentions
                 else Mention(items=list(clause.loose), clause=clause.index)
             )
-            # A generic plural mention followed by ':' lists its members.
-            listing = not _strong_crops(parent) and (
+            # A generic plural mention followed by ':' lists its members; so does a
+            # plural crop followed by its varieties ("two beds of lettuce, lollo rosso
+            # and bibb").
+            lists_members = not _strong_crops(parent) and (
                 enumerating or link.norm in (":", "-", "—", "–")
             )
-            listed = listing and bool(clause.mentions) and (sub.count or 1) == 1
+            lists_members = lists_members or (
+                _names_varieties_of(sub, parent) and (enumerating or link.role == "separator")
+            )
+            listed = lists_members and bool(clause.mentions) and (sub.count or 1) == 1
+            follows_parent = clauses[clause.index - 1].refined_parent is None
+            if (
+                is_reference
+                and link.role == "conjunction"
+                and follows_parent
+                and _adds_a_field(clause, parent)
+            ):
+                is_reference = False  # "three fields of sweet peppers and one of chillies"
             fits = _fits(sub, parent, crop_categories)
-            if listed and enumerating and fits and not _room(parent) and parent.rest is None:
+            definite = bool(clause.items) and clause.items[0].norm in _definite_words()
+            if (
+                listed
+                and enumerating
+                and fits
+                and not definite  # "..., the carrots have blight" points back
+                and listing(link)
+                and not _room(parent)
+                and parent.rest is None
+            ):
                 # "two fields: sweetcorn, durum wheat and romaine lettuce"
                 raise PromptError(
                     f"{parent.text!r} announces {parent.count} field(s), but "
@@ -250,6 +274,34 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
     return top
 
 
+def _names_varieties_of(sub: Mention, parent: Mention) -> bool:
+    """``sub`` names, without a count of its own, a variety of the crop ``parent`` names."""
+    crops = _strong_crops(parent)
+    named = {(c, v) for c, v, weak in sub.interpretations or () if v is not None and not weak}
+    # "a spring wheat one": the pronoun "one" stands for one of the parent's fields
+    heads = [h.start for h in sub.heads]
+    one = bool(heads) and any(i.norm == "one" and i.start > max(heads) for i in sub.items)
+    return (
+        (sub.count is None or (sub.count == 1 and one))
+        and len(crops) == 1
+        and bool(named)
+        and {c for c, _ in named} <= crops
+        and not any(v is not None for _, v, _ in parent.interpretations or ())
+    )
+
+
+def _adds_a_field(clause: Clause, parent: Mention) -> bool:
+    """'... and one of chillies' after a plural that named its crop: one more field.
+
+    "one of" followed by a crop or variety (not "them"), joined by "and" to a plural
+    mention that already says what its fields are, counts a further field.
+    """
+    words = [i for i in clause.items if i.norm != "the"]
+    if len(words) < 3 or words[0].role != "number" or words[1].role != "of":
+        return False
+    return words[2].role == "head" and bool(_strong_crops(parent))
+
+
 #: Words after "<number> of" that point back at a plural mention ("two of them").
 _BACK_POINTERS = frozenset({"them", "which", "these", "those", "the fields", "the plots"})
 
@@ -283,6 +335,45 @@ def _counted_reference(items: Sequence[Item]) -> int | None:
     if value != int(value) or value < 1:
         return None
     return int(value)
+
+
+_SHARED_ROLES = ("stage", "health")
+
+
+def share_leading_attributes(clauses: Sequence[Clause]) -> None:
+    """'harvest-ready maize and wheat': a stage or health word before the first of a list
+    of bare crop names ("and wheat", ", wheat") describes each of them.
+
+    A listed mention is bare when its head is its first word (no article, count or
+    attribute of its own before it); a mention that states the attribute keeps its own.
+    """
+    for position, clause in enumerate(clauses):
+        if len(clause.mentions) != 1:
+            continue
+        first = clause.mentions[0]
+        start = min(h.start for h in first.heads)
+        leading = [i for i in first.items if i.role in _SHARED_ROLES and i.start < start]
+        if not leading:
+            continue
+        for following in clauses[position + 1 :]:
+            if not listing(following.link) or len(following.mentions) != 1:
+                break
+            mention = following.mentions[0]
+            if not following.items or following.items[0] is not mention.heads[0]:
+                break
+            own = {i.role for i in mention.items}
+            mention.items.extend(i for i in leading if i.role not in own)
+
+
+def apply_each_side(clauses: Sequence[Clause]) -> None:
+    """'a vineyard with a strawberry field on each side': that field stands twice."""
+    for position, clause in enumerate(clauses):
+        link = clause.link
+        if link is None or link.role != "trailer" or link.data.get("value") != "each_side":
+            continue
+        before = [m for c in clauses[:position] for m in c.mentions]
+        if len(before) >= 2 and (before[-1].count or 1) == 1 and not before[-1].refinements:
+            before[-1].count = 2
 
 
 def raise_conflicts(clauses: Sequence[Clause]) -> None:
@@ -383,7 +474,9 @@ def merge_coreferences(
         if names_variety:
             run = [m for m in repeated if _compatible(builder, m, mention)][:1] or run[:1]
         if not run and is_definite:
-            run = [m for m in reversed(kept) if _compatible(builder, m, mention)][:1]
+            # "three fields: potatoes, carrots and onions ..., the carrots have blight"
+            members = [r for m in reversed(kept) for r in (m.refinements[::-1] or [m])]
+            run = [m for m in members if _compatible(builder, m, mention)][:1]
         if not run:
             kept.append(mention)
             continue
