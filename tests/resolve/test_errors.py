@@ -61,6 +61,26 @@ def test_crops_we_do_not_hold(prompt: str, requested: str, nearest: set[str]) ->
     assert "nearest known" in str(error)
 
 
+@pytest.mark.parametrize(
+    ("prompt", "crop", "word"),
+    [
+        ("gala and braeburn blocks, autumn", "Apple", "braeburn"),
+        ("vineyard rows of merlot in september", "Grape", "merlot"),
+        ("a field of maris piper potatoes", "Potato", "maris piper"),
+        ("a Cabernet Franc vineyard", "Grape", "Cabernet Franc"),
+    ],
+)
+def test_a_variety_the_hierarchy_does_not_hold(prompt: str, crop: str, word: str) -> None:
+    with pytest.raises(
+        UnknownCropError, match="variety the asset hierarchy does not hold"
+    ) as caught:
+        resolve(prompt, resolver="rules")
+    assert caught.value.requested == word
+    assert caught.value.hint and caught.value.hint.startswith(f"{crop} varieties: ")
+    # the varieties it does hold are unaffected
+    assert resolve("a Cabernet Sauvignon vineyard", resolver="rules").recipe.fields
+
+
 def test_an_unknown_word_where_a_crop_belongs() -> None:
     with pytest.raises(UnknownCropError) as caught:
         resolve("a zorblax field", resolver="rules")

@@ -904,3 +904,23 @@ def test_one_of_a_crop_after_a_full_plural_is_one_more_field() -> None:
 )
 def test_a_leading_stage_describes_a_list_of_bare_crops(prompt: str, stages: list[str]) -> None:
     assert [f.stage for f in _recipe(prompt, "rules").fields] == stages
+
+
+@pytest.mark.parametrize("strategy", STRATEGIES)
+def test_adjacent_fields_and_borders(strategy: str) -> None:
+    row = _recipe("Create three adjacent fields: wheat, maize, potatoes. Summer.", strategy)
+    wheat, maize, potatoes = (f.id for f in row.fields)
+    assert {(r.kind, r.subject, r.objects) for r in row.relations} == {
+        ("next_to", maize, (wheat,)),
+        ("next_to", potatoes, (maize,)),
+    }
+    bordered = _recipe("a pear orchard bordered on the east by a carrot field", strategy)
+    pears, carrots = (f.id for f in bordered.fields)
+    assert [(r.kind, r.subject, r.objects) for r in bordered.relations] == [
+        ("west_of", pears, (carrots,))
+    ]
+
+
+def test_onions_drying_down_are_mature_not_dying() -> None:
+    onions = _recipe("onions (red baron) drying down in the field, august", "rules").fields[0]
+    assert (onions.variety, onions.stage, onions.health) == ("Red Baron", "Maturation", "Healthy")

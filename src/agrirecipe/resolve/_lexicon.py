@@ -312,18 +312,34 @@ class OtherCrop:
     name: str
     category: str
     like: tuple[str, ...]
+    #: For a variety the hierarchy does not hold ("Braeburn"), the crop it belongs to.
+    variety_of: str | None = None
 
 
 def other_crops(hierarchy: Hierarchy) -> dict[str, OtherCrop]:
-    """``other_crops.yaml`` less the crops this hierarchy does hold."""
+    """``other_crops.yaml`` less the crops and varieties this hierarchy does hold."""
     known = {normalise(name) for name in hierarchy.crops}
     known |= {normalise(alias) for crop in hierarchy.crops.values() for alias in crop.aliases}
+    data = _load("other_crops.yaml")
     result = {}
-    for name, entry in _load("other_crops.yaml")["crops"].items():
+    for name, entry in data["crops"].items():
         if normalise(name) in known or normalise(name) + "s" in known:
             continue
         like = tuple(crop for crop in entry.get("like", ()) if crop in hierarchy.crops)
         result[name] = OtherCrop(name, str(entry["category"]), like)
+    held = {
+        normalise(name)
+        for crop in hierarchy.crops.values()
+        for variety in crop.varieties
+        for name in (variety.name, *variety.aliases)
+    }
+    for crop_name, names in data.get("varieties", {}).items():
+        if crop_name not in hierarchy.crops:
+            continue
+        crop = hierarchy.crops[crop_name]
+        for name in names:
+            if normalise(name) not in held:
+                result[name] = OtherCrop(name, crop.category, (crop_name,), variety_of=crop_name)
     return result
 
 

@@ -220,6 +220,17 @@ class PromptReader:
             if item.role != "other_crop":
                 continue
             other: OtherCrop = item.senses_of("other_crop")[0].value
+            if other.variety_of is not None:
+                names = [v.name for v in self.context.hierarchy.crop(other.variety_of).varieties]
+                article = "an" if other.variety_of[0] in "AEIOU" else "a"
+                raise UnknownCropError(
+                    f"{item.raw!r} is {article} {other.variety_of} variety the asset hierarchy "
+                    "does not hold",
+                    requested=item.raw,
+                    nearest=_by_spelling(item.raw, names),
+                    stage="resolve",
+                    hint=f"{other.variety_of} varieties: " + ", ".join(names),
+                )
             nearest = self.nearest_crops(other.name, other.like)
             raise UnknownCropError(
                 f"{item.raw!r} is not a crop of the asset hierarchy ({other.name} is unknown)",

@@ -30,7 +30,7 @@ def read_relations(
 
     ``members`` maps ``id(mention)`` to the indexes of the fields it became.
     """
-    relations: list[RelationIntent] = []
+    relations: list[RelationIntent] = _adjacent_rows(clauses, members, trace)
     placed = _placements(clauses, members)
     for position, subject, centre in _placement_pairs(clauses, members, placed):
         link = clauses[position].link
@@ -117,6 +117,33 @@ def _pair(
         # "two orchards next to three fields" means the groups touch.
         pairs = pairs[:1]
     return [RelationIntent(kind=kind, subject=s, objects=(o,), text=link.raw) for s, o in pairs]
+
+
+def _adjacent_rows(
+    clauses: Sequence[Clause], members: dict[int, list[int]], trace: list[TraceStep]
+) -> list[RelationIntent]:
+    """'three adjacent fields': the fields of a mention described as adjacent, in a row."""
+    rows: list[RelationIntent] = []
+    seen: set[int] = set()
+    for clause in clauses:
+        for mention in clause.mentions:
+            fields = members.get(id(mention), [])
+            adjacent = [i for i in mention.items if i.data.get("adjacent")]
+            if len(fields) < 2 or not adjacent or id(mention) in seen:
+                continue
+            seen.add(id(mention))
+            trace.append(
+                TraceStep(
+                    stage="decompose",
+                    subject=adjacent[0].raw,
+                    detail=f"the {len(fields)} fields of {mention.text!r} in a row",
+                )
+            )
+            rows += [
+                RelationIntent(kind="next_to", subject=b, objects=(a,), text=adjacent[0].raw)
+                for a, b in itertools.pairwise(fields)
+            ]
+    return rows
 
 
 def _surrounded(

@@ -59,7 +59,22 @@ def assign_roles(items: Sequence[Item]) -> None:
     for index, item in enumerate(items):
         following = items[index + 1] if index + 1 < len(items) else None
         item.role = _role(item, previous, cues, alone=_alone(previous, following))
+        if item.role == "relation" and _attributive(item, previous, following):
+            item.role = "filler"  # "three adjacent fields": the fields in a row
+            item.data["adjacent"] = True
         previous = item
+
+
+def _attributive(item: Item, previous: Item | None, following: Item | None) -> bool:
+    """'three adjacent fields', 'two neighbouring orchards': "next to" used as an adjective."""
+    return (
+        item.data.get("value") == "next_to"
+        and len(item.tokens) == 1
+        and previous is not None
+        and previous.role in ("number", "quantity", "distinct")
+        and following is not None
+        and following.has("plot", "crop", "category", "variety")
+    )
 
 
 def _alone(previous: Item | None, following: Item | None) -> bool:
