@@ -185,10 +185,15 @@ def test_different_crops_named_the_same(prompt: str, crop: str, count: int) -> N
 
 @pytest.mark.parametrize(
     "prompt",
-    ["a lettuce field of -2 hectares", "a carrot field -50 by 100 m", "a potato field -100 m long"],
+    [
+        "a lettuce field of -2 hectares",
+        "a carrot field -50 by 100 m",
+        "a potato field -100 m long",
+        "a wheat field of minus 4 hectares",
+    ],
 )
 def test_negative_sizes(prompt: str) -> None:
-    with pytest.raises(PromptError, match="cannot measure '-"):
+    with pytest.raises(PromptError, match=r"cannot measure '(-|minus )"):
         resolve(prompt, resolver="rules")
     # a dash between numbers or words is not a minus sign
     assert resolve("a carrot field, 2 ha - healthy", resolver="rules").recipe.fields

@@ -924,3 +924,58 @@ def test_adjacent_fields_and_borders(strategy: str) -> None:
 def test_onions_drying_down_are_mature_not_dying() -> None:
     onions = _recipe("onions (red baron) drying down in the field, august", "rules").fields[0]
     assert (onions.variety, onions.stage, onions.health) == ("Red Baron", "Maturation", "Healthy")
+
+
+# --- generalisation fixes found by the blind held-out set 3 -----------------------------
+
+
+@pytest.mark.parametrize(
+    ("prompt", "expected"),
+    [
+        ("grains and veggies: two of each", ["Cereals", "Cereals", "Vegetables", "Vegetables"]),
+        ("carrots and onions, two each", ["Vegetables"] * 4),
+        ("a handful of grain fields, autumn", ["Cereals"] * 3),
+    ],
+)
+def test_counts_said_for_a_list(prompt: str, expected: list[str]) -> None:
+    assert [f.category for f in _recipe(prompt, "rules").fields] == expected
+
+
+def test_each_a_different_crop_after_a_count() -> None:
+    recipe = _recipe("five fields, each a different crop", "rules")
+    assert len(recipe.fields) == 5 and len({f.crop for f in recipe.fields}) == 5
+
+
+def test_both_after_the_last_field_describes_every_field() -> None:
+    recipe = _recipe("cherry trees and apple trees both carrying ripe fruit in february", "rules")
+    assert [(f.crop, f.stage, f.season) for f in recipe.fields] == [
+        ("Cherry", "Maturation", "Winter"),
+        ("Apple", "Maturation", "Winter"),
+    ]
+
+
+@pytest.mark.parametrize("strategy", STRATEGIES)
+def test_sides_and_the_middle_of_counted_fields(strategy: str) -> None:
+    middle = _recipe("two potato fields and one carrot field, carrots in the middle", strategy)
+    first, second, carrots = (f.id for f in middle.fields)
+    assert [(r.kind, r.subject, r.objects) for r in middle.relations] == [
+        ("between", carrots, (first, second))
+    ]
+    side = _recipe(
+        "a golden delicious block of 2 hectares with golden acre cabbages along its south side",
+        strategy,
+    )
+    apples, cabbage = (f.id for f in side.fields)
+    assert [(r.kind, r.subject, r.objects) for r in side.relations] == [
+        ("south_of", cabbage, (apples,))
+    ]
+    each = _recipe(
+        "fontane and agria potatoes, one field each, agria on the west side, both with late blight",
+        strategy,
+    )
+    assert [(f.variety, f.health) for f in each.fields] == [("Fontane", "Ill"), ("Agria", "Ill")]
+
+
+def test_bolted_lettuce_is_reproductive() -> None:
+    lettuce = _recipe("cos lettuce that has bolted in the summer heat", "rules").fields[0]
+    assert (lettuce.variety, lettuce.stage) == ("Romaine", "Reproductive")

@@ -318,6 +318,9 @@ class PromptReader:
         """Give each head-less clause's attributes to its field(s); return scene-wide items."""
         scene: list[Item] = []
         for position, clause in enumerate(clauses):
+            _detach_trailing_all(clause)
+            if position and mentions:
+                _apply_group_words(clause.loose, coordinated(clauses, position))
             attributes = [i for i in clause.loose if i.role in _ATTRIBUTE_ROLES]
             if not attributes or not mentions:
                 continue
@@ -548,6 +551,53 @@ class PromptReader:
 
 
 # --- helpers ---
+
+
+def _detach_trailing_all(clause: Clause) -> None:
+    """'cherry trees and apple trees both carrying ripe fruit': after the last field of a
+    clause, "both"/"all" and the words after it describe every field, not only that one."""
+    if not clause.mentions:
+        return
+    mention = clause.mentions[-1]
+    last_head = max(h.start for h in mention.heads)
+    marker = next(
+        (
+            i
+            for i in sorted(mention.items, key=lambda i: i.start)
+            if i.role == "all" and i.start > last_head
+        ),
+        None,
+    )
+    if marker is None:
+        return
+    moved = [i for i in mention.items if i.start >= marker.start and i not in mention.heads]
+    if not any(i.role in _ATTRIBUTE_ROLES for i in moved if i is not marker):
+        return
+    mention.items = [i for i in mention.items if i not in moved]
+    clause.loose = [*clause.loose, *moved]
+
+
+def _apply_group_words(loose: Sequence[Item], group: Sequence[Mention]) -> None:
+    """Words about the fields listed just before: "grains and veggies: two of each" counts
+    each of them; "five fields, each a different crop" makes them different crops."""
+    roles = [i.role for i in loose if i.role != "filler"]
+    if (
+        len(roles) >= 2
+        and roles[0] == "number"
+        and roles[-1] == "all"
+        and (roles[1:-1] in ([], ["of"]))
+    ):
+        number = next(i for i in loose if i.role == "number")
+        count = float(number.data.get("value", 1))
+        if count == int(count) and 1 <= count <= 64:
+            for mention in group:
+                if mention.count is None or mention.count == 1:
+                    mention.count = int(count)
+    if any(i.role == "distinct" for i in loose):
+        for mention in group:
+            if (mention.count or 1) > 1:
+                mention.distinct = True
+                mention.distinct_crops = not mention.has_crop
 
 
 def _check_distinct(mention: Mention, members: Sequence[_Field]) -> None:

@@ -165,6 +165,8 @@ def _surrounded(
         return "between", distinct[-2], (distinct[-1], distinct[-1])
     middle = before[-1] if before else None
     others = [m for m in distinct if m is not middle]
+    if middle is not None and len(others) == 1 and (others[0].count or 1) == 2:
+        return "between", middle, (others[0], others[0])  # "two potato fields and ..."
     if middle is None or len(others) != 2:
         return None
     return "between", middle, (others[0], others[1])

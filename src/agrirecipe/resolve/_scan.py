@@ -199,12 +199,13 @@ def _reject_negative(items: Sequence[Item], index: int) -> None:
     if index == 0:
         return
     sign = items[index - 1]
-    if sign.raw not in _MINUS or sign.end != items[index].start:
+    written = sign.raw in _MINUS and sign.end == items[index].start
+    if not written and sign.norm not in ("minus", "negative"):
         return
     if index >= 2 and _amount(items[index - 2]) is not None:
         return  # a range or a dash between numbers
     words = " ".join(item.raw for item in items[index : index + 2])
-    _positive(-1.0, sign.raw + words)
+    _positive(-1.0, sign.raw + ("" if written else " ") + words)
 
 
 def _positive(value: float, text: str) -> float:
