@@ -199,7 +199,14 @@ def test_negative_sizes(prompt: str) -> None:
     assert resolve("a carrot field, 2 ha - healthy", resolver="rules").recipe.fields
 
 
+def test_freshly_sown_and_ready_for_harvest_is_a_contradiction() -> None:
+    with pytest.raises(PromptError, match="both Maturation and Vegetative"):
+        resolve("a wheat field that is freshly sown and ready for harvest", resolver="rules")
+
+
 def test_a_count_that_the_list_after_it_exceeds() -> None:
+    with pytest.raises(PromptError, match="announces 5 field"):
+        resolve("five fields: 2 of maize and 4 of wheat", resolver="rules")
     with pytest.raises(PromptError, match="announces 2 field") as caught:
         resolve("two fields: sweetcorn, durum wheat and romaine lettuce", resolver="rules")
     assert caught.value.hint and "count" in caught.value.hint
@@ -207,7 +214,14 @@ def test_a_count_that_the_list_after_it_exceeds() -> None:
     assert [f.crop for f in listed.recipe.fields] == ["Potato", "Carrot", "Onion"]
 
 
-@pytest.mark.parametrize("prompt", ["whats the weather in leuven tomorrow?", "whats up"])
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "whats the weather in leuven tomorrow?",
+        "whats up",
+        "hi can you book me a train to ghent tomorrow morning",  # "train" is not "grain"
+    ],
+)
 def test_everyday_words_are_not_typos_of_crops(prompt: str) -> None:
     with pytest.raises(PromptError):
         resolve(prompt, resolver="rules")

@@ -979,3 +979,80 @@ def test_sides_and_the_middle_of_counted_fields(strategy: str) -> None:
 def test_bolted_lettuce_is_reproductive() -> None:
     lettuce = _recipe("cos lettuce that has bolted in the summer heat", "rules").fields[0]
     assert (lettuce.variety, lettuce.stage) == ("Romaine", "Reproductive")
+
+
+# --- generalisation fixes found by the blind held-out set 4 -----------------------------
+
+
+def test_a_pronoun_that_ends_its_clause_points_back() -> None:
+    recipe = _recipe(
+        "ok so the main block is a hamlin orange grove. put valencia late oranges north of it, "
+        "and a dwarf cavendish banana plot on its east side.",
+        "rules",
+    )
+    hamlin, valencia, bananas = (f.id for f in recipe.fields)
+    assert {(r.kind, r.subject, r.objects) for r in recipe.relations} == {
+        ("north_of", valencia, (hamlin,)),
+        ("east_of", bananas, (hamlin,)),
+    }
+
+
+@pytest.mark.parametrize(
+    ("prompt", "expected"),
+    [
+        (
+            "a Roma tomato field and a Beefsteak tomato field, both ripe, the Roma one with blight",
+            [("Roma", "Ill"), ("Beefsteak", "Healthy")],
+        ),
+        (
+            "1.5 ha of Kordia cherries, ripe, early july - a fair bit of brown rot in the fruit",
+            [("Kordia", "Ill")],
+        ),
+        (
+            "durondeau pear trees and fuji apple trees covered in blossom in january, "
+            "pears to the west, fire blight on the pears",
+            [("Durondeau", "Ill"), ("Fuji", "Healthy")],
+        ),
+    ],
+)
+def test_back_references_to_named_fields(prompt: str, expected: list[tuple[str, str]]) -> None:
+    assert [(f.variety, f.health) for f in _recipe(prompt, "rules").fields] == expected
+
+
+def test_a_trailing_stage_after_two_bare_crops_describes_both() -> None:
+    recipe = _recipe("apple and pear trees in full blossom in december", "rules")
+    assert [f.stage for f in recipe.fields] == ["Reproductive", "Reproductive"]
+    assert _recipe("young carrots and potatoes in bloom", "rules").fields[0].stage == "Vegetative"
+
+
+@pytest.mark.parametrize(
+    ("prompt", "crops"),
+    [
+        ("can I get five fields: 2 of maize and 3 of wheat?", ["Maize"] * 2 + ["Wheat"] * 3),
+        ("four orchards: two Gala and two Fuji", ["Apple"] * 4),
+        ("we are testing a combine so basically a few cereal fields", ["Wheat", "Maize", "Maize"]),
+    ],
+)
+def test_counted_members_and_amounts(prompt: str, crops: list[str]) -> None:
+    assert [f.crop for f in _recipe(prompt, "rules").fields] == crops
+
+
+@pytest.mark.parametrize("strategy", STRATEGIES)
+def test_placed_members_and_rows_in_order(strategy: str) -> None:
+    placed = _recipe(
+        "two carrot plots, imperator on the north side and danvers on the south side", strategy
+    )
+    imperator, danvers = placed.fields
+    assert (imperator.variety, danvers.variety) == ("Imperator", "Danvers")
+    assert ("north_of", imperator.id, (danvers.id,)) in {
+        (r.kind, r.subject, r.objects) for r in placed.relations
+    }
+    row = _recipe(
+        "three plots in a line, in this order: lollo rosso lettuce, red express cabbage, "
+        "savoy cabbage",
+        strategy,
+    )
+    first, middle, last = (f.id for f in row.fields)
+    assert ("between", middle, (first, last)) in {
+        (r.kind, r.subject, r.objects) for r in row.relations
+    }

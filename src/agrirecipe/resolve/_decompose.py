@@ -103,6 +103,14 @@ class Clause:
     mentions: list[Mention] = field(default_factory=list)
     loose: list[Item] = field(default_factory=list)
     refined_parent: Mention | None = None
+    #: The member this clause named once it became a refinement of ``refined_parent``.
+    refinement: Mention | None = None
+
+    @property
+    def named(self) -> list[Mention]:
+        """The mentions of the clause, or the member it refined ("imperator" in "two
+        carrot plots, imperator on the north side"), for relations to point at."""
+        return self.mentions or ([self.refinement] if self.refinement is not None else [])
 
     @property
     def headless(self) -> bool:
@@ -284,12 +292,16 @@ class MentionBuilder:
     ) -> None:
         for item in items:
             mention.items.append(item)
+            # The amount nearest the head wins: "a combine ... a few cereal fields".
             if item.role == "number" and (before_head or counts):
                 value = float(item.data.get("value", 1))
                 if before_head or item.norm not in ("a", "an"):
                     mention.count = _count(value, item)
+                    mention.quantity = None
             elif item.role == "quantity" and (before_head or counts):
                 mention.quantity = int(item.data["value"])
+                if before_head:
+                    mention.count = None
             elif item.role == "distinct":
                 mention.distinct = True
             elif item.role == "other":

@@ -291,6 +291,8 @@ class Lexicon:
         letters = len(text.replace(" ", ""))
         if letters < 4 or not self.fuzzy_choices:
             return None
+        if " " not in text and text in everyday_words():
+            return None  # "train" is a word of its own, not a misspelt "grain"
         # Damerau-Levenshtein counts a swapped pair of letters ("appel", "whaet") as one
         # edit; one edit in five letters is the most a short word may differ by.
         match = process.extractOne(
@@ -303,6 +305,28 @@ class Lexicon:
             return None
         phrase, score = str(match[0]), 100.0 * float(match[1])
         return phrase, score, self._fuzzy_senses[phrase]
+
+
+@functools.lru_cache(maxsize=1)
+def everyday_words() -> frozenset[str]:
+    """Common English words, never read as typos of a crop or vocabulary phrase.
+
+    The whole words of the WordPiece vocabulary shipped with the embedding model
+    (about 20,000 of its 30,522 entries: "train", "brain", "book", "weather"), which
+    ordinary typos ("aple", "tomatos", "whet", "carot") are not. Empty when no such
+    vocabulary is installed; typo reading then relies on the edit distance alone.
+    """
+    from agrirecipe._errors import ConfigurationError
+    from agrirecipe.localmodels import default_embedding_model_path
+
+    try:
+        path = default_embedding_model_path() / "vocab.txt"
+    except ConfigurationError:
+        return frozenset()
+    if not path.is_file():
+        return frozenset()
+    words = path.read_text(encoding="utf-8").split()
+    return frozenset(w for w in words if len(w) >= 4 and w.isascii() and w.isalpha())
 
 
 @dataclass(frozen=True, slots=True)

@@ -50,6 +50,7 @@ from agrirecipe.resolve._structure import (
     promote_weak_varieties,
     raise_conflicts,
     share_leading_attributes,
+    share_trailing_attributes,
 )
 
 __all__ = ["NOTHING_FOUND", "NearestCrops", "PromptReader", "UnknownWords"]
@@ -81,6 +82,7 @@ class _Field:
     category: str | None
     plot: dict[str, Any] | None
     group: int | None = None
+    sub: Mention | None = None
 
 
 class PromptReader:
@@ -139,6 +141,7 @@ class PromptReader:
                 )
             )
         share_leading_attributes(clauses)
+        share_trailing_attributes(clauses)
         mentions = apply_refinements(clauses, self.crop_categories)
         mentions = merge_coreferences(clauses, mentions, builder)
         apply_each_side(clauses)
@@ -160,6 +163,8 @@ class PromptReader:
         members: dict[int, list[int]] = {}
         for index, member in enumerate(fields):
             members.setdefault(id(member.mention), []).append(index)
+            if member.sub is not None and member.sub is not member.mention:
+                members.setdefault(id(member.sub), []).append(index)
         relations = read_relations(clauses, members, self.trace, self.warnings)
         scene_season = self._apply_scene_items(scene_items, fields, hemisphere)
         intents = [self._field_intent(f, hemisphere) for f in fields]
@@ -447,7 +452,7 @@ class PromptReader:
                 + sub.items
                 + [i for i in items if i.role in _ATTRIBUTE_ROLES]
             )
-        return _Field(mention, items, interpretations, category, plot)
+        return _Field(mention, items, interpretations, category, plot, sub=sub)
 
     def _apply_scene_items(
         self, scene_items: Sequence[Item], fields: Sequence[_Field], hemisphere: Hemisphere | None

@@ -43,15 +43,24 @@ def read_relations(
             continue
         if position in placed:
             continue
-        before = [m for c in clauses[:position] for m in c.mentions]
-        after = [m for c in clauses[position:] for m in c.mentions]
+        before = [m for c in clauses[:position] for m in c.named]
+        after = [m for c in clauses[position:] for m in c.named]
         pronoun = bool(clause.items) and clause.items[0].norm in _PRONOUNS
-        if link.role == "trailer" and link.data.get("value") == "next_to":
+        if pronoun and not clause.mentions:
+            # "put valencia oranges north of it, and a banana plot ...": the pronoun
+            # ends its clause, so it points back and the fields after are not its subject
+            after = []
+        if link.role == "trailer" and link.data.get("value") in ("next_to", "row"):
+            ordered = link.data.get("value") == "row"
             group = coordinated(clauses, position)
             if len(group) > 2:
                 # "potatoes, onions and cabbages side by side": a row, each beside the next.
                 for first, second in zip(group[1:], group, strict=False):
                     relations.extend(_pair("next_to", first, (second,), members, link, trace))
+                if ordered and len(group) == 3:
+                    relations.extend(
+                        _pair("between", group[1], (group[2], group[0]), members, link, trace)
+                    )
                 continue
             fields = members.get(id(group[0]), []) if len(group) == 1 else []
             if len(fields) >= 2:
@@ -67,6 +76,18 @@ def read_relations(
                     RelationIntent(kind="next_to", subject=b, objects=(a,), text=link.raw)
                     for a, b in itertools.pairwise(fields)
                 )
+                if ordered and len(fields) == 3:
+                    relations.append(
+                        RelationIntent(
+                            kind="between",
+                            subject=fields[1],
+                            objects=(fields[0], fields[2]),
+                            text=link.raw,
+                        )
+                    )
+                continue
+            if ordered:
+                warnings.append(f"ignored {link.raw!r}: it needs two or more fields before it")
                 continue
         if link.role == "trailer" and link.data.get("value") in ("each_side", "middle"):
             pairs = _surrounded(str(link.data["value"]), clauses, position, before)
@@ -77,7 +98,10 @@ def read_relations(
             continue
         kind, subject, objects = pairs
         relations.extend(_pair(kind, subject, objects, members, link, trace))
-    return relations
+    unique: dict[tuple[object, ...], RelationIntent] = {}
+    for relation in relations:  # "in a line, in this order": one row
+        unique.setdefault((relation.kind, relation.subject, relation.objects), relation)
+    return list(unique.values())
 
 
 def _pair(
@@ -249,7 +273,7 @@ def _placements(clauses: Sequence[Clause], members: dict[int, list[int]]) -> dic
             continue
         if position == 0 or clause.mentions or clause.items:
             continue
-        previous = clauses[position - 1].mentions
+        previous = clauses[position - 1].named
         if len(previous) == 1 and id(previous[0]) in members:
             placed[position] = previous[0]
     return placed
@@ -268,7 +292,18 @@ def _placement_pairs(
     left without a partner is dropped here and read the usual way.
     """
     placed_ids = {id(m) for m in placed.values()}
-    free = [m for c in clauses for m in c.mentions if id(m) not in placed_ids and id(m) in members]
+    # A field placed by a direction word of its own ("valencia oranges north of it")
+    # is not the centre others are placed around.
+    for clause, following in itertools.pairwise(clauses):
+        link = following.link
+        if (
+            clause.mentions
+            and link is not None
+            and link.role == "relation"
+            and link.data.get("value") in _OPPOSITE
+        ):
+            placed_ids.add(id(clause.mentions[-1]))
+    free = [m for c in clauses for m in c.named if id(m) not in placed_ids and id(m) in members]
     pairs: list[tuple[int, Mention, Mention]] = []
     waiting: list[tuple[int, Mention]] = []
     for position, mention in placed.items():

@@ -30,6 +30,7 @@ __all__ = [
     "promote_weak_varieties",
     "raise_conflicts",
     "share_leading_attributes",
+    "share_trailing_attributes",
 ]
 
 
@@ -218,7 +219,10 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             lists_members = lists_members or (
                 _names_varieties_of(sub, parent) and (enumerating or link.role == "separator")
             )
-            listed = lists_members and bool(clause.mentions) and (sub.count or 1) == 1
+            room = (parent.count or 1) - len(parent.refinements)
+            # "five fields: 2 of maize and 3 of wheat": a listed member may be counted
+            listable = lists_members and bool(clause.mentions)
+            listed = listable and 1 <= (sub.count or 1) <= room
             follows_parent = clauses[clause.index - 1].refined_parent is None
             if (
                 is_reference
@@ -230,18 +234,18 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             fits = _fits(sub, parent, crop_categories)
             definite = bool(clause.items) and clause.items[0].norm in _definite_words()
             if (
-                listed
-                and enumerating
+                listable
+                and (enumerating or (sub.count or 1) > 1)
                 and fits
                 and not definite  # "..., the carrots have blight" points back
                 and listing(link)
-                and not _room(parent)
+                and (sub.count or 1) > room
                 and parent.rest is None
             ):
                 # "two fields: sweetcorn, durum wheat and romaine lettuce"
                 raise PromptError(
                     f"{parent.text!r} announces {parent.count} field(s), but "
-                    f"{len(parent.refinements) + 1} or more are listed after it",
+                    f"{len(parent.refinements) + (sub.count or 1)} or more are listed after it",
                     stage="resolve",
                     hint="make the count match the list, or drop the count",
                 )
@@ -260,13 +264,19 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
                     total = parent.count or 1
                     share = (total + 1) // 2 if kind == "some" else max(1, total // 2)
                     parent.refinements.extend([sub] * min(share, total - len(parent.refinements)))
+                elif listed and (sub.count or 1) > 1:
+                    members, sub.count = sub.count or 1, None
+                    parent.refinements.extend([sub] * members)
                 else:
                     parent.refinements.append(sub)
                 clause.mentions, clause.loose = [], []
                 clause.refined_parent = parent
+                clause.refinement = sub if listed or is_reference else None
                 enumerating = listed
                 continue
-        enumerating = False
+        placement = link is not None and link.role == "trailer" and not clause.items
+        if not placement:  # "imperator on the north side and danvers ..." goes on listing
+            enumerating = False
         top.extend(clause.mentions)
         if clause.mentions:
             last = clause.mentions[-1]
@@ -278,16 +288,19 @@ def _names_varieties_of(sub: Mention, parent: Mention) -> bool:
     """``sub`` names, without a count of its own, a variety of the crop ``parent`` names."""
     crops = _strong_crops(parent)
     named = {(c, v) for c, v, weak in sub.interpretations or () if v is not None and not weak}
-    # "a spring wheat one": the pronoun "one" stands for one of the parent's fields
-    heads = [h.start for h in sub.heads]
-    one = bool(heads) and any(i.norm == "one" and i.start > max(heads) for i in sub.items)
     return (
-        (sub.count is None or (sub.count == 1 and one))
+        (sub.count is None or (sub.count == 1 and _pronoun_one(sub)))
         and len(crops) == 1
         and bool(named)
         and {c for c, _ in named} <= crops
         and not any(v is not None for _, v, _ in parent.interpretations or ())
     )
+
+
+def _pronoun_one(mention: Mention) -> bool:
+    """'a spring wheat one', 'the Roma one': "one" after the head stands for a field."""
+    heads = [h.start for h in mention.heads]
+    return bool(heads) and any(i.norm == "one" and i.start > max(heads) for i in mention.items)
 
 
 def _adds_a_field(clause: Clause, parent: Mention) -> bool:
@@ -365,6 +378,35 @@ def share_leading_attributes(clauses: Sequence[Clause]) -> None:
             mention.items.extend(i for i in leading if i.role not in own)
 
 
+def share_trailing_attributes(clauses: Sequence[Clause]) -> None:
+    """'durondeau pear trees and fuji apple trees covered in blossom': a stage or health
+    word after the second of two bare crop names joined by "and" describes both.
+
+    Both mentions must be bare (their head is their first word) and the first must
+    state no such attribute of its own ("young carrots and potatoes in bloom" keeps
+    the carrots young).
+    """
+    for position in range(1, len(clauses)):
+        clause, previous = clauses[position], clauses[position - 1]
+        link = clause.link
+        if link is None or link.role != "conjunction":
+            continue
+        if len(clause.mentions) != 1 or len(previous.mentions) != 1:
+            continue
+        first, second = previous.mentions[0], clause.mentions[0]
+        if not _bare(previous, first) or not _bare(clause, second):
+            continue
+        last_head = max(h.start for h in second.heads)
+        trailing = [i for i in second.items if i.role in _SHARED_ROLES and i.start > last_head]
+        own = {i.role for i in first.items}
+        first.items.extend(i for i in trailing if i.role not in own)
+
+
+def _bare(clause: Clause, mention: Mention) -> bool:
+    words = [i for i in clause.items if i.role != "filler" or i in mention.heads]
+    return bool(words) and words[0] is mention.heads[0] and mention.count is None
+
+
 def apply_each_side(clauses: Sequence[Clause]) -> None:
     """'a vineyard with a strawberry field on each side': that field stands twice."""
     for position, clause in enumerate(clauses):
@@ -401,9 +443,12 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
         ):
             continue
         mention = clause.mentions[0]
+        head = min(mention.heads, key=lambda h: h.start)
+        before = [i for i in clause.items if i.end <= head.start]
+        definite = bool(before) and before[-1].norm in _definite_words()  # "in the fruit"
         if (
             not all(h.norm in parts for h in mention.heads)
-            or mention.count is not None
+            or (mention.count is not None and not definite)
             or mention.quantity is not None
             or mention.distinct
             or mention.other
@@ -442,7 +487,14 @@ def merge_coreferences(
             kept.append(mention)
             continue
         first = _first_word(mention)
-        is_definite = first is not None and first.norm in definite
+        head = min(mention.heads, key=lambda h: h.start)
+        before_head = [i for i in clause.items if i.end <= head.start]
+        # "the carrots ...", "fire blight on the pears", "the Roma one"
+        is_definite = (first is not None and first.norm in definite) or (
+            bool(before_head) and before_head[-1].norm in definite
+        )
+        if is_definite and mention.count == 1 and _pronoun_one(mention):
+            mention.count = None
         bare = clause.link is not None and clause.link.role == "separator"
         summary = _is_summary(mention)
         # "imperator and danvers carrots, ..., imperator north of danvers": a variety
@@ -473,10 +525,14 @@ def merge_coreferences(
         )
         if names_variety:
             run = [m for m in repeated if _compatible(builder, m, mention)][:1] or run[:1]
-        if not run and is_definite:
-            # "three fields: potatoes, carrots and onions ..., the carrots have blight"
+        if not run and (is_definite or bare):
+            # "three fields: potatoes, carrots and onions ..., the carrots have blight";
+            # "pear trees and apple trees ..., pears to the west": a crop named again
+            # after a comma is the one earlier field it can be (if only one can).
             members = [r for m in reversed(kept) for r in (m.refinements[::-1] or [m])]
-            run = [m for m in members if _compatible(builder, m, mention)][:1]
+            candidates = [m for m in members if _compatible(builder, m, mention)]
+            if is_definite or len(candidates) == 1:
+                run = candidates[:1]
         if not run:
             kept.append(mention)
             continue
