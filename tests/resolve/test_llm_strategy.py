@@ -267,6 +267,14 @@ def test_one_side_reads_as_a_square(resolver: LlmResolver, context: ResolveConte
         generate("an apple orchard 2 mm long", resolver="llm")
 
 
+def test_area_units_written_as_several_tokens(
+    resolver: LlmResolver, context: ResolveContext
+) -> None:
+    intent = resolver.resolve_intent("a 2 ha cherry orchard and a 5000 m2 pear orchard", context)
+    areas = [f.size.area_m2 if f.size else None for f in intent.fields]
+    assert areas == [20000.0, 5000.0]
+
+
 def test_overlong_prompt(resolver: LlmResolver, context: ResolveContext) -> None:
     with pytest.raises(PromptError, match="reads at most"):
         resolver.resolve_intent("an apple orchard and " * 60 + "a pear orchard", context)

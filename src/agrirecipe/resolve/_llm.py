@@ -339,19 +339,19 @@ def _size_options(items: Sequence[Item], readings: Sequence[Sequence[Any]]) -> l
         elif "number" in kinds and item.norm not in ("a", "an") and item.norm.isalpha():
             pending.append(str(kinds["number"].value))
         elif "area_unit" in kinds and pending:
-            options.append(f"{pending[-1]} {item.norm}")
+            options.append(f"{pending[-1]} {_unit_word(item)}")
             pending, sided = [], None
         elif "length_unit" in kinds and pending:
             if len(pending) >= 2:
-                options.append(f"{pending[-2]} x {pending[-1]} {item.norm}")
-            elif sided is not None and sided[1] == item.norm:
-                square = f"{sided[0]} x {sided[0]} {item.norm}"
+                options.append(f"{pending[-2]} x {pending[-1]} {_unit_word(item)}")
+            elif sided is not None and sided[1] == _unit_word(item):
+                square = f"{sided[0]} x {sided[0]} {_unit_word(item)}"
                 if square in options:  # "40 m wide and 80 m long" is one rectangle
                     options.remove(square)
-                options.append(f"{sided[0]} x {pending[-1]} {item.norm}")
+                options.append(f"{sided[0]} x {pending[-1]} {_unit_word(item)}")
                 sided = None
             else:
-                sided = (pending[-1], item.norm)
+                sided = (pending[-1], _unit_word(item))
             pending = []
         elif "side" in kinds and sided is not None:
             # "a 100 m long field": one side only reads as a square (as the lexical reader)
@@ -359,6 +359,11 @@ def _size_options(items: Sequence[Item], readings: Sequence[Sequence[Any]]) -> l
         elif not (kinds.keys() & {"dimension_joiner", "filler"}):
             pending = []
     return list(dict.fromkeys(options))
+
+
+def _unit_word(item: Item) -> str:
+    """A unit as one word of a size option: "m2", not the tokens "m 2"."""
+    return item.norm.replace(" ", "")
 
 
 def _month_season(month: int, hemisphere: Hemisphere | None, table: Mapping[str, Any]) -> str:
@@ -404,7 +409,7 @@ def _add_senses(
         elif kind == "all":
             evidence.all_words = True
         elif kind in ("area_unit", "length_unit"):
-            evidence.units.setdefault(item.norm, (kind, float(sense.value)))
+            evidence.units.setdefault(_unit_word(item), (kind, float(sense.value)))
         elif kind == "relation" or (kind == "relation_trailer" and sense.value == "next_to"):
             # "next to", "side by side" (the model reads trailing directions backwards);
             # "on either side of" is a "between" whose order the model decides
@@ -1219,7 +1224,10 @@ def _parse_size(answer: str, evidence: _Evidence) -> SizeIntent | None:
         return None
     *numbers_text, unit = answer.split(" ")
     kind, factor = evidence.units.get(unit, ("length_unit", 1.0))
-    numbers = [float(t) for t in numbers_text if t != "x"]
+    try:
+        numbers = [float(t) for t in numbers_text if t != "x"]
+    except ValueError:
+        return None  # not a size the words state; the grammar only offers those
     if any(n <= 0 for n in numbers):
         raise PromptError(
             f"a field cannot measure {answer}", stage="resolve", hint="sizes must be positive"
