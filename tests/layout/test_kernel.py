@@ -320,3 +320,16 @@ def test_unknown_pattern_is_refused_by_the_kernel() -> None:
     params |= {"row_spacing_m": 1, "rows_per_bed": 1, "bed_row_spacing_m": 0, "in_row_spacing_m": 1}
     with pytest.raises(ValueError, match="spiral"):
         plant_grid(params)
+
+
+@settings(max_examples=40, deadline=None)
+@given(field_specs(), st.integers(0, 1000))
+def test_a_field_keeps_its_first_plant_whatever_the_missing_rate(
+    spec: FieldSpec, seed: int
+) -> None:
+    (params,) = field_parameters(recipe_of(spec, seed))
+    all_missing = dict(params, missing_rate=1.0)
+    kernel = place_field(all_missing)
+    assert len(kernel) == 1  # only the first position survives
+    assert np.array_equal(as_matrix(kernel), array_matrix(all_missing))
+    assert len(place_field(params)) >= 1

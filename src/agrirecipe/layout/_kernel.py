@@ -118,7 +118,8 @@ def iter_field_plants(
     bed, row by row within a bed, then along the row (local Y). Each nominal
     position draws five numbers from ``random.Random(params["seed"])`` (missing,
     jitter x, jitter y, yaw, scale) whether or not the plant is missing, so the
-    stream never depends on earlier outcomes.
+    stream never depends on earlier outcomes. The first position is never
+    missing, so no field is left empty.
     """
     beds, rows_per_bed, per_row, x_start, y_start = plant_grid(params)
     # Plain locals: attribute look-ups in the loop below would cost a third of its time.
@@ -146,7 +147,8 @@ def iter_field_plants(
             for step in range(per_row):
                 local_y = y_start + step * in_row
                 u_missing, u_x, u_y, u_yaw, u_scale = draw(), draw(), draw(), draw(), draw()
-                if u_missing < missing_rate:
+                # A field keeps its first plant: a tiny plot is never left empty.
+                if u_missing < missing_rate and (bed or row or step):
                     continue
                 px = local_x + (2.0 * u_x - 1.0) * jitter
                 py = local_y + (2.0 * u_y - 1.0) * jitter

@@ -95,6 +95,8 @@ def place_field_array(
     draws = _random_stream(int(params["seed"]), count * _kernel.KERNEL_DRAWS_PER_POSITION)
     draws = draws.reshape(count, _kernel.KERNEL_DRAWS_PER_POSITION)
     kept = draws[:, 0] >= terms.missing_rate  # the kernel skips u_missing < missing_rate
+    if count:
+        kept[0] = True  # ... except at the first position (no field is left empty)
     u_x, u_y, u_yaw, u_scale = (draws[kept, column] for column in range(1, 5))
     del draws
 
