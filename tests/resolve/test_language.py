@@ -1056,3 +1056,36 @@ def test_placed_members_and_rows_in_order(strategy: str) -> None:
     assert ("between", middle, (first, last)) in {
         (r.kind, r.subject, r.objects) for r in row.relations
     }
+
+
+# --- fresh prompts tried by the developer after set 4 -----------------------------------
+
+
+@pytest.mark.parametrize("strategy", STRATEGIES)
+def test_halves_members_and_pronouns_in_relations(strategy: str) -> None:
+    halves = _recipe("wheat in the north half and maize in the south half", strategy)
+    wheat, maize = (f.id for f in halves.fields)
+    assert [(r.kind, r.subject, r.objects) for r in halves.relations] == [
+        ("north_of", wheat, (maize,))
+    ]
+    members = _recipe("two vineyards, chardonnay west of riesling, september", strategy)
+    chardonnay, riesling = members.fields
+    assert (chardonnay.variety, riesling.variety) == ("Chardonnay", "Riesling")
+    assert [(r.kind, r.subject, r.objects) for r in members.relations] == [
+        ("west_of", chardonnay.id, (riesling.id,))
+    ]
+    pronoun = _recipe("a cherry orchard and, to the south of it, two strawberry fields", strategy)
+    cherry, first, _second = (f.id for f in pronoun.fields)
+    assert {(r.kind, r.subject, r.objects) for r in pronoun.relations} >= {
+        ("south_of", first, (cherry,))
+    }
+
+
+def test_still_green_is_not_ripe() -> None:
+    recipe = _recipe(
+        "Kordia and Regina cherries, the Regina block ripe, the Kordia block still green", "rules"
+    )
+    assert [(f.variety, f.stage) for f in recipe.fields] == [
+        ("Kordia", "Reproductive"),
+        ("Regina", "Maturation"),
+    ]

@@ -46,9 +46,10 @@ def read_relations(
         before = [m for c in clauses[:position] for m in c.named]
         after = [m for c in clauses[position:] for m in c.named]
         pronoun = bool(clause.items) and clause.items[0].norm in _PRONOUNS
-        if pronoun and not clause.mentions:
+        if pronoun and not clause.mentions and position and clauses[position - 1].named:
             # "put valencia oranges north of it, and a banana plot ...": the pronoun
-            # ends its clause, so it points back and the fields after are not its subject
+            # ends its clause after a subject, so it points back and the fields after
+            # are not its subject ("a cherry orchard and, south of it, two fields" is)
             after = []
         if link.role == "trailer" and link.data.get("value") in ("next_to", "row"):
             ordered = link.data.get("value") == "row"
@@ -271,7 +272,7 @@ def _placements(clauses: Sequence[Clause], members: dict[int, list[int]]) -> dic
         link = clause.link
         if link is None or link.role != "trailer" or link.data.get("value") not in _OPPOSITE:
             continue
-        if position == 0 or clause.mentions or clause.items:
+        if position == 0 or clause.mentions or any(i.role != "filler" for i in clause.items):
             continue
         previous = clauses[position - 1].named
         if len(previous) == 1 and id(previous[0]) in members:

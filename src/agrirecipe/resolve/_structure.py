@@ -203,6 +203,15 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
         )
         link = clause.link
         joined = link is not None and link.role in ("separator", "conjunction")
+        if (
+            parent is not None
+            and link is not None
+            and link.role == "relation"
+            and clauses[clause.index - 1].refined_parent is parent
+            and len(clause.mentions) == 1
+            and _names_varieties_of(clause.mentions[0], parent)
+        ):
+            joined = True  # "two vineyards, chardonnay west of riesling": the next member
         if parent is not None and joined and len(clause.mentions) <= 1:
             assert link is not None
             sub = (
@@ -287,6 +296,8 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
 def _names_varieties_of(sub: Mention, parent: Mention) -> bool:
     """``sub`` names, without a count of its own, a variety of the crop ``parent`` names."""
     crops = _strong_crops(parent)
+    if not crops and parent.plot is not None and len(parent.plot["options"]) == 1:
+        crops = {parent.plot["options"][0]}  # "two vineyards, chardonnay ..."
     named = {(c, v) for c, v, weak in sub.interpretations or () if v is not None and not weak}
     return (
         (sub.count is None or (sub.count == 1 and _pronoun_one(sub)))
