@@ -1089,3 +1089,32 @@ def test_still_green_is_not_ripe() -> None:
         ("Kordia", "Reproductive"),
         ("Regina", "Maturation"),
     ]
+
+
+# --- generalisation fixes found by the blind held-out set 5 -----------------------------
+
+
+@pytest.mark.parametrize(
+    ("prompt", "expected"),
+    [
+        ("Kordia cherrys, ripe, in june... brown rot on a lot of the fruit", [("Cherry", "Ill")]),
+        ("Elsanta strawberry beds in flower in May, no disease", [("Strawberry", "Healthy")]),
+        (
+            "grany smith apples and durondeau pears, two orchads, both in bloom, spring",
+            [("Apple", "Healthy"), ("Pear", "Healthy")],
+        ),
+        (
+            "cherry tomatoes beside a sweet cherry orchard, tomatoes sick, cherries healthy",
+            [("Tomato", "Ill"), ("Cherry", "Healthy")],
+        ),
+    ],
+)
+def test_words_about_fields_already_named(prompt: str, expected: list[tuple[str, str]]) -> None:
+    assert [(f.crop, f.health) for f in _recipe(prompt, "rules").fields] == expected
+
+
+def test_no_two_the_same_crop() -> None:
+    for seed in range(4):
+        recipe = _recipe("give me 3 veg fields, no two the same crop", "rules", seed=seed)
+        assert [f.category for f in recipe.fields] == ["Vegetables"] * 3
+        assert len({f.crop for f in recipe.fields}) == 3

@@ -551,6 +551,8 @@ def _plot_spec(
         or (None if spec.get("individual") else _singular(phrase.split()[-1])),
         "plural": bool(spec.get("plural", False)),
         "individual": bool(spec.get("individual", False)),
+        # "strawberry beds": the plural names one field's beds unless counted
+        "one_field": bool(spec.get("one_field", False)),
         "options": tuple(options),
         "tolerates": tuple(tolerates),
         "category": category,

@@ -103,6 +103,8 @@ def apply_plural_counts(clauses: Sequence[Clause], plural_count: int) -> None:
             spec = plots[-1].data["value"] if plots else {}
             if mention.count is not None or not spec.get("plural") or spec.get("individual"):
                 continue
+            if spec.get("one_field") and mention.has_crop:
+                continue  # "Elsanta strawberry beds": one field of beds
             first = _first_word(mention)
             if first is not None and first.norm in definite:
                 continue
@@ -460,7 +462,7 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
         if (
             not all(h.norm in parts for h in mention.heads)
             or (mention.count is not None and not definite)
-            or mention.quantity is not None
+            or (mention.quantity is not None and not definite)  # "a lot of the fruit"
             or mention.distinct
             or mention.other
             or not any(i.role in ("stage", "health") for i in mention.items)
@@ -524,9 +526,12 @@ def merge_coreferences(
             kept.append(mention)
             continue
         run: list[Mention] = []
+        own = _strong_crops(mention)
         for earlier in reversed(kept):
             if not _compatible(builder, earlier, mention):
                 break
+            if own and _strong_crops(earlier) and not own & _strong_crops(earlier):
+                break  # "cherries" is the cherry orchard, not the cherry tomatoes
             run.append(earlier)
         if summary and len(run) != mention.count:
             kept.append(mention)
@@ -584,10 +589,11 @@ def _same_variety(earlier: Mention, mention: Mention) -> bool:
 
 
 def _is_summary(mention: Mention) -> bool:
-    """'..., three fields': a count of generic plots restating the fields just listed."""
+    """'..., three fields', '..., two orchards': a count of plots restating the fields just
+    listed (a plot noun that narrows must fit them: the coreference check sees to it)."""
     return (
         (mention.count or 1) >= 2
         and mention.interpretations is None
-        and mention.category is None
-        and all(h.role == "plot" and not h.data["value"]["narrows"] for h in mention.heads)
+        and all(h.role == "plot" for h in mention.heads)
+        and (mention.category is None or all(h.data["value"]["narrows"] for h in mention.heads))
     )
