@@ -66,26 +66,7 @@ def read_relations(
             fields = members.get(id(group[0]), []) if len(group) == 1 else []
             if len(fields) >= 2:
                 # "two different fruits side by side": the fields of one mention in a row.
-                trace.append(
-                    TraceStep(
-                        stage="decompose",
-                        subject=link.raw,
-                        detail=f"the {len(fields)} fields of {group[0].text!r} in a row",
-                    )
-                )
-                relations.extend(
-                    RelationIntent(kind="next_to", subject=b, objects=(a,), text=link.raw)
-                    for a, b in itertools.pairwise(fields)
-                )
-                if ordered and len(fields) == 3:
-                    relations.append(
-                        RelationIntent(
-                            kind="between",
-                            subject=fields[1],
-                            objects=(fields[0], fields[2]),
-                            text=link.raw,
-                        )
-                    )
+                relations += _row(fields, group[0], link, trace, ordered=ordered)
                 continue
             if ordered:
                 warnings.append(f"ignored {link.raw!r}: it needs two or more fields before it")
@@ -157,18 +138,33 @@ def _adjacent_rows(
             if len(fields) < 2 or not adjacent or id(mention) in seen:
                 continue
             seen.add(id(mention))
-            trace.append(
-                TraceStep(
-                    stage="decompose",
-                    subject=adjacent[0].raw,
-                    detail=f"the {len(fields)} fields of {mention.text!r} in a row",
-                )
-            )
-            rows += [
-                RelationIntent(kind="next_to", subject=b, objects=(a,), text=adjacent[0].raw)
-                for a, b in itertools.pairwise(fields)
-            ]
+            rows += _row(fields, mention, adjacent[0], trace, ordered=False)
     return rows
+
+
+def _row(
+    fields: Sequence[int], mention: Mention, word: Item, trace: list[TraceStep], *, ordered: bool
+) -> list[RelationIntent]:
+    """The fields of one mention side by side in the order named; with ``ordered`` and
+    three of them, the middle one also between the other two ("in a line")."""
+    trace.append(
+        TraceStep(
+            stage="decompose",
+            subject=word.raw,
+            detail=f"the {len(fields)} fields of {mention.text!r} in a row",
+        )
+    )
+    row = [
+        RelationIntent(kind="next_to", subject=b, objects=(a,), text=word.raw)
+        for a, b in itertools.pairwise(fields)
+    ]
+    if ordered and len(fields) == 3:
+        row.append(
+            RelationIntent(
+                kind="between", subject=fields[1], objects=(fields[0], fields[2]), text=word.raw
+            )
+        )
+    return row
 
 
 def _surrounded(
