@@ -12,6 +12,7 @@
 
 from __future__ import annotations
 
+import functools
 import itertools
 from collections.abc import Sequence
 
@@ -456,9 +457,7 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
         ):
             continue
         mention = clause.mentions[0]
-        head = min(mention.heads, key=lambda h: h.start)
-        before = [i for i in clause.items if i.end <= head.start]
-        definite = bool(before) and before[-1].norm in _definite_words()  # "in the fruit"
+        definite = _definite_before_head(clause, mention)  # "in the fruit"
         if (
             not all(h.norm in parts for h in mention.heads)
             or (mention.count is not None and not definite)
@@ -476,8 +475,16 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
     return dissolved
 
 
-def _definite_words() -> set[str]:
-    return {str(word) for word in vocabulary()["definite_words"]}
+@functools.lru_cache(maxsize=1)
+def _definite_words() -> frozenset[str]:
+    return frozenset(str(word) for word in vocabulary()["definite_words"])
+
+
+def _definite_before_head(clause: Clause, mention: Mention) -> bool:
+    """Whether the word right before the mention's first head is "the", "its"..."""
+    head = min(mention.heads, key=lambda h: h.start)
+    before = [i for i in clause.items if i.end <= head.start]
+    return bool(before) and before[-1].norm in _definite_words()
 
 
 def _compatible(builder: MentionBuilder, target: Mention, mention: Mention) -> bool:
@@ -500,11 +507,9 @@ def merge_coreferences(
             kept.append(mention)
             continue
         first = _first_word(mention)
-        head = min(mention.heads, key=lambda h: h.start)
-        before_head = [i for i in clause.items if i.end <= head.start]
         # "the carrots ...", "fire blight on the pears", "the Roma one"
-        is_definite = (first is not None and first.norm in definite) or (
-            bool(before_head) and before_head[-1].norm in definite
+        is_definite = (first is not None and first.norm in definite) or _definite_before_head(
+            clause, mention
         )
         if is_definite and mention.count == 1 and _pronoun_one(mention):
             mention.count = None
