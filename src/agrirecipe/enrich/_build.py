@@ -9,11 +9,12 @@ the environment's sun.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 
 from agrirecipe.hierarchy import Hierarchy
 from agrirecipe.knowledge import KnowledgeBase
 from agrirecipe.recipe import (
+    Agronomy,
     AttributeName,
     Environment,
     FieldGeometry,
@@ -87,9 +88,17 @@ def build_field(
     placement: Placement | None = None,
     stated: Sequence[AttributeName] = (),
     inferred: Sequence[AttributeName] = (),
+    agronomy_update: Mapping[str, float | int] | None = None,
 ) -> FieldSpec:
-    """A complete :class:`FieldSpec`: asset path, agronomy and placement from the knowledge base."""
+    """A complete :class:`FieldSpec`: asset path, agronomy and placement from the knowledge base.
+
+    ``agronomy_update`` replaces knowledge-base values the prompt stated (row and
+    in-row spacing, rows per bed); the result is validated again.
+    """
     key = hierarchy.key(crop, variety, stage, season, health)
+    agronomy = knowledge.agronomy(key)
+    if agronomy_update:
+        agronomy = Agronomy.model_validate({**agronomy.model_dump(), **agronomy_update})
     return FieldSpec(
         id=field_id,
         label=label,
@@ -100,7 +109,7 @@ def build_field(
         season=season,
         health=health,
         asset_path=hierarchy.asset_path(key),
-        agronomy=knowledge.agronomy(key),
+        agronomy=agronomy,
         geometry=geometry,
         placement=placement or knowledge.default_placement(crop, variety),
         stated=tuple(stated),

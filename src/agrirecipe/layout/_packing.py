@@ -52,6 +52,9 @@ class FieldRequest:
     width_m: float
     length_m: float
     headland_m: float = 0.0
+    #: Counter-clockwise turn of the rectangle (rows along its local Y); the field is
+    #: packed by its bounding box, so a turned field never overlaps a neighbour.
+    rotation_deg: float = 0.0
 
 
 def describe_relation(relation: Relation) -> str:
@@ -91,13 +94,45 @@ def pack_fields(
     geometry: dict[str, FieldGeometry] = {}
     for request in requests:
         x, y = origins[request.id]
+        offset_x, offset_y = _turned_offset(request)
         geometry[request.id] = FieldGeometry(
-            origin_m=(x, y),
+            origin_m=(x + offset_x, y + offset_y),
             size_m=(float(request.width_m), float(request.length_m)),
-            rotation_deg=0.0,
+            rotation_deg=float(request.rotation_deg),
             headland_m=float(request.headland_m),
         )
     return geometry
+
+
+def _turned_corners(request: FieldRequest) -> list[tuple[float, float]]:
+    """The rectangle's corners relative to its origin after the turn."""
+    cos_r = math.cos(math.radians(request.rotation_deg))
+    sin_r = math.sin(math.radians(request.rotation_deg))
+    local = (
+        (0.0, 0.0),
+        (request.width_m, 0.0),
+        (request.width_m, request.length_m),
+        (0.0, request.length_m),
+    )
+    return [(u * cos_r - v * sin_r, u * sin_r + v * cos_r) for u, v in local]
+
+
+def _turned_offset(request: FieldRequest) -> tuple[float, float]:
+    """Where the turned rectangle's origin lies inside its packed bounding box."""
+    if not request.rotation_deg:
+        return 0.0, 0.0
+    corners = _turned_corners(request)
+    return -min(x for x, _ in corners), -min(y for _, y in corners)
+
+
+def _footprint(request: FieldRequest) -> tuple[float, float]:
+    """Width and length of the bounding box the packer places."""
+    if not request.rotation_deg:
+        return float(request.width_m), float(request.length_m)
+    corners = _turned_corners(request)
+    xs = [x for x, _ in corners]
+    ys = [y for _, y in corners]
+    return max(xs) - min(xs), max(ys) - min(ys)
 
 
 # --- input checks -------------------------------------------------------------------------------
@@ -129,7 +164,19 @@ def _checked_sizes(requests: Sequence[FieldRequest]) -> dict[str, tuple[float, f
                 stage="layout",
                 path=f"fields[{index}].headland_m",
             )
-        sizes[request.id] = (float(request.width_m), float(request.length_m))
+        rotation = request.rotation_deg
+        if (
+            not isinstance(rotation, int | float)
+            or not math.isfinite(rotation)
+            or not (-180.0 <= rotation <= 180.0)
+        ):
+            raise PromptError(
+                f"field {request.id!r}: rotation_deg must be between -180 and 180, "
+                f"got {rotation!r}",
+                stage="layout",
+                path=f"fields[{index}].rotation_deg",
+            )
+        sizes[request.id] = _footprint(request)
     return sizes
 
 

@@ -11,6 +11,7 @@ from agrirecipe.recipe._io import (
 )
 from agrirecipe.recipe._models import (
     DEFAULT_MAX_PLANTS,
+    GEOMETRY_ATTRIBUTES,
     SCHEMA_VERSION,
     Agronomy,
     AttributeName,
@@ -18,6 +19,7 @@ from agrirecipe.recipe._models import (
     FieldGeometry,
     FieldSpec,
     FoliageState,
+    GeometryAttribute,
     GrowthForm,
     HealthState,
     LeafHabit,
@@ -33,6 +35,7 @@ from agrirecipe.recipe._models import (
 
 __all__ = [
     "DEFAULT_MAX_PLANTS",
+    "GEOMETRY_ATTRIBUTES",
     "SCHEMA_VERSION",
     "Agronomy",
     "AttributeName",
@@ -40,6 +43,7 @@ __all__ = [
     "FieldGeometry",
     "FieldSpec",
     "FoliageState",
+    "GeometryAttribute",
     "GrowthForm",
     "HealthState",
     "LeafHabit",

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import math
 import re
-from typing import Annotated, Any, Literal
+from typing import Annotated, Any, Literal, get_args
 
 from pydantic import (
     BaseModel,
@@ -30,6 +30,7 @@ from pydantic import (
 
 __all__ = [
     "DEFAULT_MAX_PLANTS",
+    "GEOMETRY_ATTRIBUTES",
     "SCHEMA_VERSION",
     "Agronomy",
     "AttributeName",
@@ -37,6 +38,7 @@ __all__ = [
     "FieldGeometry",
     "FieldSpec",
     "FoliageState",
+    "GeometryAttribute",
     "GrowthForm",
     "HealthState",
     "LeafHabit",
@@ -65,7 +67,24 @@ LeafHabit = Literal["deciduous", "evergreen", "perennial", "annual", "biennial"]
 FoliageState = Literal[
     "leafless", "budding", "leafy", "flowering", "fruiting", "autumn", "senescent"
 ]
-AttributeName = Literal["category", "crop", "variety", "stage", "season", "health", "size"]
+#: Field geometry a prompt can state (issue 8): rows, spacings, density, direction.
+GeometryAttribute = Literal[
+    "rows",
+    "beds",
+    "rows_per_bed",
+    "row_length",
+    "row_spacing",
+    "bed_width",
+    "in_row_spacing",
+    "density",
+    "plant_count",
+    "headland",
+    "row_direction",
+]
+GEOMETRY_ATTRIBUTES: tuple[GeometryAttribute, ...] = get_args(GeometryAttribute)
+AttributeName = Literal[
+    "category", "crop", "variety", "stage", "season", "health", "size", GeometryAttribute
+]
 RelationKind = Literal["north_of", "south_of", "east_of", "west_of", "next_to", "between"]
 
 _FIELD_ID = r"^[a-z][a-z0-9_]{0,62}$"
@@ -231,22 +250,25 @@ class FieldSpec(_Frozen):
         headland = self.geometry.headland_m
         usable_w = width - 2 * headland
         usable_l = length - 2 * headland
-        bed_span = self.agronomy.bed_row_spacing_m * (self.agronomy.rows_per_bed - 1)
-        need = self.agronomy.canopy_width_m
-        if usable_w < max(need, bed_span) or usable_l < need:
+        agronomy = self.agronomy
+        bed_span = agronomy.bed_row_spacing_m * (agronomy.rows_per_bed - 1)
+        # One plant needs its canopy, or at least half the spacing it was planted at
+        # (a single stated row of maize 0.75 m wide is a real plot).
+        need_w = min(agronomy.canopy_width_m, agronomy.row_spacing_m / 2)
+        need_l = min(agronomy.canopy_width_m, agronomy.in_row_spacing_m / 2)
+        if usable_w < max(need_w, bed_span) or usable_l < need_l:
             raise ValueError(
                 f"geometry.size_m: a {width:g} x {length:g} m field with a {headland:g} m "
                 f"headland is too small for one {self.crop} plant (needs at least "
-                f"{2 * headland + max(need, bed_span):g} x {2 * headland + need:g} m)"
+                f"{2 * headland + max(need_w, bed_span):g} x {2 * headland + need_l:g} m)"
             )
         overlap = set(self.stated) & set(self.inferred)
         if overlap:
             raise ValueError(f"stated: {sorted(overlap)} cannot be both stated and inferred")
         return self
 
-    @property
-    def nominal_plant_count(self) -> int:
-        """Planting positions before missing plants are removed (the layout kernel's grid)."""
+    def _grid(self) -> tuple[int, int]:
+        """Beds (or single rows) across the field and plants along each row (the kernel's grid)."""
         width, length = self.geometry.size_m
         headland = self.geometry.headland_m
         agronomy = self.agronomy
@@ -255,7 +277,41 @@ class FieldSpec(_Frozen):
         usable_l = length - 2 * headland
         beds = math.floor(usable_w / agronomy.row_spacing_m + 1e-9) + 1
         per_row = math.floor(usable_l / agronomy.in_row_spacing_m + 1e-9) + 1
-        return beds * agronomy.rows_per_bed * per_row
+        return beds, per_row
+
+    @property
+    def nominal_plant_count(self) -> int:
+        """Planting positions before missing plants are removed (the layout kernel's grid)."""
+        beds, per_row = self._grid()
+        return beds * self.agronomy.rows_per_bed * per_row
+
+    @property
+    def bed_count(self) -> int:
+        """Beds or ridges across the field (equal to :attr:`row_count` for single rows)."""
+        return self._grid()[0]
+
+    @property
+    def row_count(self) -> int:
+        """Plant rows in the field, every row of every bed counted."""
+        return self._grid()[0] * self.agronomy.rows_per_bed
+
+    @property
+    def row_length_m(self) -> float:
+        """Length of the planted rows: the field's length inside its headland."""
+        return self.geometry.size_m[1] - 2 * self.geometry.headland_m
+
+    @property
+    def plants_per_ha(self) -> float:
+        """Nominal planting density of the row pattern (plants per hectare)."""
+        agronomy = self.agronomy
+        return (
+            10_000.0 * agronomy.rows_per_bed / (agronomy.row_spacing_m * agronomy.in_row_spacing_m)
+        )
+
+    @property
+    def row_bearing_deg(self) -> float:
+        """Direction the rows run, degrees clockwise from north in [0, 180)."""
+        return round((-self.geometry.rotation_deg) % 180.0, 9) % 180.0
 
 
 class Relation(_Frozen):

@@ -38,6 +38,7 @@ _PRE_HEAD = (
     "negation",
     "weak_variety",
     "size",
+    "geometry",
     "filler",
     "unknown",
     "reference",

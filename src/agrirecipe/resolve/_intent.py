@@ -45,6 +45,7 @@ __all__ = [
     "RelationIntent",
     "ResolveContext",
     "Resolver",
+    "RowSpec",
     "SceneIntent",
     "SizeIntent",
     "TraceStep",
@@ -79,6 +80,34 @@ class SizeIntent(_Frozen):
         return self
 
 
+class RowSpec(_Frozen):
+    """Field geometry the prompt stated in rows ("10 rows, 80 m long, 76 cm apart").
+
+    Every value is ``None`` unless stated; lengths in metres, ``row_bearing_deg``
+    clockwise from north in [0, 180) (0: rows run north-south, 90: east-west).
+    The pipeline turns it into the field's spacing, size and rotation, checked
+    against the crop's sourced ranges.
+    """
+
+    rows: int | None = Field(default=None, gt=0)
+    beds: int | None = Field(default=None, gt=0)
+    rows_per_bed: int | None = Field(default=None, gt=0)
+    row_length_m: float | None = Field(default=None, gt=0.0)
+    row_spacing_m: float | None = Field(default=None, gt=0.0)
+    bed_width_m: float | None = Field(default=None, gt=0.0)
+    in_row_spacing_m: float | None = Field(default=None, gt=0.0)
+    plants_per_ha: float | None = Field(default=None, gt=0.0)
+    plant_count: int | None = Field(default=None, gt=0)
+    plants_per_row: int | None = Field(default=None, gt=0)
+    headland_m: float | None = Field(default=None, ge=0.0)
+    row_bearing_deg: float | None = Field(default=None, ge=0.0, lt=180.0)
+    text: str = Field(default="", description="The words the geometry was read from.")
+
+    def stated(self) -> dict[str, float]:
+        """The stated values by name (``text`` left out)."""
+        return {k: v for k, v in self.model_dump(exclude={"text"}).items() if v is not None}
+
+
 class FieldIntent(_Frozen):
     """One requested field; every attribute is ``None`` unless the prompt stated it.
 
@@ -103,6 +132,9 @@ class FieldIntent(_Frozen):
     season: Season | None = None
     health: HealthState | None = None
     size: SizeIntent | None = None
+    rows: RowSpec | None = Field(
+        default=None, description="Rows, spacings, density and direction the prompt stated."
+    )
     generic: bool = Field(
         default=False, description="No crop named: the pipeline chooses one (seeded)."
     )

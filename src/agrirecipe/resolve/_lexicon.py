@@ -70,6 +70,7 @@ SenseKind = Literal[
     "hemisphere",
     "place",
     "non_agricultural",
+    "geometry",
     "filler",
 ]
 

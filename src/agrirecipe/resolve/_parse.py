@@ -29,6 +29,7 @@ from agrirecipe.resolve._decompose import (
     decompose,
     resolve_weak_varieties,
 )
+from agrirecipe.resolve._geometry import GeometryMatch, find_geometry, row_spec
 from agrirecipe.resolve._intent import (
     Candidate,
     FieldIntent,
@@ -37,7 +38,15 @@ from agrirecipe.resolve._intent import (
     SceneIntent,
     TraceStep,
 )
-from agrirecipe.resolve._lexicon import Item, Lexicon, OtherCrop, tokenize, vocabulary
+from agrirecipe.resolve._lexicon import (
+    Item,
+    Lexicon,
+    OtherCrop,
+    Sense,
+    Token,
+    tokenize,
+    vocabulary,
+)
 from agrirecipe.resolve._relations import coordinated, read_relations
 from agrirecipe.resolve._scan import assign_roles, read_latitude, read_sizes
 from agrirecipe.resolve._structure import (
@@ -69,7 +78,16 @@ _EXAMPLES = (
 )
 #: The most fields one recipe holds (SceneRecipe.fields).
 _MAX_FIELDS = 64
-_ATTRIBUTE_ROLES = ("stage", "season", "month", "health", "negation", "size", "all")
+_ATTRIBUTE_ROLES = (
+    "stage",
+    "season",
+    "month",
+    "health",
+    "negation",
+    "size",
+    "geometry",
+    "all",
+)
 
 
 @dataclass
@@ -117,7 +135,7 @@ class PromptReader:
                 hint=f"describe the fields you want, e.g. {_EXAMPLES}",
             )
         tokens = tokenize(prompt)
-        items = self.lexicon.tag(tokens)
+        items = self._tag(tokens, find_geometry(tokens))
         items, steps = self.unknown_words(items, self.lexicon)
         self.trace.extend(steps)
         assign_roles(items)
@@ -194,6 +212,17 @@ class PromptReader:
             trace=tuple(self.trace),
             resolver=self.strategy,
         )
+
+    def _tag(self, tokens: Sequence[Token], geometry: Sequence[GeometryMatch]) -> list[Item]:
+        """The lexicon's items, with each stated geometry ("76 cm apart") as one item."""
+        items: list[Item] = []
+        index = 0
+        for match in geometry:
+            items.extend(self.lexicon.tag(tokens[index : match.first]))
+            items.append(Item(tuple(tokens[match.first : match.last]), (Sense("geometry", match),)))
+            index = match.last
+        items.extend(self.lexicon.tag(tokens[index:]))
+        return items
 
     # --- unknown and non-agricultural requests ---
 
@@ -363,8 +392,13 @@ class PromptReader:
                 targets = [refined.refinements[-1]]
             else:
                 targets = coordinated(clauses, position)
+            # Rows and spacings describe one plot: the nearest field named ("each" shares them).
+            geometry = [i for i in others if i.role == "geometry"]
+            others = [i for i in others if i.role != "geometry"]
             for target in targets:
                 target.items.extend(seasons + others)
+            if geometry and targets:
+                targets[-1].items.extend(geometry)
         return scene
 
     def _place(
@@ -496,6 +530,7 @@ class PromptReader:
         health: HealthState | None = health_of(member.items, text)
         sizes = [item.data["size"] for item in member.items if item.role == "size"]
         size = single_size(sizes, text)
+        rows = row_spec(member.items, text)
         interpretations = member.interpretations or []
         strong = [i for i in interpretations if not i[2]] or []
         crop = variety = None
@@ -525,6 +560,7 @@ class PromptReader:
             season=season,
             health=health,
             size=size,
+            rows=rows,
             generic=crop is None,
             crop_options=options if crop is None else (),
             distinct_group=member.group,

@@ -23,7 +23,7 @@ from typing import TYPE_CHECKING, TypeVar
 from pydantic import ValidationError
 
 from agrirecipe._errors import ConfigurationError, PromptError, UnknownCropError
-from agrirecipe.enrich import DEFAULT_LATITUDE_DEG, build_environment, build_field
+from agrirecipe.enrich import DEFAULT_LATITUDE_DEG, build_environment, build_field, plan_rows
 from agrirecipe.hierarchy import Hierarchy, default_hierarchy, load_hierarchy
 from agrirecipe.knowledge import KnowledgeBase, default_knowledge_base, load_knowledge_base
 from agrirecipe.recipe import (
@@ -210,6 +210,9 @@ class _Plan:
     headland_m: float
     noun: str
     notes: list[str]
+    rotation_deg: float = 0.0
+    agronomy_update: dict[str, float | int] | None = None
+    warnings: tuple[str, ...] = ()
 
 
 def build_recipe(
@@ -226,6 +229,8 @@ def build_recipe(
         for index in range(len(intent.fields))
     ]
     warnings = list(intent.warnings)
+    for plan in plans:
+        warnings.extend(plan.warnings)
     ids = _field_ids(plans, context)
     labels = _labels(plans)
     for plan, field_id in zip(plans, ids, strict=True):
@@ -267,6 +272,7 @@ def build_recipe(
                 geometry=geometry[field_id],
                 stated=plan.stated,
                 inferred=plan.inferred,
+                agronomy_update=plan.agronomy_update,
             )
         except ValidationError as exc:
             raise PromptError(
@@ -563,7 +569,26 @@ def _enrich(
     health: HealthState = pick("health", field.health, lambda: ("Healthy", "unless said otherwise"))
     width, length = knowledge.default_field_size_m(crop, variety)
     headland = knowledge.default_headland_m(crop, variety)
-    if field.size is not None:
+    rows = None
+    if field.rows is not None:
+        size = field.size
+        rows = plan_rows(
+            field.rows.stated(),
+            knowledge.crop_file(crop, variety),
+            label=field.mention or field.text or crop,
+            size_m=(size.width_m, size.length_m)
+            if size is not None and size.width_m is not None and size.length_m is not None
+            else None,
+            area_m2=size.area_m2 if size is not None else None,
+            default_size_m=(width, length),
+            default_headland_m=headland,
+        )
+        stated.extend(rows.stated)
+        if size is not None:
+            stated.append("size")
+        width, length = rows.size_m
+        headland = rows.headland_m
+    elif field.size is not None:
         stated.append("size")
         if field.size.width_m is not None and field.size.length_m is not None:
             width, length = field.size.width_m, field.size.length_m
@@ -572,7 +597,7 @@ def _enrich(
             width, length = width * scale, length * scale
         width, length = round(width, 2), round(length, 2)
         headland = min(headland, round(_MAX_HEADLAND_SHARE * min(width, length), 2))
-    else:
+    elif rows is None:
         inferred.append("size")
     noun = field.noun
     if noun is None or (field.generic and noun not in _KIND_NOUNS):
@@ -593,6 +618,18 @@ def _enrich(
         headland_m=headland,
         noun=noun,
         notes=notes,
+        rotation_deg=rows.rotation_deg if rows is not None else 0.0,
+        agronomy_update=(
+            {
+                "row_spacing_m": rows.row_spacing_m,
+                "in_row_spacing_m": rows.in_row_spacing_m,
+                "rows_per_bed": rows.rows_per_bed,
+                "bed_row_spacing_m": rows.bed_row_spacing_m,
+            }
+            if rows is not None
+            else None
+        ),
+        warnings=tuple(rows.warnings) if rows is not None else (),
     )
 
 
@@ -631,7 +668,7 @@ def _layout(
     from agrirecipe.layout import FieldRequest, pack_fields
 
     requests = [
-        FieldRequest(field_id, plan.size_m[0], plan.size_m[1], plan.headland_m)
+        FieldRequest(field_id, plan.size_m[0], plan.size_m[1], plan.headland_m, plan.rotation_deg)
         for plan, field_id in zip(plans, ids, strict=True)
     ]
     return pack_fields(requests, relations)

@@ -20,6 +20,7 @@ __all__ = ["assign_roles", "read_latitude", "read_sizes"]
 # Sense kinds in the order they win when a phrase has several (a crop name beats
 # its use as a colour; "one" is a number unless decomposition sees a reference).
 _ROLE_ORDER = (
+    "geometry",
     "other_crop",
     "plot",
     "container",
@@ -113,6 +114,9 @@ def _role(item: Item, previous: Item | None, cues: set[str], *, alone: bool = Fa
             continue
         if kind == "relation" and sense.value == "between":
             return "between"
+        if kind == "geometry":
+            item.data["geometry"] = sense.value
+            return "geometry"
         if kind == "number" and "reference" in kinds:
             item.data["reference"] = True
         item.data["value"] = sense.value

@@ -1,0 +1,276 @@
+"""Reading stated field geometry: rows, spacings, density, headland and row direction.
+
+"10 rows of maize, 80 m long, 76 cm apart", "38-inch rows", "a plant every 20 cm",
+"80,000 plants/ha", "two rows per bed on 1.5 m beds", "rows running east-west".
+The patterns are data (``data/geometry.yaml``); this module fills their
+placeholders, runs them once each over the prompt's normalised tokens (linear in
+the prompt's length) and returns what each match states. The prompt reader turns
+every match into one ``geometry`` item, which attaches to its field the way a
+size does; :func:`row_spec` merges a field's items into a :class:`RowSpec`.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+import re
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import yaml
+
+from agrirecipe._errors import PromptError
+from agrirecipe.resolve._intent import RowSpec
+from agrirecipe.resolve._lexicon import DATA_DIR, Token, vocabulary
+
+__all__ = ["GeometryMatch", "find_geometry", "row_spec"]
+
+# Keys whose value is a whole number.
+_COUNTS = frozenset({"rows", "beds", "rows_per_bed", "plant_count", "plants_per_row"})
+_MINUS = frozenset({"-", "−", "–"})
+# How far (in tokens) a row word may be from "80 m long" for it to be the rows' length.
+_NEAR_ROWS = 10
+
+
+@dataclass(frozen=True, slots=True)
+class GeometryMatch:
+    """One stated geometry value and the tokens it was read from (``first``..``last`` - 1)."""
+
+    key: str
+    value: float
+    first: int
+    last: int
+    text: str
+
+
+@dataclass(frozen=True, slots=True)
+class _Pattern:
+    key: str
+    regex: re.Pattern[str]
+    scale: float
+    invert: bool
+    min_m: float | None
+    max_m: float | None
+    min_n: float | None
+    near_rows: bool
+
+
+def _alternatives(words: Iterable[str]) -> str:
+    """A regex alternation, longest first so "drill rows" wins over "drill"."""
+    ordered = sorted({str(w) for w in words}, key=len, reverse=True)
+    return "(?:" + "|".join(re.escape(w) for w in ordered) + ")"
+
+
+@functools.cache
+def _file() -> dict[str, Any]:
+    data: dict[str, Any] = yaml.safe_load((DATA_DIR / "geometry.yaml").read_text("utf-8"))
+    return data
+
+
+@dataclass(frozen=True, slots=True)
+class _Tables:
+    patterns: tuple[_Pattern, ...]
+    number_words: dict[str, float]
+    units: dict[str, float]
+    areas: dict[str, float]
+    directions: dict[str, float]
+    row_words: frozenset[str]
+
+
+@functools.lru_cache(maxsize=1)
+def _tables() -> _Tables:
+    data = _file()
+    words = data["words"]
+    number_words: dict[str, float] = {str(k): float(v) for k, v in words["number_words"].items()}
+    units: dict[str, float] = {str(k): float(v) for k, v in vocabulary()["length_units"].items()}
+    areas: dict[str, float] = {str(k): float(v) for k, v in data["density_units"].items()}
+    directions: dict[str, float] = {str(k): float(v) for k, v in words["directions"].items()}
+    number = rf"(?P<n>\d+(?:\.\d+)?|{_alternatives(number_words)})"
+    fill = {
+        "{N}": number,
+        "{LEN}": rf"{number} ?(?P<unit>{_alternatives(units)})(?! 2\b)",
+        "{ROWS}": _alternatives(words["rows"]),
+        "{ROWMOD}": _alternatives(words["row_modifiers"]),
+        "{PLANTS}": _alternatives(words["plants"]),
+        "{BEDS}": _alternatives(words["beds"]),
+        "{PER}": _alternatives(words["per"]),
+        "{AREA}": _alternatives(areas),
+        "{DIR}": _alternatives(directions),
+    }
+    patterns: list[_Pattern] = []
+    for entry in data["patterns"]:
+        # A pattern ends where a word ends ("\\b" fails after "°").
+        source = re.sub(r"\\b$", "(?![a-z0-9])", str(entry["re"]))
+        for name, regex in fill.items():
+            source = source.replace(name, regex)
+        patterns.append(
+            _Pattern(
+                key=str(entry["key"]),
+                regex=re.compile(rf"(?<![\w.]){source}"),
+                scale=float(entry.get("scale", 1.0)),
+                invert=bool(entry.get("invert", False)),
+                min_m=entry.get("min_m"),
+                max_m=entry.get("max_m"),
+                min_n=entry.get("min_n"),
+                near_rows=bool(entry.get("near_rows", False)),
+            )
+        )
+    return _Tables(
+        patterns=tuple(patterns),
+        number_words=number_words,
+        units=units,
+        areas=areas,
+        directions=directions,
+        row_words=frozenset(
+            w for phrase in (*words["rows"], *words["beds"]) for w in str(phrase).split()
+        ),
+    )
+
+
+def find_geometry(tokens: Sequence[Token]) -> list[GeometryMatch]:
+    """Every stated geometry value in the prompt, in prompt order, never overlapping.
+
+    Raises :class:`~agrirecipe.PromptError` for a value that cannot be a
+    geometry ("0 cm apart", "nan rows").
+    """
+    tables = _tables()
+    text_parts: list[str] = []
+    starts: list[int] = []
+    offset = 0
+    for token in tokens:
+        starts.append(offset)
+        text_parts.append(token.norm)
+        offset += len(token.norm) + 1
+    text = " ".join(text_parts)
+    row_positions = [i for i, t in enumerate(tokens) if t.norm in tables.row_words]
+    claimed = [False] * len(tokens)
+    found: list[GeometryMatch] = []
+
+    def token_at(char: int) -> int:
+        # starts is sorted: binary search keeps the whole reading linear-logarithmic.
+        low, high = 0, len(starts) - 1
+        while low < high:
+            mid = (low + high + 1) // 2
+            if starts[mid] <= char:
+                low = mid
+            else:
+                high = mid - 1
+        return low
+
+    for pattern in tables.patterns:
+        for match in pattern.regex.finditer(text):
+            if match.end() < len(text) and text[match.end()] not in " ":
+                continue  # ended inside a token
+            first = token_at(match.start())
+            last = token_at(match.end() - 1) + 1
+            if any(claimed[first:last]):
+                continue
+            if pattern.near_rows and not any(
+                abs(position - first) <= _NEAR_ROWS for position in row_positions
+            ):
+                continue
+            value = _value(pattern, match, tables)
+            if value is None:
+                continue
+            raw = " ".join(t.raw for t in tokens[first:last])
+            if (
+                first
+                and tokens[first - 1].raw in _MINUS
+                and (tokens[first - 1].end == tokens[first].start)
+            ):
+                value, raw = -value, tokens[first - 1].raw + raw  # "-3 rows"
+            _check(pattern.key, value, raw)
+            found.append(GeometryMatch(pattern.key, value, first, last, raw))
+            for index in range(first, last):
+                claimed[index] = True
+    found.sort(key=lambda m: m.first)
+    return found
+
+
+def _number(text: str, number_words: dict[str, float]) -> float:
+    if text in number_words:
+        return number_words[text]
+    return float(text)
+
+
+def _value(pattern: _Pattern, match: re.Match[str], tables: _Tables) -> float | None:
+    groups = match.groupdict()
+    if pattern.key == "row_bearing_deg" and groups.get("a") is not None:
+        a = tables.directions[str(groups["a"])]
+        b = tables.directions[str(groups["b"])]
+        if (a - b) % 180 != 0:
+            return None  # "north east" is one direction, not a line
+        return a % 180.0
+    if groups.get("twin") is not None:
+        return 2.0
+    value = _number(str(groups["n"]), tables.number_words) * pattern.scale
+    if groups.get("unit") is not None:
+        metres = value * tables.units[str(groups["unit"])]
+        if pattern.max_m is not None and metres > pattern.max_m:
+            return None
+        if pattern.min_m is not None and metres < pattern.min_m:
+            return None
+        value = metres
+    if groups.get("area") is not None:
+        value = value / tables.areas[str(groups["area"])]
+    if pattern.min_n is not None and value < pattern.min_n:
+        return None
+    if pattern.invert:
+        if value <= 0 or not math.isfinite(value):
+            raise PromptError(
+                f"{match.group(0)!r} is not a number of plants a row can hold",
+                stage="resolve",
+                hint="say how many plants per metre, e.g. '5 plants per metre'",
+            )
+        value = 1.0 / value
+    if pattern.key == "row_bearing_deg":
+        value = value % 180.0
+    return value
+
+
+def _check(key: str, value: float, raw: str) -> None:
+    """A stated geometry must be a positive finite number (a count a whole one)."""
+    if key == "row_bearing_deg" and math.isfinite(value):
+        return
+    if not math.isfinite(value) or value <= 0:
+        raise PromptError(
+            f"{raw!r}: a field's geometry needs a positive number, got {value:g}",
+            stage="resolve",
+            hint="give positive counts and distances, e.g. '10 rows, 76 cm apart'",
+        )
+    if key in _COUNTS and value != int(value):
+        raise PromptError(
+            f"{raw!r}: {key.replace('_', ' ')} must be a whole number, got {value:g}",
+            stage="resolve",
+            hint="count rows, beds and plants in whole numbers",
+        )
+
+
+def row_spec(items: Sequence[Any], text: str) -> RowSpec | None:
+    """Merge a field's geometry items into one :class:`RowSpec` (None when it states none).
+
+    A key stated twice with different values is a :class:`~agrirecipe.PromptError`.
+    """
+    values: dict[str, float] = {}
+    words: list[str] = []
+    for item in items:
+        if item.role != "geometry":
+            continue
+        match: GeometryMatch = item.data["geometry"]
+        previous = values.get(match.key)
+        if previous is not None and not math.isclose(previous, match.value, rel_tol=1e-9):
+            raise PromptError(
+                f"{text!r} states {match.key.replace('_', ' ')} twice ({previous:g} and "
+                f"{match.value:g})",
+                stage="resolve",
+                hint="state each row measure once per field",
+            )
+        values[match.key] = match.value
+        words.append(match.text)
+    if not values:
+        return None
+    counts = {k: int(v) for k, v in values.items() if k in _COUNTS}
+    plants_per_row = counts.pop("plants_per_row", None)
+    lengths = {k: v for k, v in values.items() if k not in _COUNTS}
+    return RowSpec(**counts, **lengths, plants_per_row=plants_per_row, text="; ".join(words))

@@ -1,0 +1,85 @@
+"""plan_rows: stated rows, beds, counts and spacings -> the numbers a field is built with."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from agrirecipe import PromptError
+from agrirecipe.enrich import plan_rows
+from agrirecipe.knowledge import KnowledgeBase
+from agrirecipe.layout import FieldRequest, pack_fields
+
+
+def plan(knowledge: KnowledgeBase, crop: str, **stated: float):  # type: ignore[no-untyped-def]
+    return plan_rows(
+        stated,
+        knowledge.crop_file(crop),
+        label=crop.lower(),
+        size_m=None,
+        area_m2=None,
+        default_size_m=knowledge.default_field_size_m(crop),
+        default_headland_m=knowledge.default_headland_m(crop),
+    )
+
+
+def test_rows_and_length_fix_the_planted_block(knowledge: KnowledgeBase) -> None:
+    result = plan(knowledge, "Maize", rows=10, row_length_m=80.0, row_spacing_m=0.76)
+    width, length = result.size_m
+    usable_w = width - 2 * result.headland_m
+    # The kernel's rule: floor(usable / spacing) + 1 rows.
+    assert math.floor(usable_w / 0.76 + 1e-9) + 1 == 10
+    assert math.isclose(length - 2 * result.headland_m, 80.0)
+    assert result.stated == ["rows", "row_length", "row_spacing"]
+
+
+def test_rows_share_beds(knowledge: KnowledgeBase) -> None:
+    result = plan(knowledge, "Strawberry", rows=12, beds=6)
+    assert result.rows_per_bed == 2 and result.row_spacing_m == 1.5
+
+
+def test_rows_that_do_not_share_beds_evenly_are_refused(knowledge: KnowledgeBase) -> None:
+    with pytest.raises(PromptError, match="evenly"):
+        plan(knowledge, "Strawberry", rows=7, beds=3)
+
+
+def test_a_count_that_makes_no_even_block_is_planted_and_said(
+    knowledge: KnowledgeBase,
+) -> None:
+    result = plan(knowledge, "Apple", plant_count=97)
+    assert result.warnings and "97 plants" in result.warnings[0]
+
+
+def test_a_headland_wider_than_the_field_is_refused(knowledge: KnowledgeBase) -> None:
+    with pytest.raises(PromptError, match="headland"):
+        plan_rows(
+            {"headland_m": 30.0},
+            knowledge.crop_file("Lettuce"),
+            label="lettuce",
+            size_m=(20.0, 20.0),
+            area_m2=None,
+            default_size_m=(30.0, 60.0),
+            default_headland_m=2.0,
+        )
+
+
+def test_a_bearing_turns_the_field_clockwise_from_north(knowledge: KnowledgeBase) -> None:
+    assert plan(knowledge, "Wheat", row_bearing_deg=30.0).rotation_deg == -30.0
+
+
+def test_turned_fields_are_packed_without_overlap() -> None:
+    requests = [
+        FieldRequest("a", 20.0, 80.0, 1.0, -30.0),
+        FieldRequest("b", 20.0, 80.0, 1.0, 0.0),
+        FieldRequest("c", 40.0, 10.0, 0.0, -90.0),
+    ]
+    geometry = pack_fields(requests)
+    from agrirecipe.recipe._models import _rectangles_overlap
+
+    names = list(geometry)
+    for i, first in enumerate(names):
+        for second in names[i + 1 :]:
+            assert not _rectangles_overlap(geometry[first], geometry[second])
+    assert geometry["a"].rotation_deg == -30.0
+    assert min(x for x, _ in geometry["a"].corners_m()) >= -1e-9

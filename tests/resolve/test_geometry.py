@@ -1,0 +1,122 @@
+"""Field geometry stated in rows and spacings (issue 8): read, carried, checked, laid out."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from agrirecipe import PromptError, generate
+from agrirecipe.resolve._geometry import find_geometry
+from agrirecipe.resolve._lexicon import tokenize
+
+
+def read(prompt: str) -> dict[str, float]:
+    return {m.key: m.value for m in find_geometry(tokenize(prompt))}
+
+
+@pytest.mark.parametrize(
+    ("prompt", "expected"),
+    [
+        (
+            "10 rows of maize, 80 m long, 76 cm apart",
+            {"rows": 10, "row_length_m": 80, "row_spacing_m": 0.76},
+        ),
+        ("38-inch rows of corn", {"row_spacing_m": 0.9652}),
+        ("30 in rows", {"row_spacing_m": 0.762}),
+        ("a plant every 20 cm", {"in_row_spacing_m": 0.2}),
+        ("5 plants per metre", {"in_row_spacing_m": 0.2}),
+        ("80,000 plants/ha", {"plants_per_ha": 80_000}),
+        ("9 plants per m²", {"plants_per_ha": 90_000}),
+        ("two rows per bed on 1.5 m beds", {"rows_per_bed": 2, "bed_width_m": 1.5}),
+        ("a 5 m headland", {"headland_m": 5}),
+        ("rows running east-west", {"row_bearing_deg": 90}),
+        ("north-south rows", {"row_bearing_deg": 0}),
+        ("rows NE-SW", {"row_bearing_deg": 45}),
+        ("rows at 30°", {"row_bearing_deg": 30}),
+        (
+            "rows 100 m long, 3.5 m apart, trees 1 m apart",
+            {"row_length_m": 100, "row_spacing_m": 3.5, "in_row_spacing_m": 1.0},
+        ),
+        ("200 Gala apple trees", {"plant_count": 200}),
+        ("12 raised beds", {"beds": 12}),
+    ],
+)
+def test_stated_geometry_is_read(prompt: str, expected: dict[str, float]) -> None:
+    found = read(prompt)
+    assert set(found) == set(expected), found
+    for key, value in expected.items():
+        assert math.isclose(found[key], value, rel_tol=1e-9), (key, found[key])
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "a 2 ha field of wheat",
+        "two apple orchards",
+        "a 50 by 100 m carrot field",
+        "three fields of maize",
+        "a tree",
+        "apple trees in bloom",
+    ],
+)
+def test_sizes_and_counts_of_fields_are_not_geometry(prompt: str) -> None:
+    assert read(prompt) == {}
+
+
+@pytest.mark.parametrize("prompt", ["rows 0 cm apart", "0 rows of maize", "-3 rows of wheat"])
+def test_zero_or_negative_geometry_is_a_prompt_error(prompt: str) -> None:
+    with pytest.raises(PromptError):
+        generate(prompt, resolver="rules")
+
+
+def test_ten_rows_of_maize_is_one_field_of_exactly_ten_rows() -> None:
+    scene = generate("10 rows of maize, 80 m long, 76 cm apart", resolver="rules")
+    (spec,) = scene.recipe.fields
+    assert spec.row_count == 10
+    assert math.isclose(spec.row_length_m, 80.0, rel_tol=0.01)
+    assert spec.agronomy.row_spacing_m == 0.76
+    assert {"rows", "row_length", "row_spacing"} <= set(spec.stated)
+    # plants.csv follows: 10 distinct rows 0.76 m apart (jitter is 2 cm).
+    plants = scene.layout.field(spec.id)
+    xs = sorted({round(float(x) / 0.76) for x in plants.xyz[:, 0]})
+    assert len(xs) == 10
+    assert plants.nominal_plant_count == 10 * (math.floor(80 / 0.15 + 1e-9) + 1)
+
+
+def test_row_direction_turns_the_field() -> None:
+    scene = generate("6 rows of Gala apples 50 m long, rows running east-west", resolver="rules")
+    (spec,) = scene.recipe.fields
+    assert spec.row_bearing_deg == 90.0
+    xyz = scene.layout.field(spec.id).xyz
+    xs, ys = xyz[:, 0], xyz[:, 1]
+    # Rows run east-west: the planted block is long in x and narrow in y.
+    assert max(xs) - min(xs) > 45 and max(ys) - min(ys) < 6 * 3.4
+
+
+def test_density_sets_the_in_row_spacing() -> None:
+    spec = generate("a maize field at 80,000 plants/ha", resolver="rules").recipe.fields[0]
+    assert math.isclose(spec.plants_per_ha, 80_000, rel_tol=1e-6)
+    assert "density" in spec.stated
+
+
+def test_tree_count_is_planted_exactly() -> None:
+    spec = generate("an orchard of 200 Gala apple trees", resolver="rules").recipe.fields[0]
+    assert spec.nominal_plant_count == 200
+    assert "plant_count" in spec.stated
+
+
+def test_outside_the_sourced_range_is_kept_with_a_warning() -> None:
+    recipe = generate("grapes with rows 4 m apart", resolver="rules").recipe
+    assert recipe.fields[0].agronomy.row_spacing_m == 4.0
+    assert any("2.5-3 m" in w and "kept as asked" in w for w in recipe.warnings)
+
+
+def test_rows_closer_than_the_plant_is_wide_are_refused() -> None:
+    with pytest.raises(PromptError, match="closer than apple plants are wide"):
+        generate("apple trees with rows 20 cm apart", resolver="rules")
+
+
+def test_density_and_spacing_that_disagree_are_refused() -> None:
+    with pytest.raises(PromptError, match="plants/ha"):
+        generate("maize rows 75 cm apart, a plant every 15 cm, 50,000 plants/ha", resolver="rules")
