@@ -16,6 +16,7 @@ BENCHMARKS = (
     "bench_blender.py",
     "bench_unreal_script_size.py",
     "bench_llm_threads.py",
+    "bench_long_prompts.py",
 )
 
 

@@ -2,11 +2,12 @@
 
 from __future__ import annotations
 
+import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from agrirecipe import AgrirecipeError
-from agrirecipe.resolve import resolve
+from agrirecipe import AgrirecipeError, PromptError
+from agrirecipe.resolve import MAX_PROMPT_CHARS, resolve
 from agrirecipe.resolve._lexicon import vocabulary
 
 _WORDS = sorted(
@@ -78,3 +79,34 @@ def test_word_salad_from_the_vocabulary(prompt: str) -> None:
 @given(st.text(max_size=60))
 def test_arbitrary_text(prompt: str) -> None:
     _check(prompt)
+
+
+# --- issue 8: bad numbers and long prompts are PromptErrors -----------------------------------
+
+
+@pytest.mark.parametrize("strategy", ["rules", "embedding", "llm"])
+@pytest.mark.parametrize(
+    ("prompt", "number"),
+    [
+        ("a nan ha wheat field", "nan"),
+        ("an inf by 20 m wheat field", "inf"),
+        ("a wheat field of infinity hectares", "infinity"),
+        ("nan wheat fields", "nan"),
+    ],
+)
+def test_a_number_that_is_not_finite_is_a_prompt_error_naming_it(
+    strategy: str, prompt: str, number: str
+) -> None:
+    with pytest.raises(PromptError, match=number):
+        resolve(prompt, resolver=strategy)
+
+
+def test_a_prompt_over_the_documented_length_is_refused_at_once() -> None:
+    prompt = "a wheat field" + " and a wheat field" * 2000  # 36 kB: once 805 s
+    assert len(prompt) > MAX_PROMPT_CHARS
+    with pytest.raises(PromptError, match="4,000"):
+        resolve(prompt, resolver="hybrid")
+    # At the limit it is read (and refused for its 64-field cap, not its length).
+    at_limit = ("a wheat field and " * 300)[:MAX_PROMPT_CHARS]
+    with pytest.raises(PromptError, match="at most 64"):
+        resolve(at_limit, resolver="hybrid")

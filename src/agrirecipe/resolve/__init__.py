@@ -19,7 +19,7 @@ from agrirecipe.resolve._intent import (
     SizeIntent,
     TraceStep,
 )
-from agrirecipe.resolve._pipeline import Resolution, build_recipe, resolve
+from agrirecipe.resolve._pipeline import MAX_PROMPT_CHARS, Resolution, build_recipe, resolve
 from agrirecipe.resolve._registry import (
     BUILTIN_RESOLVERS,
     available_resolvers,
@@ -30,6 +30,7 @@ from agrirecipe.resolve._registry import (
 
 __all__ = [
     "BUILTIN_RESOLVERS",
+    "MAX_PROMPT_CHARS",
     "Candidate",
     "Explanation",
     "FieldIntent",

@@ -14,6 +14,8 @@ link the mentions on either side ("north of", "next to", "between X and Y").
 
 from __future__ import annotations
 
+import math
+
 import functools
 from collections.abc import Sequence
 from dataclasses import dataclass, field
@@ -327,7 +329,7 @@ def _counts_fields(item: Item) -> bool:
 
 
 def _count(value: float, item: Item) -> int:
-    if value != int(value) or value < 1:
+    if not math.isfinite(value) or value != int(value) or value < 1:
         raise PromptError(
             f"cannot make {item.raw!r} fields",
             stage="resolve",

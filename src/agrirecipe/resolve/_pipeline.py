@@ -50,7 +50,10 @@ from agrirecipe.resolve._registry import get_resolver
 if TYPE_CHECKING:
     from agrirecipe.recipe import FieldGeometry
 
-__all__ = ["Resolution", "build_recipe", "resolve"]
+__all__ = ["MAX_PROMPT_CHARS", "Resolution", "build_recipe", "resolve"]
+
+#: The longest prompt read (characters); a longer one is a PromptError at once.
+MAX_PROMPT_CHARS = 4000
 
 _T = TypeVar("_T")
 _SEASONS: tuple[Season, ...] = ("Spring", "Summer", "Fall", "Winter")
@@ -92,6 +95,14 @@ def resolve(
     subclass :class:`~agrirecipe.UnknownCropError`) for requests that cannot
     be honoured, :class:`~agrirecipe.ConfigurationError` for bad arguments.
     """
+    if isinstance(prompt, str) and len(prompt) > MAX_PROMPT_CHARS:
+        raise PromptError(
+            f"the prompt is {len(prompt):,} characters long; agrirecipe reads at most "
+            f"{MAX_PROMPT_CHARS:,}",
+            stage="resolve",
+            hint="describe the scene in fewer words (a scene holds at most 64 fields), or "
+            "build a larger scene from several recipes",
+        )
     if isinstance(seed, bool) or not isinstance(seed, int) or not 0 <= seed < 2**63:
         raise ConfigurationError(
             f"seed must be a whole number from 0 to 2**63 - 1, got {seed!r}", stage="resolve"

@@ -344,10 +344,13 @@ def coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:
     if index < 0:
         return []
     group = [clauses[index].mentions[-1]]
+    seen = {id(group[0])}  # identity: comparing mentions field by field made this cubic
     while index > 0 and clauses[index - 1].mentions and listing(clauses[index].link):
         index -= 1
-        if clauses[index].mentions[-1] not in group:  # a field named again stands twice
-            group.append(clauses[index].mentions[-1])
+        mention = clauses[index].mentions[-1]
+        if id(mention) not in seen:  # a field named again stands twice
+            seen.add(id(mention))
+            group.append(mention)
     return group
 
 

@@ -8,6 +8,7 @@ each item gets the one *role* it plays in this prompt ("head", "stage",
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Sequence
 
@@ -213,6 +214,12 @@ def _reject_negative(items: Sequence[Item], index: int) -> None:
 
 
 def _positive(value: float, text: str) -> float:
+    if not math.isfinite(value):
+        raise PromptError(
+            f"{text!r} is not a size: the number is not finite",
+            stage="resolve",
+            hint="give a size as a number such as '2 ha' or '50 by 100 m'",
+        )
     if value <= 0:
         raise PromptError(
             f"a field cannot measure {text!r}",
