@@ -41,13 +41,14 @@ _SPIN = "while True: pass"
 
 def child(threads: int, prompts: int) -> None:
     """Read ``prompts`` development prompts with the llm strategy; print the times as JSON."""
+    from agrirecipe.resolve._llm import LlmResolver
+
     from agrirecipe import AgrirecipeError
     from agrirecipe.evaluation import load_benchmark
     from agrirecipe.hierarchy import default_hierarchy
     from agrirecipe.knowledge import default_knowledge_base
     from agrirecipe.localmodels import LlamaCppModel
     from agrirecipe.resolve import ResolveContext
-    from agrirecipe.resolve._llm import LlmResolver
 
     texts = [p.prompt for p in load_benchmark().select(splits=["dev"]).prompts]
     step = max(1, len(texts) // prompts)

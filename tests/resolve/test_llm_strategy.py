@@ -16,7 +16,7 @@ from agrirecipe.knowledge import default_knowledge_base
 from agrirecipe.localmodels import default_language_model
 from agrirecipe.resolve import ResolveContext, SceneIntent
 from agrirecipe.resolve._grammar import NONE, HierarchyGrammars, prompt_words
-from agrirecipe.resolve._llm import LlmResolver, load_examples, render_examples
+from agrirecipe.resolve.llm import LlmResolver, load_examples, render_examples
 
 pytestmark = pytest.mark.slow
 
@@ -348,7 +348,7 @@ def test_same_prompt_same_intent_across_processes(
         "from agrirecipe.hierarchy import default_hierarchy\n"
         "from agrirecipe.knowledge import default_knowledge_base\n"
         "from agrirecipe.resolve import ResolveContext\n"
-        "from agrirecipe.resolve._llm import LlmResolver\n"
+        "from agrirecipe.resolve.llm import LlmResolver\n"
         "prompts = json.load(sys.stdin)\n"
         "context = ResolveContext(default_hierarchy(), default_knowledge_base())\n"
         "resolver = LlmResolver()\n"

@@ -14,9 +14,8 @@ link the mentions on either side ("north of", "next to", "between X and Y").
 
 from __future__ import annotations
 
-import math
-
 import functools
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any

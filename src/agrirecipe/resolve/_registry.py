@@ -29,7 +29,7 @@ ResolverFactory = Callable[[], Resolver]
 BUILTIN_RESOLVERS: dict[str, str] = {
     "rules": "agrirecipe.resolve._rules:RulesResolver",
     "embedding": "agrirecipe.resolve._embedding:EmbeddingResolver",
-    "llm": "agrirecipe.resolve._llm:LlmResolver",
+    "llm": "agrirecipe.resolve.llm:LlmResolver",
     "hybrid": "agrirecipe.resolve._hybrid:HybridResolver",
 }
 _REGISTERED: dict[str, ResolverFactory] = {}
