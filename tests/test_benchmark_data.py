@@ -77,3 +77,26 @@ def test_held_out_prompts_cover_every_type_and_repeat_no_development_prompt() ->
     assert len(heldout) >= 60
     assert {p.type for p in heldout} == set(PROMPT_TYPES)
     assert not {p.prompt.lower() for p in heldout} & {p.prompt.lower() for p in dev}
+
+
+def test_shipped_prompt_files_are_the_development_set_then_the_heldout_sets() -> None:
+    from agrirecipe.evaluation import shipped_prompt_files
+
+    files = shipped_prompt_files()
+    names = [f.name for f in files]
+    assert names[0] == "prompts.yaml"
+    genre_sets = [f for f in files if f.parent.name == "heldout"]
+    assert genre_sets == sorted(genre_sets, key=lambda f: f.name)
+    assert files[len(files) - len(genre_sets) :] == tuple(genre_sets)  # the genre sets come last
+    assert load_benchmark().source == ", ".join(str(f) for f in files)
+
+
+def test_genre_sets_are_heldout_with_ids_named_after_their_set() -> None:
+    from agrirecipe.evaluation import shipped_prompt_files
+
+    # Only the loader reads the blind sets; the test checks their format, not their text.
+    for path in (f for f in shipped_prompt_files() if f.parent.name == "heldout"):
+        prompts = load_benchmark(path).prompts
+        assert {p.split for p in prompts} == {"heldout"}, path.name
+        wrong = [p.id for p in prompts if not p.id.startswith(f"{path.stem}-")]
+        assert not wrong, (path.name, wrong)

@@ -86,3 +86,56 @@ def test_eval_rejects_bad_arguments_with_exit_code_2(
     _, err = capsys.readouterr()
     assert code == 2
     assert message in err
+
+
+def test_eval_selects_the_new_genre_and_geometry_tags(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    prompts = tmp_path / "genres.yaml"
+    prompts.write_text(
+        "version: 1\nsplit: heldout\ndefaults: {health: Healthy}\nprompts:\n"
+        "- id: t-engineering-01\n  type: single_generic\n  tags: [engineering, geometry]\n"
+        "  prompt: a 30 by 60 m Roma tomato field\n"
+        "  fields: [{crop: Tomato, variety: Roma, size_m: [30, 60], rows: 999}]\n"
+        "- id: t-photo-01\n  type: single_generic\n  tags: [photo, scenery]\n"
+        "  prompt: a 30 by 60 m field of Roma tomatoes\n"
+        "  fields: [{crop: Tomato}]\n"
+        "- id: t-casual-01\n  type: single_generic\n  tags: [casual]\n"
+        "  prompt: some apples\n  fields: [{crop: Apple}]\n",
+        encoding="utf-8",
+    )
+    code = main(
+        [
+            "eval",
+            "--resolver",
+            "rules",
+            "--benchmark",
+            str(prompts),
+            "--category",
+            "engineering,photo",
+            "--no-retrieval",
+            "--no-progress",
+            "--failures",
+            "--no-fresh-process",
+        ]
+    )
+    out, err = capsys.readouterr()
+    assert code == 0, err
+    assert "2 prompts (categories engineering, photo)" in out
+    assert "`genres.yaml`" in out
+    assert "| engineering requests (1) |" in out and "| stated geometry (1) |" in out
+    assert "| photo descriptions (1) |" in out and "casual text" not in out
+    assert "| phantom fields (recipe fields nobody asked for) |" in out
+    assert "### Phantom fields per genre" in out
+    # 999 rows cannot be what a 30 m wide field lays out: a geometry failure.
+    assert "| wrong geometry (rows, spacing, density, direction) | 1 |" in out
+    assert "geometry: rows " in out and "(expected 999)" in out
+
+
+def test_eval_help_lists_the_new_tags(capsys: pytest.CaptureFixture[str]) -> None:
+    with pytest.raises(SystemExit):
+        main(["eval", "--help"])
+    out, _ = capsys.readouterr()
+    for tag in ("photo", "engineering", "casual", "farm", "geometry", "scenery", "cue"):
+        assert tag in out
+    assert "heldout/*.yaml" in out

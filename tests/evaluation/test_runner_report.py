@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
@@ -257,3 +258,83 @@ def test_a_strategy_that_crashes_on_warm_up_is_still_scored_prompt_by_prompt() -
     assert not any(s.correct for s in run.scores)
     assert {s.kinds for s in run.scores} == {("foreign_error",)}
     assert "NameError" in run.scores[0].got
+
+
+def test_report_rows_for_the_genre_tags_geometry_failures_and_phantom_fields() -> None:
+    from agrirecipe.evaluation import score_prompt
+    from conftest import field, scene
+
+    photo = make_prompt(
+        id="g-photo-01",
+        type="single_generic",
+        tags=["photo", "scenery"],
+        prompt="an apple orchard, a tractor parked by the gate",
+        fields=[{"crop": "Apple"}],
+    )
+    engineering = make_prompt(
+        id="g-engineering-01",
+        type="single_generic",
+        tags=["engineering", "geometry"],
+        prompt="12 rows of maize for our weeding robot",
+        fields=[{"crop": "Maize", "rows": 12}],
+    )
+    farm = make_prompt(
+        id="g-farm-01",
+        type="multi_generic",
+        tags=["farm"],
+        prompt="cherries along the top, potatoes below",
+        fields=[{"crop": "Cherry"}, {"crop": "Potato"}],
+    )
+    gala, tractor, barn = (
+        field("Apple", "Gala"),
+        field("Wheat", "Spelt", field_id="tractor"),
+        field("Maize", "Ambition", field_id="barn"),
+    )
+    maize = replace(field("Maize", "Ambition"), row_count=11)
+    scores = (
+        score_prompt(photo, scene(gala, tractor, barn)),  # two phantom fields
+        score_prompt(engineering, scene(maize)),  # wrong geometry
+        score_prompt(farm, scene(field("Cherry", "Bing"), field("Potato", "Agria"))),
+    )
+    assert [s.phantom_fields for s in scores] == [2, 0, 0]
+    assert scores[1].kinds == ("geometry",)
+    run = StrategyRun(name="stand-in", scores=scores)
+    text = render_markdown(_report((run,)))
+    assert "| photo descriptions (1) | 0.0 % (0/1) |" in text
+    assert "| engineering requests (1) | 0.0 % (0/1) |" in text
+    assert "| multi-field farm descriptions (1) | 100.0 % (1/1) |" in text
+    assert "| stated geometry (1) | 0.0 % (0/1) |" in text
+    assert "| scenery and purpose words (1) | 0.0 % (0/1) |" in text
+    assert "casual text" not in text and "visual cues" not in text  # no such prompts here
+    assert "| phantom fields (recipe fields nobody asked for) | 2 (in 1 of 3 prompts) |" in text
+    assert "### Phantom fields per genre" in text
+    assert "| photo descriptions (1) | 2 (in 1 of 1 prompts) |" in text
+    assert "| engineering requests (1) | 0 (in 0 of 1 prompts) |" in text
+    assert "| All valid prompts (3) | 2 (in 1 of 3 prompts) |" in text
+    assert "| wrong geometry (rows, spacing, density, direction) | 1 |" in text
+    assert "geometry: rows 11 (expected 12)" in text  # the failure list gives the note
+    # Without genre prompts there is no per-genre table, but the overall row stays.
+    plain = render_markdown(
+        _report((run_strategy(BENCHMARK, "stand-in", progress=False, generate=_stand_in),))
+    )
+    assert "### Phantom fields per genre" not in plain
+    assert "| phantom fields (recipe fields nobody asked for) | 0 (in 0 of 3 prompts) |" in plain
+
+
+def test_every_tag_and_failure_kind_has_a_label() -> None:
+    from agrirecipe.evaluation import TAGS
+    from agrirecipe.evaluation._report import _KIND_LABELS, _TAG_LABELS
+
+    assert tuple(_TAG_LABELS) == TAGS
+    assert _TAG_LABELS["cue"] == "visual cues"
+    assert list(_KIND_LABELS).index("geometry") == list(_KIND_LABELS).index("size") + 1
+
+
+def test_a_heldout_genre_set_is_named_with_its_folder() -> None:
+    run = run_strategy(BENCHMARK, "stand-in", progress=False, generate=_stand_in)
+    report = _report((run,))
+    report = replace(
+        report, benchmark_source="b/prompts.yaml, b/prompts_heldout.yaml, b/heldout/g.yaml"
+    )
+    text = render_markdown(report)
+    assert "`prompts.yaml` + `prompts_heldout.yaml` + `heldout/g.yaml`" in text

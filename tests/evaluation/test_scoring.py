@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import itertools
+from dataclasses import replace
 
 import pytest
 from hypothesis import given, settings
@@ -277,3 +278,179 @@ def test_optimal_assignment_matches_brute_force(weights: list[list[int]]) -> Non
 def test_optimal_assignment_of_nothing() -> None:
     assert optimal_assignment([]) == []
     assert optimal_assignment([[], []]) == [None, None]
+
+
+# --- stated geometry (rows, spacings, density, direction) ---
+
+
+@pytest.fixture(scope="module")
+def roma() -> object:
+    """The recipe of a real prompt, and its one field's spec."""
+    import agrirecipe
+
+    recipe = agrirecipe.generate("a 30 by 60 m Roma tomato field", seed=0).recipe
+    assert len(recipe.fields) == 1
+    return recipe
+
+
+def _own_geometry(spec: object) -> dict[str, object]:
+    """Every geometry key of the truth, computed from the field's own recipe values."""
+    agronomy = spec.agronomy  # type: ignore[attr-defined]
+    truth: dict[str, object] = {
+        "rows": spec.row_count,  # type: ignore[attr-defined]
+        "beds": spec.bed_count,  # type: ignore[attr-defined]
+        "rows_per_bed": agronomy.rows_per_bed,
+        "row_length_m": spec.row_length_m,  # type: ignore[attr-defined]
+        "bed_width_m": agronomy.row_spacing_m,
+        "in_row_spacing_m": agronomy.in_row_spacing_m,
+        "plants_per_ha": spec.plants_per_ha,  # type: ignore[attr-defined]
+        "plant_count": spec.nominal_plant_count,  # type: ignore[attr-defined]
+        "headland_m": spec.geometry.headland_m,  # type: ignore[attr-defined]
+        "row_bearing_deg": spec.row_bearing_deg,  # type: ignore[attr-defined]
+    }
+    truth["row_spacing_m"] = (
+        agronomy.row_spacing_m if agronomy.rows_per_bed == 1 else agronomy.bed_row_spacing_m
+    )
+    return truth
+
+
+def _roma_prompt(**geometry: object) -> object:
+    return make_prompt(
+        type="single_generic",
+        fields=[{"crop": "Tomato", "variety": "Roma", "size_m": [30, 60], **geometry}],
+    )
+
+
+def test_a_recipe_whose_geometry_matches_every_stated_key_is_correct(roma: object) -> None:
+    from agrirecipe.evaluation import GEOMETRY_KEYS, PredictedScene
+
+    predicted = PredictedScene.from_recipe(roma)  # type: ignore[arg-type]
+    spec = roma.fields[0]  # type: ignore[attr-defined]
+    got = predicted.fields[0]
+    assert got.row_count == spec.row_count and got.nominal_plant_count == spec.nominal_plant_count
+    assert got.row_spacing_m == spec.agronomy.row_spacing_m
+    truth = _own_geometry(spec)
+    assert set(truth) == set(GEOMETRY_KEYS)
+    item = _roma_prompt(**truth)
+    result = score_prompt(item, predicted)  # type: ignore[arg-type]
+    assert result.correct, result.reasons
+    assert result.true_positives == 1 and result.phantom_fields == 0
+    # Within 1 % for lengths, spacings and densities.
+    near = {k: v * 1.009 for k, v in truth.items() if k.endswith("_m") or k == "plants_per_ha"}
+    near.pop("headland_m")  # may be 0, and 0 is only matched by 0
+    assert score_prompt(_roma_prompt(**near), predicted).correct  # type: ignore[arg-type]
+
+
+@pytest.mark.parametrize(
+    ("key", "change", "words"),
+    [
+        ("rows", lambda v: v + 1, "rows"),
+        ("beds", lambda v: v + 2, "beds"),
+        ("rows_per_bed", lambda v: v + 1, "rows per bed"),
+        ("plant_count", lambda v: v + 1, "plants"),  # within 1 %, but counts are exact
+        ("row_length_m", lambda v: v * 1.05, "row length"),
+        ("row_spacing_m", lambda v: v * 0.9, "row spacing"),
+        ("bed_width_m", lambda v: v * 1.1, "bed width"),
+        ("in_row_spacing_m", lambda v: v * 1.02, "in-row spacing"),
+        ("plants_per_ha", lambda v: v * 0.95, "density"),
+        ("headland_m", lambda v: v + 1.0, "headland"),
+        ("row_bearing_deg", lambda v: (v + 90) % 180, "row bearing"),
+    ],
+)
+def test_a_wrong_geometry_key_makes_the_field_not_match(
+    roma: object, key: str, change: object, words: str
+) -> None:
+    from agrirecipe.evaluation import PredictedScene
+
+    predicted = PredictedScene.from_recipe(roma)  # type: ignore[arg-type]
+    value = _own_geometry(roma.fields[0])[key]  # type: ignore[attr-defined]
+    item = _roma_prompt(**{key: change(value)})  # type: ignore[operator]
+    result = score_prompt(item, predicted)  # type: ignore[arg-type]
+    assert not result.correct
+    assert result.kinds == ("geometry",)
+    assert result.true_positives == 0
+    assert any(f"geometry: {words} " in reason for reason in result.reasons), result.reasons
+    assert result.phantom_fields == 0  # a wrong field is not a phantom one
+
+
+def test_geometry_note_names_value_and_expectation() -> None:
+    item = make_prompt(type="single_generic", fields=[{"crop": "Maize", "row_spacing_m": 0.76}])
+    got = replace(field("Maize", "Ambition"), rows_per_bed=1, row_spacing_m=0.75)
+    result = score_prompt(item, scene(got))
+    assert result.reasons == ("field 1: geometry: row spacing 0.75 m (expected 0.76)",)
+    # A field that carries no geometry at all does not match a stated one either.
+    bare = score_prompt(item, scene(field("Maize", "Ambition")))
+    assert bare.kinds == ("geometry",)
+    assert "row spacing none" in bare.reasons[0]
+
+
+def test_row_spacing_is_the_rows_on_a_bed_and_bed_width_the_beds() -> None:
+    beds = replace(
+        field("Strawberry", "Elsanta"), rows_per_bed=2, row_spacing_m=1.5, bed_row_spacing_m=0.4
+    )
+
+    def scored(**geometry: object) -> bool:
+        item = make_prompt(type="single_generic", fields=[{"crop": "Strawberry", **geometry}])
+        return score_prompt(item, scene(beds)).correct
+
+    assert scored(row_spacing_m=0.4, bed_width_m=1.5, rows_per_bed=2)
+    assert not scored(row_spacing_m=1.5)
+    assert not scored(bed_width_m=0.4)
+    single = replace(beds, rows_per_bed=1, bed_row_spacing_m=0.0)
+    item = make_prompt(type="single_generic", fields=[{"crop": "Strawberry", "row_spacing_m": 1.5}])
+    assert score_prompt(item, scene(single)).correct
+
+
+@pytest.mark.parametrize(
+    ("truth", "got", "ok"),
+    [
+        (0.0, 179.5, True),
+        (179.6, 0.5, True),
+        (0.0, 0.9, True),
+        (90.0, 90.8, True),
+        (45.0, 45.0, True),
+        (0.0, 2.0, False),
+        (0.0, 178.5, False),
+        (90.0, 88.5, False),
+        (45.0, 135.0, False),
+    ],
+)
+def test_row_bearing_is_compared_within_a_degree_modulo_180(
+    truth: float, got: float, ok: bool
+) -> None:
+    item = make_prompt(type="single_generic", fields=[{"crop": "Maize", "row_bearing_deg": truth}])
+    predicted = replace(field("Maize", "Ambition"), row_bearing_deg=got)
+    result = score_prompt(item, scene(predicted))
+    assert result.correct is ok, result.reasons
+    if not ok:
+        assert result.kinds == ("geometry",)
+
+
+# --- phantom fields ---
+
+
+def test_phantom_fields_are_recipe_fields_nobody_asked_for() -> None:
+    item = make_prompt(type="single_detailed", fields=[GALA])
+    gala = field("Apple", "Gala", "Reproductive", "Spring")
+    assert score_prompt(item, scene(gala)).phantom_fields == 0
+    two_more = score_prompt(item, scene(field("Wheat", "Spelt"), gala, field("Maize", "Ambition")))
+    assert not two_more.correct
+    assert two_more.phantom_fields == 2
+    assert two_more.true_positives == 1
+    # The right number of fields but a wrong one: a wrong field, not a phantom.
+    assert score_prompt(item, scene(field("Pear", "Conference"))).phantom_fields == 0
+    # Accepted extras of an open count are asked for; beyond the count they are phantoms.
+    open_count = make_prompt(
+        type="multi_generic",
+        fields=[{"category": "Fruits"}, {"category": "Vegetables"}],
+        field_count={"min": 2, "max": 3},
+        extra_field={"category": ["Fruits", "Vegetables"]},
+    )
+    fits = scene(field("Apple", "Gala"), field("Carrot", "Nantes"), field("Pear", "Conference"))
+    assert score_prompt(open_count, fits).phantom_fields == 0
+    beyond = scene(*fits.fields, field("Cherry", "Bing"), field("Wheat", "Spelt"))
+    assert score_prompt(open_count, beyond).phantom_fields == 2
+    # Prompts that raised, and invalid prompts, have no phantom fields to count.
+    assert score_prompt(item, PromptError("no crop")).phantom_fields == 0
+    invalid = make_prompt(type="invalid", prompt="a barn", error="PromptError")
+    assert score_prompt(invalid, scene(gala)).phantom_fields == 0

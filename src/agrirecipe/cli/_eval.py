@@ -16,7 +16,8 @@ def register(subparsers: Any) -> None:
         "eval",
         help="measure the resolver strategies on the benchmark",
         description="Run each resolver strategy over the checked-in benchmark "
-        "(benchmarks/prompts.yaml) and the knowledge retrieval over "
+        "(benchmarks/prompts.yaml, prompts_heldout.yaml and heldout/*.yaml) and the "
+        "knowledge retrieval over "
         "benchmarks/knowledge_queries.yaml; print Table I (accuracy per prompt type, "
         "field-level P/R/F1), Table II (retrieval Top-1/2/3) and latency beside the "
         "seed paper's numbers.",
@@ -67,7 +68,8 @@ def register(subparsers: Any) -> None:
         action="append",
         default=None,
         metavar="PATH",
-        help="a prompts file instead of the shipped ones (repeat for several)",
+        help="a prompts file instead of the shipped ones (benchmarks/prompts.yaml, "
+        "prompts_heldout.yaml, heldout/*.yaml); repeat for several",
     )
     parser.add_argument(
         "--split",

@@ -1,6 +1,7 @@
 """The evaluation: the prompt benchmark, its scoring, and the paper-shaped tables.
 
-``agrirecipe eval`` runs every resolver strategy over ``benchmarks/prompts.yaml``
+``agrirecipe eval`` runs every resolver strategy over the shipped prompt files
+(``benchmarks/prompts.yaml``, ``prompts_heldout.yaml``, ``heldout/*.yaml``)
 and the knowledge retrieval over ``benchmarks/knowledge_queries.yaml``, and
 writes ``docs/EVALUATION.md``::
 
@@ -12,7 +13,10 @@ writes ``docs/EVALUATION.md``::
 
 from agrirecipe.evaluation._benchmark import (
     ATTRIBUTES,
+    GENRE_TAGS,
+    GEOMETRY_KEYS,
     PROMPT_TYPES,
+    SHIPPED_PROMPT_FILES,
     TAGS,
     Benchmark,
     BenchmarkError,
@@ -24,6 +28,7 @@ from agrirecipe.evaluation._benchmark import (
     load_benchmark,
     load_knowledge_queries,
     round_robin,
+    shipped_prompt_files,
 )
 from agrirecipe.evaluation._evaluate import DEFAULT_STRATEGIES, evaluate, models_description
 from agrirecipe.evaluation._reference import (
@@ -70,8 +75,11 @@ __all__ = [
     "BEGIN_MARKER",
     "DEFAULT_STRATEGIES",
     "END_MARKER",
+    "GENRE_TAGS",
+    "GEOMETRY_KEYS",
     "PROMPT_TYPES",
     "RETRIEVAL_METHODS",
+    "SHIPPED_PROMPT_FILES",
     "TAGS",
     "WARMUP_PROMPT",
     "Benchmark",
@@ -111,5 +119,6 @@ __all__ = [
     "run_retrieval",
     "run_strategy",
     "score_prompt",
+    "shipped_prompt_files",
     "update_document",
 ]

@@ -1,10 +1,12 @@
 """The benchmark files: prompts with ground truth, and knowledge-retrieval queries.
 
-``benchmarks/prompts.yaml`` and ``benchmarks/knowledge_queries.yaml`` (format in
+The prompt files (``benchmarks/prompts.yaml``, ``prompts_heldout.yaml`` and
+``heldout/*.yaml``) and ``benchmarks/knowledge_queries.yaml`` (format in
 ``benchmarks/README.md``) are validated here with pydantic and then against a
 hierarchy: every name in the truth must be a canonical name of it, a variety
-must belong to its crop, and a category must contain its crops. A malformed file
-raises :class:`BenchmarkError` naming the offending entry.
+must belong to its crop, and a category must contain its crops. A truth field
+may also state the field's geometry (rows, spacings, density, direction). A
+malformed file raises :class:`BenchmarkError` naming the offending entry.
 """
 
 from __future__ import annotations
@@ -12,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Literal, TypeVar, get_args
+from typing import Annotated, Any, Literal, TypeVar, get_args
 
 import yaml
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
@@ -24,6 +26,8 @@ from agrirecipe.recipe import RelationKind
 
 __all__ = [
     "ATTRIBUTES",
+    "GENRE_TAGS",
+    "GEOMETRY_KEYS",
     "PROMPT_TYPES",
     "SHIPPED_PROMPT_FILES",
     "TAGS",
@@ -31,6 +35,7 @@ __all__ = [
     "BenchmarkError",
     "BenchmarkPrompt",
     "FieldCount",
+    "GeometryKey",
     "KnowledgeQuery",
     "PromptType",
     "Split",
@@ -40,6 +45,7 @@ __all__ = [
     "load_benchmark",
     "load_knowledge_queries",
     "round_robin",
+    "shipped_prompt_files",
 ]
 
 #: Prompt types, in the order tables show them (the paper's three first).
@@ -56,13 +62,37 @@ Tag = Literal[
     "size_relation",
     "month_season",
     "implausible",
+    "photo",
+    "engineering",
+    "casual",
+    "farm",
+    "geometry",
+    "scenery",
+    "cue",
 ]
 TAGS: tuple[Tag, ...] = get_args(Tag)
+#: The genre tags (one per prompt of the genre sets): how the request is written.
+GENRE_TAGS: tuple[Tag, ...] = ("photo", "engineering", "casual", "farm")
 #: "dev": prompts the resolvers were developed against; "heldout": written after.
 Split = Literal["dev", "heldout"]
 Attribute = Literal["category", "crop", "variety", "stage", "season", "health"]
 #: The attributes a truth field can state, in display order.
 ATTRIBUTES: tuple[Attribute, ...] = ("category", "crop", "variety", "stage", "season", "health")
+GeometryKey = Literal[
+    "rows",
+    "beds",
+    "rows_per_bed",
+    "row_length_m",
+    "row_spacing_m",
+    "bed_width_m",
+    "in_row_spacing_m",
+    "plants_per_ha",
+    "plant_count",
+    "headland_m",
+    "row_bearing_deg",
+]
+#: The stated-geometry keys a truth field can give, in display order (each checked when set).
+GEOMETRY_KEYS: tuple[GeometryKey, ...] = get_args(GeometryKey)
 _ERROR_NAMES = frozenset(
     {
         "AgrirecipeError",
@@ -94,11 +124,27 @@ def _any_of(value: object) -> object:
     return value
 
 
+def _no_bool(value: object) -> object:
+    """YAML ``yes``/``true`` is not a number of rows or metres."""
+    if isinstance(value, bool):
+        raise ValueError("must be a number, not a boolean")
+    return value
+
+
+#: A count of the stated geometry: a positive integer (YAML ``10``, not ``10.5``).
+_Count = Annotated[int, Field(gt=0, strict=True)]
+#: A length, spacing or density of the stated geometry: a positive finite number.
+_Positive = Annotated[float, Field(gt=0, allow_inf_nan=False)]
+
+
 class TruthField(_Strict):
     """What one field of the recipe must be; an omitted attribute is left open by the prompt.
 
     Each attribute holds the accepted canonical names (one, or several when the
-    prompt allows any of them, e.g. an "orchard" is any tree fruit).
+    prompt allows any of them, e.g. an "orchard" is any tree fruit). The
+    geometry keys (:data:`GEOMETRY_KEYS`, meanings in ``benchmarks/README.md``)
+    are checked only when set: counts exactly, lengths and densities within
+    1 %, the row bearing within a degree.
     """
 
     ref: str | None = Field(default=None, pattern=r"^[a-z][a-z0-9_]*$")
@@ -112,6 +158,40 @@ class TruthField(_Strict):
         default=None, description="Width and length in metres, in either order."
     )
     area_m2: float | None = Field(default=None, gt=0)
+    rows: _Count | None = Field(
+        default=None, description="Plant rows in the field, each row of a bed."
+    )
+    beds: _Count | None = Field(default=None, description="Beds or ridges.")
+    rows_per_bed: _Count | None = Field(
+        default=None, description="Plant rows on each bed or ridge."
+    )
+    row_length_m: _Positive | None = Field(default=None, description="Length of the rows, metres.")
+    row_spacing_m: _Positive | None = Field(
+        default=None, description="Distance between neighbouring rows (single rows), metres."
+    )
+    bed_width_m: _Positive | None = Field(
+        default=None, description="Centre-to-centre distance of beds or ridges, metres."
+    )
+    in_row_spacing_m: _Positive | None = Field(
+        default=None, description="Distance between plants along a row, metres."
+    )
+    plants_per_ha: _Positive | None = Field(
+        default=None, description="Planting density, plants/ha."
+    )
+    plant_count: _Count | None = Field(default=None, description="Plants (or trees) in the field.")
+    headland_m: float | None = Field(
+        default=None,
+        ge=0,
+        allow_inf_nan=False,
+        description="Width of the unplanted headland around the rows, metres.",
+    )
+    row_bearing_deg: float | None = Field(
+        default=None,
+        ge=0,
+        lt=180,
+        allow_inf_nan=False,
+        description="Direction of the rows, degrees clockwise from north in [0, 180).",
+    )
     inferred: tuple[Attribute, ...] = Field(
         default=(), description="Attributes filled from the file's defaults, not the prompt."
     )
@@ -119,6 +199,7 @@ class TruthField(_Strict):
     _normalise = field_validator(
         "category", "crop", "variety", "stage", "season", "health", mode="before"
     )(_any_of)
+    _numbers = field_validator(*GEOMETRY_KEYS, "area_m2", mode="before")(_no_bool)
 
     @field_validator("category", "crop", "variety", "stage", "season", "health")
     @classmethod
@@ -133,6 +214,29 @@ class TruthField(_Strict):
         if value is not None and min(value) <= 0:
             raise ValueError("sizes must be positive")
         return value
+
+    @model_validator(mode="after")
+    def _rows_add_up(self) -> TruthField:
+        rows, beds, per_bed = self.rows, self.beds, self.rows_per_bed
+        if rows is not None and beds is not None and per_bed is not None:
+            if rows != beds * per_bed:
+                raise ValueError(
+                    f"rows {rows} is not beds {beds} x rows_per_bed {per_bed} ({beds * per_bed})"
+                )
+        elif rows is not None and per_bed is not None and rows % per_bed:
+            raise ValueError(f"rows {rows} is not a whole number of beds of {per_bed} rows")
+        elif rows is not None and beds is not None and rows % beds:
+            raise ValueError(f"rows {rows} do not divide evenly over {beds} beds")
+        return self
+
+    def geometry(self) -> dict[GeometryKey, float]:
+        """The stated geometry keys and their values (empty when the prompt states none)."""
+        values: dict[GeometryKey, float] = {}
+        for key in GEOMETRY_KEYS:
+            value = getattr(self, key)
+            if value is not None:
+                values[key] = value
+        return values
 
     def allowed(self, attribute: Attribute) -> tuple[str, ...] | None:
         """The accepted values of ``attribute``, or None when the prompt leaves it open."""
@@ -159,7 +263,36 @@ class TruthField(_Strict):
             parts.append(f"{self.area_m2:g} m2")
         if self.size_m is not None:
             parts.append(f"{self.size_m[0]:g}x{self.size_m[1]:g} m")
+        parts.extend(_describe_geometry(self))
         return ", ".join(parts)
+
+
+def _describe_geometry(field: TruthField) -> list[str]:
+    """The stated geometry in words, e.g. ``["10 rows", "rows 80 m", "0.76 m apart"]``."""
+    parts: list[str] = []
+    if field.rows is not None:
+        parts.append(f"{field.rows} row{'s' if field.rows != 1 else ''}")
+    if field.beds is not None:
+        parts.append(f"{field.beds} bed{'s' if field.beds != 1 else ''}")
+    if field.rows_per_bed is not None:
+        parts.append(f"{field.rows_per_bed} per bed")
+    if field.row_length_m is not None:
+        parts.append(f"rows {field.row_length_m:g} m")
+    if field.row_spacing_m is not None:
+        parts.append(f"{field.row_spacing_m:g} m apart")
+    if field.bed_width_m is not None:
+        parts.append(f"beds on {field.bed_width_m:g} m")
+    if field.in_row_spacing_m is not None:
+        parts.append(f"a plant every {field.in_row_spacing_m:g} m")
+    if field.plants_per_ha is not None:
+        parts.append(f"{field.plants_per_ha:g} plants/ha")
+    if field.plant_count is not None:
+        parts.append(f"{field.plant_count} plants")
+    if field.headland_m is not None:
+        parts.append(f"{field.headland_m:g} m headland")
+    if field.row_bearing_deg is not None:
+        parts.append(f"rows at {field.row_bearing_deg:g} deg")
+    return parts
 
 
 class TruthRelation(_Strict):
@@ -452,9 +585,29 @@ def _apply_defaults(
     return TruthField.model_validate({**field.model_dump(), **update})
 
 
-#: The shipped prompt files: the development set, then the held-out set written
-#: after the resolvers were finished (loaded when present).
-SHIPPED_PROMPT_FILES = ("prompts.yaml", "prompts_heldout.yaml")
+#: The shipped prompt files, relative to ``benchmarks/``, in loading order: the
+#: development set, the held-out set written after the resolvers were finished,
+#: then every blind genre set ``heldout/<set>.yaml`` (a glob, expanded sorted by
+#: file name). Each entry is loaded when present; an empty glob adds nothing.
+SHIPPED_PROMPT_FILES: tuple[str, ...] = ("prompts.yaml", "prompts_heldout.yaml", "heldout/*.yaml")
+
+
+def shipped_prompt_files(folder: str | Path | None = None) -> tuple[Path, ...]:
+    """The shipped prompt files that exist in ``folder`` (default: the shipped ``benchmarks/``).
+
+    :data:`SHIPPED_PROMPT_FILES` in order; a glob entry expands to its matches
+    sorted by name. Only the names are looked at here, not the contents.
+    """
+    base = Path(folder) if folder is not None else data_path("benchmarks")
+    found: list[Path] = []
+    for pattern in SHIPPED_PROMPT_FILES:
+        if any(char in pattern for char in "*?["):
+            found.extend(
+                sorted((p for p in base.glob(pattern) if p.is_file()), key=lambda p: p.name)
+            )
+        elif (base / pattern).is_file():
+            found.append(base / pattern)
+    return tuple(found)
 
 
 def load_benchmark(
@@ -465,13 +618,14 @@ def load_benchmark(
     """Load and check prompt files into one benchmark.
 
     ``path`` is one file or several; None loads the shipped files
-    (``benchmarks/prompts.yaml`` and, when present, ``prompts_heldout.yaml``).
-    Each prompt takes its file's ``split`` ("dev" unless the file says otherwise).
+    (:func:`shipped_prompt_files`: ``benchmarks/prompts.yaml`` and, when
+    present, ``prompts_heldout.yaml`` and every ``heldout/*.yaml``). Each prompt
+    takes its file's ``split`` ("dev" unless the file says otherwise); prompt
+    ids must be unique across all the files.
     """
     hierarchy = hierarchy or default_hierarchy()
     if path is None:
-        folder = data_path("benchmarks")
-        sources = [folder / name for name in SHIPPED_PROMPT_FILES if (folder / name).exists()]
+        sources = list(shipped_prompt_files())
     elif isinstance(path, str | Path):
         sources = [Path(path)]
     else:

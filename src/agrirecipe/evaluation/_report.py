@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from agrirecipe._files import write_atomic
-from agrirecipe.evaluation._benchmark import PROMPT_TYPES, TAGS
+from agrirecipe.evaluation._benchmark import GENRE_TAGS, PROMPT_TYPES, TAGS
 from agrirecipe.evaluation._reference import PaperResults, Target
 from agrirecipe.evaluation._retrieval import RetrievalRun
 from agrirecipe.evaluation._runner import StrategyRun
@@ -24,6 +24,7 @@ from agrirecipe.evaluation._summary import Rate, accuracy_by, field_counts, late
 __all__ = [
     "BEGIN_MARKER",
     "END_MARKER",
+    "PHANTOM_LABEL",
     "EvaluationReport",
     "machine_description",
     "render_markdown",
@@ -49,7 +50,16 @@ _TAG_LABELS = {
     "size_relation": "sizes / relations",
     "month_season": "months / hemispheres",
     "implausible": "implausible (kept + warned)",
+    "photo": "photo descriptions",
+    "engineering": "engineering requests",
+    "casual": "casual text",
+    "farm": "multi-field farm descriptions",
+    "geometry": "stated geometry",
+    "scenery": "scenery and purpose words",
+    "cue": "visual cues",
 }
+#: The row of the phantom-field count (recipe fields beyond what the prompt asked for).
+PHANTOM_LABEL = "phantom fields (recipe fields nobody asked for)"
 _KIND_LABELS = {
     "category": "wrong category",
     "crop": "wrong crop",
@@ -58,6 +68,7 @@ _KIND_LABELS = {
     "season": "wrong season",
     "health": "wrong health",
     "size": "wrong size / area",
+    "geometry": "wrong geometry (rows, spacing, density, direction)",
     "count": "wrong field count / missing or extra field",
     "distinct": "crops not distinct",
     "relation": "relation missing",
@@ -268,6 +279,44 @@ def _tags_table(report: EvaluationReport) -> list[str]:
         checked = sum(s.inferred_checked for s in run.scores)
         row.append("n/a" if run.unavailable else str(Rate(ok, checked)))
     rows.append(row)
+    row = [PHANTOM_LABEL]
+    row += [_phantom_cell(run, None) for run in report.runs]
+    rows.append(row)
+    return _table(header, rows)
+
+
+def _phantom_cell(run: StrategyRun, tag: str | None) -> str:
+    """Phantom fields over the valid prompts (with ``tag`` when given), and in how many."""
+    if run.unavailable:
+        return "n/a"
+    scores = [s for s in run.scores if s.type != "invalid" and (tag is None or tag in s.tags)]
+    if not scores:
+        return "–"
+    phantoms = sum(s.phantom_fields for s in scores)
+    prompts = sum(1 for s in scores if s.phantom_fields)
+    return f"{phantoms} (in {prompts} of {len(scores)} prompts)"
+
+
+def _phantom_table(report: EvaluationReport) -> list[str]:
+    """Phantom fields per genre (and on scenery words): empty when no such prompt was run."""
+    reference = next((r for r in report.runs if r.scores), None)
+    if reference is None:
+        return []
+    rows: list[list[str]] = []
+    for tag in (*GENRE_TAGS, "scenery"):
+        valid = [s for s in reference.scores if s.type != "invalid" and tag in s.tags]
+        if not valid:
+            continue
+        row = [f"{_TAG_LABELS[tag]} ({len(valid)})"]
+        row += [_phantom_cell(run, tag) for run in report.runs]
+        rows.append(row)
+    if not rows:
+        return []
+    valid = [s for s in reference.scores if s.type != "invalid"]
+    rows.append(
+        [f"All valid prompts ({len(valid)})", *(_phantom_cell(r, None) for r in report.runs)]
+    )
+    header = ["Genre: phantom fields (n valid)"] + [_strategy_header(r) for r in report.runs]
     return _table(header, rows)
 
 
@@ -400,8 +449,19 @@ def _unavailable_lines(report: EvaluationReport) -> list[str]:
 
 
 def _file_names(sources: str) -> str:
-    """The file names of a comma-separated list of paths, each in backticks."""
-    return " + ".join(f"`{Path(part.strip()).name}`" for part in sources.split(","))
+    """The file names of a comma-separated list of paths, each in backticks.
+
+    A blind genre set keeps its folder (``heldout/<set>.yaml``).
+    """
+    names = []
+    for part in sources.split(","):
+        path = Path(part.strip())
+        names.append(
+            f"`{path.parent.name}/{path.name}`"
+            if path.parent.name == "heldout"
+            else f"`{path.name}`"
+        )
+    return " + ".join(names)
 
 
 def render_markdown(report: EvaluationReport, *, failures: bool = True) -> str:
@@ -423,14 +483,26 @@ def render_markdown(report: EvaluationReport, *, failures: bool = True) -> str:
             "",
             "### Development prompts vs held-out prompts",
             "",
-            "The resolvers were developed against `prompts.yaml`; `prompts_heldout.yaml` was "
-            "written apart and added only for the final run, so no resolver was tuned on it. "
+            "The resolvers were developed against `prompts.yaml`; the held-out files "
+            "(`prompts_heldout.yaml`, `heldout/*.yaml`) were written apart and added only for "
+            "the final run, so no resolver was tuned on them. "
             "A gap between the two is over-fitting to the development prompts.",
             "",
         ]
         lines += _split_table(report)
     lines += ["", "### Hard cases", ""]
     lines += _tags_table(report)
+    phantoms = _phantom_table(report)
+    if phantoms:
+        lines += [
+            "",
+            "### Phantom fields per genre",
+            "",
+            "Recipe fields that match no truth field and are not accepted extras (e.g. a "
+            "field made of scenery or purpose words), over the valid prompts of each genre.",
+            "",
+        ]
+        lines += phantoms
     lines += ["", "### Issue 3's targets", ""]
     lines += _targets_table(report)
     lines += ["", "### Table II: knowledge retrieval, exact match", ""]

@@ -2,8 +2,9 @@
 
 A recipe is reduced to a :class:`PredictedScene` (what the scorer compares),
 its fields are matched to the truth fields by an optimal assignment, and the
-result is a :class:`PromptScore`: correct or not, why not, and the field-level
-counts behind precision / recall / F1.
+result is a :class:`PromptScore`: correct or not, why not, the field-level
+counts behind precision / recall / F1, and the phantom fields (recipe fields
+beyond what the prompt asked for, e.g. a "field" made of scenery words).
 """
 
 from __future__ import annotations
@@ -14,12 +15,20 @@ from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
 from agrirecipe._errors import AgrirecipeError
-from agrirecipe.evaluation._benchmark import ATTRIBUTES, BenchmarkPrompt, TruthField, TruthRelation
+from agrirecipe.evaluation._benchmark import (
+    ATTRIBUTES,
+    BenchmarkPrompt,
+    GeometryKey,
+    TruthField,
+    TruthRelation,
+)
 
 if TYPE_CHECKING:
     from agrirecipe.recipe import SceneRecipe
 
 __all__ = [
+    "BEARING_TOLERANCE_DEG",
+    "SIZE_TOLERANCE",
     "PredictedField",
     "PredictedRelation",
     "PredictedScene",
@@ -28,10 +37,46 @@ __all__ = [
     "score_prompt",
 ]
 
-#: Relative tolerance on stated sizes and areas (a resolver may round to centimetres).
+#: Relative tolerance on stated sizes and areas (a resolver may round to centimetres),
+#: and on the stated geometry's lengths, spacings and densities.
 SIZE_TOLERANCE = 0.01
+#: Tolerance on a stated row bearing, in degrees (compared modulo 180).
+BEARING_TOLERANCE_DEG = 1.0
 #: Attributes a resolver chooses when the prompt leaves them open (category follows the crop).
 _CHOSEN = ATTRIBUTES[1:]
+
+
+#: Truth geometry key -> the PredictedField attribute it is compared with
+#: (``row_spacing_m`` depends on the rows per bed: see :meth:`PredictedField.geometry`).
+_GEOMETRY_SOURCE: dict[GeometryKey, str] = {
+    "rows": "row_count",
+    "beds": "bed_count",
+    "rows_per_bed": "rows_per_bed",
+    "row_length_m": "row_length_m",
+    "row_spacing_m": "row_spacing_m",
+    "bed_width_m": "row_spacing_m",
+    "in_row_spacing_m": "in_row_spacing_m",
+    "plants_per_ha": "plants_per_ha",
+    "plant_count": "nominal_plant_count",
+    "headland_m": "headland_m",
+    "row_bearing_deg": "row_bearing_deg",
+}
+#: How a geometry key reads in a mismatch note: (words, unit).
+_GEOMETRY_WORDS: dict[GeometryKey, tuple[str, str]] = {
+    "rows": ("rows", ""),
+    "beds": ("beds", ""),
+    "rows_per_bed": ("rows per bed", ""),
+    "row_length_m": ("row length", " m"),
+    "row_spacing_m": ("row spacing", " m"),
+    "bed_width_m": ("bed width", " m"),
+    "in_row_spacing_m": ("in-row spacing", " m"),
+    "plants_per_ha": ("density", " plants/ha"),
+    "plant_count": ("plants", ""),
+    "headland_m": ("headland", " m"),
+    "row_bearing_deg": ("row bearing", " deg"),
+}
+#: Geometry keys that are counts, compared exactly.
+_COUNT_KEYS: frozenset[GeometryKey] = frozenset({"rows", "beds", "rows_per_bed", "plant_count"})
 
 
 @dataclass(frozen=True, slots=True)
@@ -48,6 +93,35 @@ class PredictedField:
     size_m: tuple[float, float] | None = None
     stated: tuple[str, ...] = ()
     inferred: tuple[str, ...] = ()
+    # The geometry the recipe lays out (None: unknown, e.g. a field built by hand in a test).
+    # Named as in the recipe's FieldSpec, so ``row_spacing_m`` is the centre distance of
+    # rows, or of beds when ``rows_per_bed`` > 1 (then ``bed_row_spacing_m`` is the
+    # distance of the rows on a bed).
+    row_count: int | None = None
+    bed_count: int | None = None
+    rows_per_bed: int | None = None
+    row_length_m: float | None = None
+    row_spacing_m: float | None = None
+    bed_row_spacing_m: float | None = None
+    in_row_spacing_m: float | None = None
+    plants_per_ha: float | None = None
+    nominal_plant_count: int | None = None
+    headland_m: float | None = None
+    row_bearing_deg: float | None = None
+
+    def geometry(self, key: GeometryKey) -> float | None:
+        """The recipe's value for the truth's geometry ``key`` (None when unknown).
+
+        ``row_spacing_m`` is the distance of neighbouring rows: the row (centre)
+        spacing of single rows, the spacing of the rows on a bed otherwise;
+        ``bed_width_m`` is the centre distance of beds (of rows, for single rows).
+        """
+        if key == "row_spacing_m":
+            if self.rows_per_bed is None or self.rows_per_bed == 1:
+                return self.row_spacing_m
+            return self.bed_row_spacing_m
+        value: float | None = getattr(self, _GEOMETRY_SOURCE[key])
+        return value
 
     def describe(self) -> str:
         """E.g. ``Apple/Gala, Reproductive, Spring, Healthy, 60x100 m``."""
@@ -91,6 +165,17 @@ class PredictedScene:
                     size_m=(float(spec.geometry.size_m[0]), float(spec.geometry.size_m[1])),
                     stated=tuple(spec.stated),
                     inferred=tuple(spec.inferred),
+                    row_count=spec.row_count,
+                    bed_count=spec.bed_count,
+                    rows_per_bed=spec.agronomy.rows_per_bed,
+                    row_length_m=float(spec.row_length_m),
+                    row_spacing_m=float(spec.agronomy.row_spacing_m),
+                    bed_row_spacing_m=float(spec.agronomy.bed_row_spacing_m),
+                    in_row_spacing_m=float(spec.agronomy.in_row_spacing_m),
+                    plants_per_ha=float(spec.plants_per_ha),
+                    nominal_plant_count=spec.nominal_plant_count,
+                    headland_m=float(spec.geometry.headland_m),
+                    row_bearing_deg=float(spec.row_bearing_deg),
                 )
                 for spec in recipe.fields
             ),
@@ -128,6 +213,7 @@ class PromptScore:
     predicted_fields: int = 0
     truth_fields: int = 0
     error_class_ok: bool | None = None
+    phantom_fields: int = 0
     inferred_checked: int = 0
     inferred_ok: int = 0
     seconds: float | None = None
@@ -154,7 +240,23 @@ def _mismatches(truth: TruthField, field: PredictedField) -> list[tuple[str, str
         area = field.size_m[0] * field.size_m[1] if field.size_m is not None else 0.0
         if not math.isclose(area, truth.area_m2, rel_tol=SIZE_TOLERANCE):
             notes.append(("size", f"area {area:g} m2 (expected {truth.area_m2:g})"))
+    for key, expected in truth.geometry().items():
+        value = field.geometry(key)
+        if value is None or not _geometry_matches(key, expected, value):
+            words, unit = _GEOMETRY_WORDS[key]
+            shown = "none" if value is None else f"{value:g}{unit}"
+            notes.append(("geometry", f"geometry: {words} {shown} (expected {expected:g})"))
     return notes
+
+
+def _geometry_matches(key: GeometryKey, expected: float, got: float) -> bool:
+    """Counts exactly, the bearing within a degree modulo 180, the rest within 1 %."""
+    if key in _COUNT_KEYS:
+        return got == expected
+    if key == "row_bearing_deg":
+        difference = abs(got - expected) % 180.0
+        return min(difference, 180.0 - difference) <= BEARING_TOLERANCE_DEG
+    return math.isclose(got, expected, rel_tol=SIZE_TOLERANCE, abs_tol=1e-9)
 
 
 def _sizes_match(expected: tuple[float, float], got: tuple[float, float]) -> bool:
@@ -308,6 +410,9 @@ def score_prompt(
         else:
             problems.append(("count", f"unexpected field {field.describe()}"))
     accepted_extras = min(accepted_extras, max(0, high - len(truth)))
+    # Phantom fields: recipe fields left without a truth field by the assignment and not
+    # accepted as extras (a field assigned to a truth field but wrong is not a phantom).
+    phantoms = len(extras) - accepted_extras
     if item.distinct_crops and len({p.crop for p in predicted}) != len(predicted):
         problems.append(("distinct", "crops are not all different"))
     problems.extend(("relation", text) for text in _relation_problems(item, scene, matched))
@@ -329,6 +434,7 @@ def score_prompt(
         got=scene.describe(),
         true_positives=len(matched) + accepted_extras,
         predicted_fields=len(predicted),
+        phantom_fields=phantoms,
         inferred_checked=checked,
         inferred_ok=ok,
     )
