@@ -40,6 +40,7 @@ _PRE_HEAD = (
     "weak_variety",
     "size",
     "geometry",
+    "cue",
     "filler",
     "unknown",
     "reference",

@@ -71,6 +71,7 @@ SenseKind = Literal[
     "place",
     "non_agricultural",
     "geometry",
+    "cue",
     "filler",
 ]
 
@@ -443,6 +444,9 @@ def _build_lexicon(hierarchy: Hierarchy, knowledge: KnowledgeBase, crop_names: b
                 add(phrase, Sense(kind, convert(value), weak=weak))
                 for modifier in modifiers:  # "late summer", "early June"
                     add(f"{modifier} {phrase}", Sense(kind, convert(value)))
+    from agrirecipe.resolve._cues import add_cues  # the cue table reads the lexicon's words
+
+    add_cues(lexicon)
     for crop in hierarchy.crops.values():
         disease = knowledge.crop_file(crop.name).disease.name
         for name in _disease_names(disease):

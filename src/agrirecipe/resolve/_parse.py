@@ -22,6 +22,8 @@ from agrirecipe.resolve._attributes import (
     single_value,
     values_of,
 )
+from agrirecipe.resolve._casual import expand_casual
+from agrirecipe.resolve._cues import apply_cues
 from agrirecipe.resolve._decompose import (
     Clause,
     Mention,
@@ -86,6 +88,7 @@ _ATTRIBUTE_ROLES = (
     "negation",
     "size",
     "geometry",
+    "cue",
     "all",
 )
 
@@ -134,12 +137,13 @@ class PromptReader:
                 stage="resolve",
                 hint=f"describe the fields you want, e.g. {_EXAMPLES}",
             )
-        tokens = tokenize(prompt)
+        text = expand_casual(prompt)
+        tokens = tokenize(text)
         items = self._tag(tokens, find_geometry(tokens))
         items, steps = self.unknown_words(items, self.lexicon)
         self.trace.extend(steps)
         assign_roles(items)
-        prompt_latitude, latitude_text, items = read_latitude(prompt, items)
+        prompt_latitude, latitude_text, items = read_latitude(text, items)
         items = read_sizes(items)
         self._reject_scenery(items)
         self._reject_other_crops(items)
@@ -372,6 +376,16 @@ class PromptReader:
                 # a time of year belongs to the whole scene.
                 scene.extend(seasons)
                 seasons = []
+            if (
+                before
+                and not after
+                and len(before) > 1
+                and any(_says_all_plants(i) for i in others)
+            ):
+                # "A next to B, young plants": closing words about "the plants" describe all.
+                for target in before:
+                    target.items.extend(others)
+                continue
             targets: list[Mention] = []
             forward = after[0] if after else None
             next_link = clauses[position + 1].link if position + 1 < len(clauses) else None
@@ -528,6 +542,7 @@ class PromptReader:
             member.items, ("season", "month"), "season", text, hemisphere
         )  # type: ignore[assignment]
         health: HealthState | None = health_of(member.items, text)
+        stage, season, health = self._cues(member, text, stage, season, health)
         sizes = [item.data["size"] for item in member.items if item.role == "size"]
         size = single_size(sizes, text)
         rows = row_spec(member.items, text)
@@ -566,6 +581,37 @@ class PromptReader:
             distinct_group=member.group,
         )
 
+    def _cues(
+        self,
+        member: _Field,
+        text: str,
+        stage: Stage | None,
+        season: Season | None,
+        health: HealthState | None,
+    ) -> tuple[Stage | None, Season | None, HealthState | None]:
+        """Fill unstated attributes from what the field looks like ("curled leaves")."""
+        strong = [i for i in member.interpretations or [] if not i[2]]
+        deciduous = (
+            self.context.knowledge.crop_file(strong[0][0]).leaf_habit == "deciduous"
+            if strong
+            else None
+        )
+        reading = apply_cues(
+            [i for i in member.items if "cue" in i.data],
+            {"stage": stage, "season": season, "health": health},
+            deciduous=deciduous,
+            field_text=text,
+        )
+        self.warnings.extend(reading.warnings)
+        for used in reading.used:
+            self.trace.append(TraceStep(stage="normalise", subject=text, detail=f"cue {used}"))
+        values = reading.values
+        return (
+            cast(Stage | None, stage or values.get("stage")),
+            cast(Season | None, season or values.get("season")),
+            cast(HealthState | None, health or values.get("health")),
+        )
+
     def _trace_choice(
         self,
         member: _Field,
@@ -592,6 +638,15 @@ class PromptReader:
 
 
 # --- helpers ---
+
+
+_ALL_PLANTS = frozenset({"plants", "trees", "vines", "crops", "bushes"})
+
+
+def _says_all_plants(item: Item) -> bool:
+    """'young plants', 'healthy trees': an attribute phrase about the plants in general."""
+    words = item.norm.split()
+    return len(words) > 1 and words[-1] in _ALL_PLANTS
 
 
 def _detach_trailing_all(clause: Clause) -> None:

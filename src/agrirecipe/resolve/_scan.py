@@ -32,6 +32,7 @@ _ROLE_ORDER = (
     "season",
     "month",
     "health",
+    "cue",
     "negation",
     "relation",
     "relation_trailer",
@@ -97,6 +98,9 @@ def _role(item: Item, previous: Item | None, cues: set[str], *, alone: bool = Fa
             return "number"
         return "unknown"
     kinds = {sense.kind for sense in senses}
+    looks = [s for s in senses if s.kind == "cue"]
+    if looks:  # kept even when a stated sense wins the role ("dormant": a stage, and winter)
+        item.data["cue"] = looks[0].value
     strong_variety = any(s.kind == "variety" and not s.weak for s in senses)
     if kinds & {"crop", "category"} or strong_variety:
         return "head"
@@ -118,6 +122,8 @@ def _role(item: Item, previous: Item | None, cues: set[str], *, alone: bool = Fa
         if kind == "geometry":
             item.data["geometry"] = sense.value
             return "geometry"
+        if kind == "cue":
+            return "cue"
         if kind == "number" and "reference" in kinds:
             item.data["reference"] = True
         item.data["value"] = sense.value

@@ -364,7 +364,7 @@ def _counted_reference(items: Sequence[Item]) -> int | None:
     return int(value)
 
 
-_SHARED_ROLES = ("stage", "health")
+_SHARED_ROLES = ("stage", "health", "cue")
 
 
 def share_leading_attributes(clauses: Sequence[Clause]) -> None:
@@ -441,38 +441,67 @@ def raise_conflicts(clauses: Sequence[Clause]) -> None:
 
 
 def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
-    """', fruit ripe' after named fields: the fields' own fruit, so its words are attributes.
+    """Mentions that describe plants of a named field are attributes, not new fields.
 
-    A clause whose only mention is a plant-part word ("fruit", "berries") with a stage
-    or health word and no count, following a clause that named fields, becomes a
-    head-less clause, so its attributes go to those fields. Returns what was dissolved.
+    ", fruit ripe" after named fields, "half the vines show mildew, a riesling
+    vineyard", "three orchards, each with a different fruit": a clause whose only
+    mention is made of descriptive words (``descriptive_heads``: fruit, plants,
+    vines, leaves...) becomes head-less, so its words go to the field(s) it
+    describes (before it, or the next one when it opens the prompt). It stays a
+    field with its own count, size or rows, as a member of a list ("apples and
+    fruit trees"), or when no other field is named. "each with a different
+    fruit" makes the fields before it different crops. Returns what was dissolved.
     """
-    parts = {str(word) for word in vocabulary()["plant_part_words"]}
+    words = _descriptive_words()
     dissolved: list[str] = []
     for position, clause in enumerate(clauses):
-        if (
-            position == 0
-            or len(clause.mentions) != 1
-            or not any(c.mentions for c in clauses[:position])
-        ):
+        if len(clause.mentions) != 1:
+            continue
+        others_before = any(c.mentions for c in clauses[:position])
+        others_after = any(c.mentions for c in clauses[position + 1 :])
+        if not others_before and not (position == 0 and others_after):
             continue
         mention = clause.mentions[0]
-        definite = _definite_before_head(clause, mention)  # "in the fruit"
+        definite = _definite_before_head(clause, mention)  # "in the fruit", "the vines"
+        listed = (
+            clause.link is not None
+            and clause.link.role == "conjunction"
+            and bool(clauses[position - 1].mentions)
+        )
+        fraction = any(i.role == "fraction" for i in mention.items)  # "half the vines"
+        own_size = any(i.role in ("size", "geometry") for i in mention.items)
+        described = any(
+            i.role in ("stage", "health", "cue", "season", "month") or "cue" in i.data
+            for i in mention.items
+        )
         if (
-            not all(h.norm in parts for h in mention.heads)
-            or (mention.count is not None and not definite)
+            not all(h.norm in words for h in mention.heads)
+            or (mention.count is not None and not (definite or fraction))
             or (mention.quantity is not None and not definite)  # "a lot of the fruit"
-            or mention.distinct
             or mention.other
-            or not any(i.role in ("stage", "health") for i in mention.items)
+            or own_size
+            or (listed and not definite)
+            or not (described or definite or fraction or mention.distinct)
         ):
             continue
+        if mention.distinct:
+            for earlier in (m for c in clauses[:position] for m in c.mentions):
+                earlier.distinct = True
+                earlier.distinct_crops = True
         for head in mention.heads:
             head.role = "filler"
-        clause.loose = [*clause.loose, *mention.items]
+        clause.loose = [*clause.loose, *(i for i in mention.items if i.role != "distinct")]
         clause.mentions = []
         dissolved.append(mention.text)
     return dissolved
+
+
+@functools.lru_cache(maxsize=1)
+def _descriptive_words() -> frozenset[str]:
+    vocab = vocabulary()
+    return frozenset(
+        str(word) for word in (*vocab["plant_part_words"], *vocab["descriptive_heads"])
+    )
 
 
 @functools.lru_cache(maxsize=1)

@@ -1,0 +1,41 @@
+"""Casual text: texting forms read as the words they stand for ("nxt 2" -> "next to").
+
+The forms are data (``data/casual.yaml``). :func:`expand_casual` rewrites them
+once, in one pass of one regular expression (linear in the prompt's length),
+before the prompt is split into words, so "b4" never becomes a count of 4
+fields. The original prompt is kept for the recipe; the rewritten text is what
+is read.
+"""
+
+from __future__ import annotations
+
+import functools
+import re
+from typing import Any
+
+import yaml
+
+from agrirecipe.resolve._lexicon import DATA_DIR
+
+__all__ = ["expand_casual"]
+
+
+@functools.cache
+def _forms() -> tuple[re.Pattern[str], dict[str, str]]:
+    data: dict[str, Any] = yaml.safe_load((DATA_DIR / "casual.yaml").read_text("utf-8"))
+    forms = {str(k).lower(): str(v) for k, v in data["forms"].items()}
+    ordered = sorted(forms, key=len, reverse=True)  # "nxt 2" before "nxt"
+    alternation = "|".join(re.escape(form).replace(r"\ ", r"\s+") for form in ordered)
+    pattern = re.compile(rf"(?<![A-Za-z0-9])(?:{alternation})(?![A-Za-z0-9])", re.IGNORECASE)
+    return pattern, forms
+
+
+def expand_casual(prompt: str) -> str:
+    """``prompt`` with every texting form replaced by its words."""
+    pattern, forms = _forms()
+
+    def replace(match: re.Match[str]) -> str:
+        key = re.sub(r"\s+", " ", match.group(0).lower())
+        return f" {forms[key]} " if forms[key] else " "
+
+    return pattern.sub(replace, prompt)

@@ -1,0 +1,136 @@
+"""Requests as people write them (issue 8): visual cues, casual text, descriptions that
+are not fields, scenery that is not a field."""
+
+from __future__ import annotations
+
+import pytest
+
+from agrirecipe import PromptError, UnknownCropError, generate
+from agrirecipe.resolve._casual import expand_casual
+
+
+def fields(prompt: str, resolver: str = "hybrid") -> list[tuple[str, str, str, str]]:
+    recipe = generate(prompt, resolver=resolver).recipe
+    return [(f.crop, f.stage, f.season, f.health) for f in recipe.fields]
+
+
+# --- visual cues --------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("prompt", "attribute", "value"),
+    [
+        ("an apple orchard, trees white with blossom", "stage", "Reproductive"),
+        ("a cherry orchard, petals falling", "stage", "Reproductive"),
+        ("a wheat field, straw-coloured, heads drooping", "stage", "Maturation"),
+        ("a plum tomato plot, fruit colouring up", "stage", "Maturation"),
+        ("lettuce at the two-leaf stage", "stage", "Vegetative"),
+        ("pear trees, hoarfrost on bare branches", "season", "Winter"),
+        ("tomato plants with curled leaves and lesions", "health", "Ill"),
+        ("a potato field, the plants wilted", "health", "Ill"),
+        ("half the vines show mildew, a riesling vineyard", "health", "Ill"),
+    ],
+)
+def test_a_visual_cue_sets_the_attribute(prompt: str, attribute: str, value: str) -> None:
+    recipe = generate(prompt, resolver="hybrid").recipe
+    assert len(recipe.fields) == 1, [f.crop for f in recipe.fields]
+    assert getattr(recipe.fields[0], attribute) == value
+    assert attribute in recipe.fields[0].stated
+
+
+def test_a_winter_cue_needs_a_deciduous_crop() -> None:
+    (field,) = generate("carrots in bare soil, hoarfrost", resolver="hybrid").recipe.fields
+    assert field.season != "Winter" or "season" not in field.stated
+
+
+def test_a_stated_word_wins_over_a_cue_with_a_warning() -> None:
+    recipe = generate("a ripe apple orchard in summer, petals falling", resolver="hybrid").recipe
+    assert recipe.fields[0].stage == "Maturation"
+    assert any("petals" in w and "kept Maturation" in w for w in recipe.warnings)
+
+
+# --- casual text ------------------------------------------------------------------------------
+
+
+def test_texting_forms_are_words() -> None:
+    assert expand_casual("apples nxt 2 pears b4 harvest thx").split() == [
+        "apples",
+        "next",
+        "to",
+        "pears",
+        "before",
+        "harvest",
+    ]
+    assert "+" in expand_casual("50+ trees")  # a number's plus is kept
+
+
+@pytest.mark.parametrize(
+    ("prompt", "crops"),
+    [
+        ("apples nxt 2 pears b4 harvest thx", ["Apple", "Pear"]),
+        ("hamlin oranges + navel oranges, 2 ha each, winter", ["Orange", "Orange"]),
+        ("tomatoes & peppers pls", ["Tomato", "Pepper"]),
+        ("cherries (Kordia) next to pears (Conference)", ["Cherry", "Pear"]),
+        ("groves of valencia and navel oranges", ["Orange", "Orange"]),
+    ],
+)
+def test_casual_requests_make_the_fields_asked_for(prompt: str, crops: list[str]) -> None:
+    assert [f[0] for f in fields(prompt)] == crops
+
+
+# --- descriptions are not fields ---------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("prompt", "count"),
+    [
+        ("a plum tomato plot, fruit colouring up", 1),
+        ("half the vines show mildew, a riesling vineyard in august", 1),
+        ("three orchards, each with a different fruit", 3),
+        ("an apple orchard, the trees in full bloom", 1),
+        ("apples and fruit trees", 2),  # a list member is a field
+    ],
+)
+def test_a_description_attaches_to_its_field(prompt: str, count: int) -> None:
+    assert len(fields(prompt)) == count
+
+
+def test_each_with_a_different_fruit_makes_the_fields_different() -> None:
+    crops = [f[0] for f in fields("three orchards, each with a different fruit")]
+    assert len(set(crops)) == 3
+
+
+def test_closing_words_about_the_plants_describe_every_field() -> None:
+    result = fields("sonata strawberries next to albion strawberries, young plants, spring")
+    assert [f[1] for f in result] == ["Vegetative", "Vegetative"]
+
+
+# --- scenery and purpose are not fields, real unknown crops are refused -------------------------
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "a sprayer parked by the gate next to a wheat field",
+        "an apple orchard with a hedge along the edge",
+        "a barn behind the trees of a pear orchard",
+        "a carrot field with a ditch, overcast sky",
+        "maize for our weeding robot",
+        "a test plot of lettuce for a LiDAR dataset",
+        "drone survey of a vineyard",
+        "a trial plot of potatoes",
+    ],
+)
+def test_scenery_and_purpose_are_ignored(prompt: str) -> None:
+    assert len(fields(prompt)) == 1
+
+
+@pytest.mark.parametrize("prompt", ["an olive grove", "a rice paddy", "sunflowers"])
+def test_real_crops_the_hierarchy_lacks_are_refused(prompt: str) -> None:
+    with pytest.raises(UnknownCropError):
+        generate(prompt, resolver="hybrid")
+
+
+def test_scenery_alone_is_not_a_scene() -> None:
+    with pytest.raises(PromptError):
+        generate("a hedge and a gate", resolver="hybrid")
