@@ -41,7 +41,7 @@ _SPIN = "while True: pass"
 
 def child(threads: int, prompts: int) -> None:
     """Read ``prompts`` development prompts with the llm strategy; print the times as JSON."""
-    from agrirecipe.resolve._llm import LlmResolver
+    from agrirecipe.resolve.llm import LlmResolver
 
     from agrirecipe import AgrirecipeError
     from agrirecipe.evaluation import load_benchmark

@@ -6,6 +6,7 @@ from __future__ import annotations
 import pytest
 
 from agrirecipe import PromptError, UnknownCropError, generate
+from agrirecipe.resolve import FieldIntent, ResolveContext, Resolver, SceneIntent, resolve
 from agrirecipe.resolve._casual import expand_casual
 
 
@@ -134,3 +135,36 @@ def test_real_crops_the_hierarchy_lacks_are_refused(prompt: str) -> None:
 def test_scenery_alone_is_not_a_scene() -> None:
     with pytest.raises(PromptError):
         generate("a hedge and a gate", resolver="hybrid")
+
+
+# --- intent validation: every field is traceable to the prompt's words --------------------------
+
+
+class _Hallucinating(Resolver):
+    """A strategy that adds a field nobody asked for (what a language model may do)."""
+
+    name = "hallucinating"
+
+    def resolve_intent(self, prompt: str, context: ResolveContext) -> SceneIntent:
+        return SceneIntent(
+            prompt=prompt,
+            fields=(
+                FieldIntent(text="a wheat field", crop="Wheat"),
+                FieldIntent(text="banana plantation", crop="Banana"),
+            ),
+            resolver=self.name,
+        )
+
+
+def test_a_field_nobody_asked_for_fails_intent_validation() -> None:
+    with pytest.raises(PromptError, match="not traceable") as caught:
+        resolve("a wheat field", resolver=_Hallucinating())
+    assert caught.value.stage == "validate"
+
+
+def test_explain_lists_scenery_as_not_used() -> None:
+    steps = resolve(
+        "a sprayer parked by the gate next to a wheat field, overcast sky", explain=True
+    ).intent.trace
+    (step,) = [s for s in steps if s.subject == "not used"]
+    assert "'sprayer'" in step.detail and "'gate'" in step.detail and "'sky'" in step.detail

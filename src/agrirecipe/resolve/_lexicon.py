@@ -72,6 +72,7 @@ SenseKind = Literal[
     "non_agricultural",
     "geometry",
     "cue",
+    "scenery",
     "filler",
 ]
 
@@ -447,6 +448,10 @@ def _build_lexicon(hierarchy: Hierarchy, knowledge: KnowledgeBase, crop_names: b
     from agrirecipe.resolve._cues import add_cues  # the cue table reads the lexicon's words
 
     add_cues(lexicon)
+    for group, phrases in _load("scenery.yaml").items():
+        if group != "version":
+            for phrase in phrases:
+                add(str(phrase), Sense("scenery", group))
     for crop in hierarchy.crops.values():
         disease = knowledge.crop_file(crop.name).disease.name
         for name in _disease_names(disease):

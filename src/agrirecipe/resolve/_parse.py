@@ -198,6 +198,16 @@ class PromptReader:
                     detail=f"{intent.text!r} -> " + _describe(intent),
                 )
             )
+        scenery = sorted({i.raw for i in items if "scenery" in i.data and i.role == "filler"})
+        if scenery:
+            self.trace.append(
+                TraceStep(
+                    stage="decompose",
+                    subject="not used",
+                    detail="scenery and purpose, not fields: "
+                    + ", ".join(repr(w) for w in scenery),
+                )
+            )
         ignored = sorted({i.raw for i in items if i.role == "non_agricultural"})
         if ignored:
             self.warnings.append(

@@ -36,6 +36,7 @@ from agrirecipe.recipe import (
     Season,
     Stage,
 )
+from agrirecipe.resolve._casual import expand_casual
 from agrirecipe.resolve._explain import Explanation
 from agrirecipe.resolve._intent import (
     FieldIntent,
@@ -44,7 +45,7 @@ from agrirecipe.resolve._intent import (
     SceneIntent,
     TraceStep,
 )
-from agrirecipe.resolve._lexicon import vocabulary
+from agrirecipe.resolve._lexicon import tokenize, vocabulary
 from agrirecipe.resolve._registry import get_resolver
 
 if TYPE_CHECKING:
@@ -350,11 +351,28 @@ def _first_message(exc: ValidationError) -> str:
     return message
 
 
+def _words(text: str) -> set[str]:
+    return {token.norm for token in tokenize(text) if token.norm.isalnum()}
+
+
 def _validate(intent: SceneIntent, context: ResolveContext) -> None:
     """Catch intents that name what the hierarchy does not hold (any strategy can err)."""
     hierarchy = context.hierarchy
+    prompt_words = _words(intent.prompt) | _words(expand_casual(intent.prompt))
     for index, field in enumerate(intent.fields):
         path = f"fields[{index}]"
+        # Intent validation (the paper's stage): every field is traceable to the words
+        # that asked for it; a field the prompt never asked for is not built.
+        asked = _words(field.text)
+        if not asked or not asked <= prompt_words:
+            raise PromptError(
+                f"field {index + 1} ({field.text!r}) is not traceable to the words of the "
+                f"prompt; the {intent.resolver or 'resolver'} strategy made a field nobody "
+                "asked for",
+                stage="validate",
+                path=path,
+                hint="rephrase the request, or try another resolver",
+            )
         if field.crop is not None and field.crop not in hierarchy.crops:
             from rapidfuzz import process
 

@@ -51,6 +51,7 @@ _ROLE_ORDER = (
     "length_unit",
     "dimension_joiner",
     "side",
+    "scenery",
     "filler",
 )
 
@@ -124,6 +125,9 @@ def _role(item: Item, previous: Item | None, cues: set[str], *, alone: bool = Fa
             return "geometry"
         if kind == "cue":
             return "cue"
+        if kind == "scenery":  # read as a filler word; --explain lists it as not used
+            item.data["scenery"] = sense.value
+            return "filler"
         if kind == "number" and "reference" in kinds:
             item.data["reference"] = True
         item.data["value"] = sense.value
