@@ -31,7 +31,7 @@ from agrirecipe.evaluation import (
 from agrirecipe.hierarchy import default_hierarchy
 from agrirecipe.knowledge import default_knowledge_base
 from agrirecipe.recipe import FieldGeometry, Relation, SceneRecipe
-from conftest import make_prompt
+from conftest import field, make_prompt, scene
 
 
 def _recipe(prompt: str, *specs: tuple[str, str, str, str, str]) -> SceneRecipe:
@@ -262,7 +262,6 @@ def test_a_strategy_that_crashes_on_warm_up_is_still_scored_prompt_by_prompt() -
 
 def test_report_rows_for_the_genre_tags_geometry_failures_and_phantom_fields() -> None:
     from agrirecipe.evaluation import score_prompt
-    from conftest import field, scene
 
     photo = make_prompt(
         id="g-photo-01",

@@ -168,3 +168,40 @@ def test_explain_lists_scenery_as_not_used() -> None:
     ).intent.trace
     (step,) = [s for s in steps if s.subject == "not used"]
     assert "'sprayer'" in step.detail and "'gate'" in step.detail and "'sky'" in step.detail
+
+
+# --- zones of a farm ----------------------------------------------------------------------------
+
+
+def test_a_farm_described_by_zones_is_one_field_per_zone_in_order() -> None:
+    recipe = generate(
+        "stone fruit along the top, roots in the middle, grain at the bottom", resolver="hybrid"
+    ).recipe
+    crops = [f.crop for f in recipe.fields]
+    assert crops[0] == "Cherry" and crops[1] in ("Carrot", "Potato", "Onion")
+    assert crops[2] in ("Maize", "Wheat") and len(crops) == 3
+    ids = [f.id for f in recipe.fields]
+    pairs = {(r.kind, r.subject, r.objects) for r in recipe.relations}
+    assert ("north_of", ids[0], (ids[1],)) in pairs and ("north_of", ids[1], (ids[2],)) in pairs
+    ys = [f.geometry.origin_m[1] for f in recipe.fields]
+    assert ys[0] > ys[1] > ys[2]
+
+
+def test_left_and_right_are_west_and_east() -> None:
+    recipe = generate("wheat on the left, maize on the right", resolver="hybrid").recipe
+    (relation,) = recipe.relations
+    assert relation.kind == "west_of" and relation.subject.startswith("wheat")
+
+
+@pytest.mark.parametrize(
+    "prompt", ["top quality apples", "a wheat field with tomatoes in the middle"]
+)
+def test_one_zone_word_alone_is_not_a_zoning(prompt: str) -> None:
+    assert not any(
+        r.kind in ("north_of", "west_of")
+        for r in generate(prompt, resolver="hybrid").recipe.relations
+    )
+
+
+def test_a_category_that_no_plot_option_belongs_to_is_its_own_field() -> None:
+    assert len(fields("an orchard, vegetables")) == 2

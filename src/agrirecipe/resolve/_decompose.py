@@ -41,6 +41,7 @@ _PRE_HEAD = (
     "size",
     "geometry",
     "cue",
+    "zone",
     "filler",
     "unknown",
     "reference",
@@ -200,6 +201,10 @@ class MentionBuilder:
         if categories and not interpretations:
             if mention.category is not None and mention.category not in categories:
                 return False
+            if mention.plot is not None and mention.plot["options"] and not any(
+                self.crop_categories.get(c) in categories for c in mention.plot["options"]
+            ):
+                return False  # "an orchard, vegetables": two fields, not vegetable trees
             if mention.has_crop:
                 return any(
                     self.crop_categories.get(c) in categories

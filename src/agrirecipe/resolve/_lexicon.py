@@ -71,6 +71,7 @@ SenseKind = Literal[
     "place",
     "non_agricultural",
     "geometry",
+    "zone",
     "cue",
     "scenery",
     "filler",

@@ -31,7 +31,7 @@ from agrirecipe.resolve._decompose import (
     decompose,
     resolve_weak_varieties,
 )
-from agrirecipe.resolve._geometry import GeometryMatch, find_geometry, row_spec
+from agrirecipe.resolve._geometry import find_geometry, row_spec
 from agrirecipe.resolve._intent import (
     Candidate,
     FieldIntent,
@@ -63,6 +63,7 @@ from agrirecipe.resolve._structure import (
     share_leading_attributes,
     share_trailing_attributes,
 )
+from agrirecipe.resolve._zones import find_zones, zone_relations
 
 __all__ = ["NOTHING_FOUND", "NearestCrops", "PromptReader", "UnknownWords"]
 
@@ -89,6 +90,7 @@ _ATTRIBUTE_ROLES = (
     "size",
     "geometry",
     "cue",
+    "zone",
     "all",
 )
 
@@ -139,7 +141,12 @@ class PromptReader:
             )
         text = expand_casual(prompt)
         tokens = tokenize(text)
-        items = self._tag(tokens, find_geometry(tokens))
+        spans = [(m.first, m.last, Sense("geometry", m)) for m in find_geometry(tokens)]
+        claimed = [False] * len(tokens)
+        for first, last, _ in spans:
+            claimed[first:last] = [True] * (last - first)
+        spans += [(z.first, z.last, Sense("zone", z.zone)) for z in find_zones(tokens, claimed)]
+        items = self._tag(tokens, sorted(spans, key=lambda span: span[0]))
         items, steps = self.unknown_words(items, self.lexicon)
         self.trace.extend(steps)
         assign_roles(items)
@@ -188,6 +195,12 @@ class PromptReader:
             if member.sub is not None and member.sub is not member.mention:
                 members.setdefault(id(member.sub), []).append(index)
         relations = read_relations(clauses, members, self.trace, self.warnings)
+        said = {(r.kind, r.subject, r.objects) for r in relations}
+        relations += [
+            r
+            for r in zone_relations([f.items for f in fields])
+            if (r.kind, r.subject, r.objects) not in said
+        ]
         scene_season = self._apply_scene_items(scene_items, fields, hemisphere)
         intents = [self._field_intent(f, hemisphere) for f in fields]
         for index, intent in enumerate(intents):
@@ -227,14 +240,15 @@ class PromptReader:
             resolver=self.strategy,
         )
 
-    def _tag(self, tokens: Sequence[Token], geometry: Sequence[GeometryMatch]) -> list[Item]:
-        """The lexicon's items, with each stated geometry ("76 cm apart") as one item."""
+    def _tag(self, tokens: Sequence[Token], spans: Sequence[tuple[int, int, Sense]]) -> list[Item]:
+        """The lexicon's items, with each span read before it (a stated geometry such as
+        "76 cm apart", a zone such as "along the top") as one item."""
         items: list[Item] = []
         index = 0
-        for match in geometry:
-            items.extend(self.lexicon.tag(tokens[index : match.first]))
-            items.append(Item(tuple(tokens[match.first : match.last]), (Sense("geometry", match),)))
-            index = match.last
+        for first, last, sense in spans:
+            items.extend(self.lexicon.tag(tokens[index:first]))
+            items.append(Item(tuple(tokens[first:last]), (sense,)))
+            index = last
         items.extend(self.lexicon.tag(tokens[index:]))
         return items
 

@@ -22,6 +22,7 @@ __all__ = ["assign_roles", "read_latitude", "read_sizes"]
 # its use as a colour; "one" is a number unless decomposition sees a reference).
 _ROLE_ORDER = (
     "geometry",
+    "zone",
     "other_crop",
     "plot",
     "container",
@@ -125,6 +126,9 @@ def _role(item: Item, previous: Item | None, cues: set[str], *, alone: bool = Fa
             return "geometry"
         if kind == "cue":
             return "cue"
+        if kind == "zone":
+            item.data["zone"] = sense.value
+            return "zone"
         if kind == "scenery":  # read as a filler word; --explain lists it as not used
             item.data["scenery"] = sense.value
             return "filler"
