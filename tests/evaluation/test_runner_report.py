@@ -7,6 +7,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from evaluation_helpers import field, make_prompt, scene
 
 from agrirecipe import ConfigurationError, PromptError, Scene
 from agrirecipe.enrich import build_environment, build_field
@@ -31,7 +32,6 @@ from agrirecipe.evaluation import (
 from agrirecipe.hierarchy import default_hierarchy
 from agrirecipe.knowledge import default_knowledge_base
 from agrirecipe.recipe import FieldGeometry, Relation, SceneRecipe
-from conftest import field, make_prompt, scene
 
 
 def _recipe(prompt: str, *specs: tuple[str, str, str, str, str]) -> SceneRecipe:

@@ -6,12 +6,12 @@ import itertools
 from dataclasses import replace
 
 import pytest
+from evaluation_helpers import field, make_prompt, scene
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from agrirecipe import AgrirecipeError, PromptError, UnknownCropError
 from agrirecipe.evaluation import PredictedRelation, optimal_assignment, score_prompt
-from conftest import field, make_prompt, scene
 
 GALA = {"crop": "Apple", "variety": "Gala", "stage": "Reproductive", "season": "Spring"}
 

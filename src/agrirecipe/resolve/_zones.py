@@ -10,6 +10,7 @@ length); each becomes a ``zone`` item that belongs to the field of its clause.
 from __future__ import annotations
 
 import functools
+import itertools
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -17,6 +18,7 @@ from typing import Any
 
 import yaml
 
+from agrirecipe.recipe import RelationKind
 from agrirecipe.resolve._intent import RelationIntent
 from agrirecipe.resolve._lexicon import DATA_DIR, Item, Token
 
@@ -88,16 +90,17 @@ def zone_relations(fields: Sequence[Sequence[Item]]) -> list[RelationIntent]:
     used = {_AXES[z][0] for z in zones.values() if z != "middle"}
     middle_axis = "ns" if "ns" in used else "ew"
     relations: list[RelationIntent] = []
-    for axis, kind in (("ns", "north_of"), ("ew", "west_of")):
+    axes: tuple[tuple[str, RelationKind], ...] = (("ns", "north_of"), ("ew", "west_of"))
+    for axis, kind in axes:
         rows: dict[int, list[int]] = {}
         for index, zone in zones.items():
             where = (middle_axis, 1) if zone == "middle" else _AXES[zone]
             if where[0] == axis:
                 rows.setdefault(where[1], []).append(index)
         order = sorted(rows)
-        for upper, lower in zip(order, order[1:], strict=False):
+        for upper, lower in itertools.pairwise(order):
             for subject in rows[upper]:
                 relations.append(
-                    RelationIntent(kind=kind, subject=subject, objects=(rows[lower][0],))  # type: ignore[arg-type]
+                    RelationIntent(kind=kind, subject=subject, objects=(rows[lower][0],))
                 )
     return relations
