@@ -304,7 +304,7 @@ def test_report_rows_for_the_genre_tags_geometry_failures_and_phantom_fields() -
     assert "| multi-field farm descriptions (1) | 100.0 % (1/1) |" in text
     assert "| stated geometry (1) | 0.0 % (0/1) |" in text
     assert "| scenery and purpose words (1) | 0.0 % (0/1) |" in text
-    assert "casual text" not in text and "visual cues" not in text  # no such prompts here
+    assert "| casual text (" not in text and "| visual cues (" not in text  # no such prompts
     assert "| phantom fields (recipe fields nobody asked for) | 2 (in 1 of 3 prompts) |" in text
     assert "### Phantom fields per genre" in text
     assert "| photo descriptions (1) | 2 (in 1 of 1 prompts) |" in text
@@ -337,3 +337,26 @@ def test_a_heldout_genre_set_is_named_with_its_folder() -> None:
     )
     text = render_markdown(report)
     assert "`prompts.yaml` + `prompts_heldout.yaml` + `heldout/g.yaml`" in text
+
+
+def test_a_phantom_field_target_counts_fields_nobody_asked_for() -> None:
+    from agrirecipe.evaluation import score_prompt
+    from agrirecipe.evaluation._reference import Target
+
+    photo = make_prompt(
+        id="g-photo-02",
+        type="single_generic",
+        tags=["photo"],
+        prompt="an apple orchard, a tractor by the gate",
+        fields=[{"crop": "Apple"}],
+    )
+    extra = score_prompt(photo, scene(field("Apple", "Gala"), field("Wheat", "Spelt")))
+    clean = score_prompt(photo, scene(field("Apple", "Gala")))
+    target = Target(
+        label="phantom fields", strategy="stand-in", metric="phantom_fields", tags=["photo"], max=0
+    )
+    for scores, expected, met in (((extra,), 1.0, False), ((clean,), 0.0, True)):
+        report = _report((StrategyRun(name="stand-in", scores=scores),))
+        assert report.measure(target) == expected
+        assert target.met(report.measure(target)) is met
+    assert target.bound == "≤ 0"
