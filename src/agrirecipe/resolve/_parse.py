@@ -6,24 +6,39 @@ Strategies differ in how they read words the lexicon does not know exactly
 they pass those two functions in. Everything else (decomposition, attribute
 attachment, months and hemispheres, counts, refinements, relations, and the
 errors for what cannot be honoured) is the same reading of the same words.
+
+The reading, in order (:meth:`PromptReader.read`; each pass lives in the module
+named for what it reads, its words in the data file beside it):
+
+====  ==========================================  ===============================
+step  pass                                        module (data)
+====  ==========================================  ===============================
+1     texting forms become words                  ``_casual`` (casual.yaml)
+2     words, numbers and marks                    ``_lexicon.tokenize``
+3     stated row geometry                         ``_geometry`` (geometry.yaml)
+4     zones of a farm                             ``_zones`` (zones.yaml)
+5     phrases and their senses; visual cues,      ``_lexicon`` (vocabulary.yaml,
+      scenery and purpose words                   cues.yaml, scenery.yaml, ...)
+6     typos and unseen names                      the strategy's reader
+7     each phrase's role; latitudes; sizes        ``_scan``
+8     scenery-only prompts, unknown crops         ``PromptReader._reject_*``
+9     clauses and mentions                        ``_decompose``
+10    counts, corrections, descriptions,          ``_structure``
+      shared attributes, refinements,
+      back-references
+11    head-less clauses' words to their fields    ``PromptReader._attach_loose``
+12    fields of each mention, their attributes    ``_fields``
+      (stated, else visual cues), sizes, rows
+13    relations between fields; zone order        ``_relations``, ``_zones``
+====  ==========================================  ===============================
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
-from typing import Any, cast
 
 from agrirecipe._errors import PromptError, UnknownCropError
-from agrirecipe.recipe import HealthState, Season, Stage
-from agrirecipe.resolve._attributes import (
-    health_of,
-    single_size,
-    single_value,
-    values_of,
-)
 from agrirecipe.resolve._casual import expand_casual
-from agrirecipe.resolve._cues import apply_cues
 from agrirecipe.resolve._decompose import (
     Clause,
     Mention,
@@ -31,10 +46,9 @@ from agrirecipe.resolve._decompose import (
     decompose,
     resolve_weak_varieties,
 )
-from agrirecipe.resolve._geometry import find_geometry, row_spec
+from agrirecipe.resolve._fields import ATTRIBUTE_ROLES, FieldReading, describe_intent
+from agrirecipe.resolve._geometry import find_geometry
 from agrirecipe.resolve._intent import (
-    Candidate,
-    FieldIntent,
     Hemisphere,
     ResolveContext,
     SceneIntent,
@@ -81,34 +95,9 @@ _EXAMPLES = (
 )
 #: The most fields one recipe holds (SceneRecipe.fields).
 _MAX_FIELDS = 64
-_ATTRIBUTE_ROLES = (
-    "stage",
-    "season",
-    "month",
-    "health",
-    "negation",
-    "size",
-    "geometry",
-    "cue",
-    "zone",
-    "all",
-)
 
 
-@dataclass
-class _Field:
-    """A field being assembled from its mention, its refinement and scene-wide words."""
-
-    mention: Mention
-    items: list[Item]
-    interpretations: list[tuple[str, str | None, bool]] | None
-    category: str | None
-    plot: dict[str, Any] | None
-    group: int | None = None
-    sub: Mention | None = None
-
-
-class PromptReader:
+class PromptReader(FieldReading):
     """Reads prompts for one hierarchy and knowledge base with one strategy's word readers."""
 
     def __init__(
@@ -208,7 +197,7 @@ class PromptReader:
                 TraceStep(
                     stage="decompose",
                     subject=f"field {index + 1}",
-                    detail=f"{intent.text!r} -> " + _describe(intent),
+                    detail=f"{intent.text!r} -> " + describe_intent(intent),
                 )
             )
         scenery = sorted({i.raw for i in items if "scenery" in i.data and i.role == "filler"})
@@ -383,7 +372,7 @@ class PromptReader:
             _detach_trailing_all(clause)
             if position and mentions:
                 _apply_group_words(clause.loose, coordinated(clauses, position))
-            attributes = [i for i in clause.loose if i.role in _ATTRIBUTE_ROLES]
+            attributes = [i for i in clause.loose if i.role in ATTRIBUTE_ROLES]
             if not attributes or not mentions:
                 continue
             before = [m for c in clauses[:position] for m in c.mentions]
@@ -472,194 +461,6 @@ class PromptReader:
             )
         return latitude, hemisphere, name
 
-    # --- fields ---
-
-    def _expand(self, mentions: Sequence[Mention]) -> list[_Field]:
-        fields: list[_Field] = []
-        groups: dict[int, int] = {}
-        next_group = 0
-        for mention in mentions:
-            count = max(mention.count or 1, len(mention.refinements))
-            members: list[_Field] = []
-            for index in range(count):
-                sub = (
-                    mention.refinements[index] if index < len(mention.refinements) else mention.rest
-                )
-                members.append(self._member(mention, sub))
-            if mention.distinct and count > 1:
-                if mention.distinct_crops:
-                    _check_distinct(mention, members)
-                for member in members:
-                    member.group = next_group
-                next_group += 1
-            if mention.other and fields:
-                group = next((f.group for f in fields if f.group is not None), None)
-                if group is None:
-                    group, next_group = next_group, next_group + 1
-                for member in fields + members:
-                    if member.group is None or member.group == group:
-                        member.group = group
-                    else:
-                        groups[member.group] = group
-            fields.extend(members)
-        for member in fields:
-            while member.group is not None and member.group in groups:
-                member.group = groups[member.group]
-        return fields
-
-    def _member(self, mention: Mention, sub: Mention | None) -> _Field:
-        interpretations = mention.interpretations
-        category, plot = mention.category, mention.plot
-        items = list(mention.items)
-        if sub is not None:
-            if sub.interpretations is not None:
-                crops = {c for c, _, _ in interpretations or ()}
-                narrowed = [i for i in sub.interpretations if not crops or i[0] in crops]
-                interpretations = narrowed or sub.interpretations
-            category = sub.category or category
-            if sub.plot is not None and sub.plot["narrows"]:
-                plot = sub.plot
-            items = (
-                [i for i in items if i.role not in _ATTRIBUTE_ROLES]
-                + sub.items
-                + [i for i in items if i.role in _ATTRIBUTE_ROLES]
-            )
-        return _Field(mention, items, interpretations, category, plot, sub=sub)
-
-    def _apply_scene_items(
-        self, scene_items: Sequence[Item], fields: Sequence[_Field], hemisphere: Hemisphere | None
-    ) -> Season | None:
-        if not scene_items:
-            return None
-        says_all = any(i.role == "all" for i in scene_items)
-        seasons = values_of(scene_items, ("season", "month"), hemisphere)
-        if len(set(seasons)) > 1:
-            raise PromptError(
-                "the scene is said to be in " + " and ".join(sorted(set(seasons))),
-                stage="resolve",
-                hint="a scene shows one moment: state one season (fields may differ if "
-                "each says its own)",
-            )
-        if says_all:
-            for item in scene_items:
-                if item.role not in ("season", "month", "all"):
-                    for member in fields:
-                        member.items.append(item)
-            for member in fields:
-                own = values_of(member.items, ("season", "month"), hemisphere)
-                if own and seasons and own[0] != seasons[0]:
-                    raise PromptError(
-                        f"{member.mention.text!r} is said to be in {own[0]} but all fields "
-                        f"in {seasons[0]}",
-                        stage="resolve",
-                        hint="state the season once for all fields or per field",
-                    )
-        return cast(Season, seasons[0]) if seasons else None
-
-    def _field_intent(self, member: _Field, hemisphere: Hemisphere | None) -> FieldIntent:
-        text = member.mention.text
-        for sub in member.mention.refinements or []:
-            if any(item in member.items for item in sub.items):
-                text = f"{text} ({sub.text})"
-        stage: Stage | None = single_value(member.items, ("stage",), "stage", text, hemisphere)  # type: ignore[assignment]
-        season: Season | None = single_value(
-            member.items, ("season", "month"), "season", text, hemisphere
-        )  # type: ignore[assignment]
-        health: HealthState | None = health_of(member.items, text)
-        stage, season, health = self._cues(member, text, stage, season, health)
-        sizes = [item.data["size"] for item in member.items if item.role == "size"]
-        size = single_size(sizes, text)
-        rows = row_spec(member.items, text)
-        interpretations = member.interpretations or []
-        strong = [i for i in interpretations if not i[2]] or []
-        crop = variety = None
-        if strong:
-            crop = strong[0][0]
-            varieties = {v for c, v, _ in strong if c == crop and v is not None}
-            variety = varieties.pop() if len(varieties) == 1 else None
-            self._trace_choice(member, crop, variety, strong)
-        plot = member.plot or {}
-        options: tuple[str, ...] = tuple(plot.get("options", ()))
-        category = member.category
-        if category is not None:
-            options = tuple(o for o in options if self.crop_categories.get(o) == category)
-        if crop is None and len(options) == 1:
-            crop = options[0]
-        heads = [h for h in member.mention.heads if h.role in ("head", "plot")]
-        mention_words = " ".join(h.raw for h in heads) or None
-        noun = plot.get("noun") if plot else None
-        return FieldIntent(
-            text=text,
-            mention=mention_words,
-            noun=noun,
-            category=category if crop is None else self.crop_categories.get(crop),
-            crop=crop,
-            variety=variety,
-            stage=stage,
-            season=season,
-            health=health,
-            size=size,
-            rows=rows,
-            generic=crop is None,
-            crop_options=options if crop is None else (),
-            distinct_group=member.group,
-        )
-
-    def _cues(
-        self,
-        member: _Field,
-        text: str,
-        stage: Stage | None,
-        season: Season | None,
-        health: HealthState | None,
-    ) -> tuple[Stage | None, Season | None, HealthState | None]:
-        """Fill unstated attributes from what the field looks like ("curled leaves")."""
-        strong = [i for i in member.interpretations or [] if not i[2]]
-        deciduous = (
-            self.context.knowledge.crop_file(strong[0][0]).leaf_habit == "deciduous"
-            if strong
-            else None
-        )
-        reading = apply_cues(
-            [i for i in member.items if "cue" in i.data],
-            {"stage": stage, "season": season, "health": health},
-            deciduous=deciduous,
-            field_text=text,
-        )
-        self.warnings.extend(reading.warnings)
-        for used in reading.used:
-            self.trace.append(TraceStep(stage="normalise", subject=text, detail=f"cue {used}"))
-        values = reading.values
-        return (
-            cast(Stage | None, stage or values.get("stage")),
-            cast(Season | None, season or values.get("season")),
-            cast(HealthState | None, health or values.get("health")),
-        )
-
-    def _trace_choice(
-        self,
-        member: _Field,
-        crop: str,
-        variety: str | None,
-        strong: Sequence[tuple[str, str | None, bool]],
-    ) -> None:
-        candidates: list[Candidate] = []
-        for head in member.mention.heads:
-            score = head.fuzzy_score if head.fuzzy_score is not None else 100.0
-            source = head.data.get("source", "fuzzy" if head.fuzzy_score is not None else "lexicon")
-            for c, v, _ in strong:
-                value = f"{c}/{v}" if v else c
-                if all(x.value != value for x in candidates):
-                    candidates.append(Candidate(value=value, score=score, source=source))
-        self.trace.append(
-            TraceStep(
-                stage="normalise",
-                subject=member.mention.text,
-                detail=f"crop {crop}" + (f", variety {variety}" if variety else ""),
-                candidates=tuple(candidates),
-            )
-        )
-
 
 # --- helpers ---
 
@@ -691,7 +492,7 @@ def _detach_trailing_all(clause: Clause) -> None:
     if marker is None:
         return
     moved = [i for i in mention.items if i.start >= marker.start and i not in mention.heads]
-    if not any(i.role in _ATTRIBUTE_ROLES for i in moved if i is not marker):
+    if not any(i.role in ATTRIBUTE_ROLES for i in moved if i is not marker):
         return
     mention.items = [i for i in mention.items if i not in moved]
     clause.loose = [*clause.loose, *moved]
@@ -720,30 +521,6 @@ def _apply_group_words(loose: Sequence[Item], group: Sequence[Mention]) -> None:
                 mention.distinct_crops = not mention.has_crop
 
 
-def _check_distinct(mention: Mention, members: Sequence[_Field]) -> None:
-    """'three different fruit crops, all of them apples': 'different' crops named the same.
-
-    Two members are the same when both are fixed to one crop and their varieties
-    do not tell them apart ("two different fruits: Gala and Fuji" are different).
-    """
-    fixed: dict[str, list[str | None]] = {}
-    for member in members:
-        strong = {(c, v) for c, v, weak in member.interpretations or () if not weak}
-        crops = {c for c, _ in strong}
-        if len(crops) == 1:
-            named = {v for _, v in strong}
-            fixed.setdefault(crops.pop(), []).append(named.pop() if len(named) == 1 else None)
-    for crop, varieties in fixed.items():
-        if len(varieties) > 1 and (None in varieties or len(set(varieties)) < len(varieties)):
-            raise PromptError(
-                f"{mention.text!r} asks for {len(members)} different crops, but the prompt "
-                f"makes {len(varieties)} of them {crop}",
-                stage="resolve",
-                hint="name a different crop for each field, or drop 'different' to have "
-                f"several {crop.lower()} fields",
-            )
-
-
 def _word_before(items: Sequence[Item], index: int | None) -> Item | None:
     if index is None or index == 0:
         return None
@@ -764,24 +541,3 @@ def _by_spelling(word: str, names: Sequence[str], limit: int = 3) -> tuple[str, 
 
     matches = process.extract(word, list(names), scorer=fuzz.WRatio, limit=limit)
     return tuple(str(m[0]) for m in matches)
-
-
-def _describe(intent: FieldIntent) -> str:
-    parts = [intent.variety or "", intent.crop or f"any {intent.category or 'crop'}"]
-    words = " ".join(p for p in parts if p)
-    stated = [
-        f"{name}={value}"
-        for name, value in (
-            ("stage", intent.stage),
-            ("season", intent.season),
-            ("health", intent.health),
-        )
-        if value is not None
-    ]
-    if intent.size is not None:
-        stated.append(f"size={intent.size.text}")
-    if intent.crop_options:
-        stated.append("options=" + "/".join(intent.crop_options))
-    if intent.distinct_group is not None:
-        stated.append(f"distinct group {intent.distinct_group}")
-    return words + (f" ({', '.join(stated)})" if stated else "")
