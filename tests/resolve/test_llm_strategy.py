@@ -365,3 +365,19 @@ def test_same_prompt_same_intent_across_processes(
         timeout=600,
     )
     assert json.loads(result.stdout.strip().splitlines()[-1]) == here
+
+
+def test_stated_geometry_and_texting_forms_reach_the_llm_strategy() -> None:
+    """Issue 8: the model never reads '10 rows' as ten fields; the rows go to their field."""
+    from agrirecipe import generate
+
+    (maize,) = generate("10 rows of maize, 80 m long, 76 cm apart", resolver="llm").recipe.fields
+    assert maize.row_count == 10 and maize.agronomy.row_spacing_m == 0.76
+    potato, wheat = generate(
+        "a potato plot, 38-inch rows next to 6 rows of wheat", resolver="llm"
+    ).recipe.fields
+    assert potato.agronomy.row_spacing_m == 0.9652 and wheat.row_count == 6
+    crops = [
+        f.crop for f in generate("apples nxt 2 pears b4 harvest", resolver="llm").recipe.fields
+    ]
+    assert crops == ["Apple", "Pear"]

@@ -22,9 +22,9 @@ import yaml
 
 from agrirecipe._errors import PromptError
 from agrirecipe.resolve._intent import RowSpec
-from agrirecipe.resolve._lexicon import DATA_DIR, Token, vocabulary
+from agrirecipe.resolve._lexicon import DATA_DIR, Token, tokenize, vocabulary
 
-__all__ = ["GeometryMatch", "find_geometry", "row_spec"]
+__all__ = ["GeometryMatch", "find_geometry", "merge_geometry", "row_spec", "strip_geometry"]
 
 # Keys whose value is a whole number.
 _COUNTS = frozenset({"rows", "beds", "rows_per_bed", "plant_count", "plants_per_row"})
@@ -252,12 +252,14 @@ def row_spec(items: Sequence[Any], text: str) -> RowSpec | None:
 
     A key stated twice with different values is a :class:`~agrirecipe.PromptError`.
     """
+    return merge_geometry([i.data["geometry"] for i in items if i.role == "geometry"], text)
+
+
+def merge_geometry(matches: Sequence[GeometryMatch], text: str) -> RowSpec | None:
+    """One field's geometry matches as a :class:`RowSpec` (None when there are none)."""
     values: dict[str, float] = {}
     words: list[str] = []
-    for item in items:
-        if item.role != "geometry":
-            continue
-        match: GeometryMatch = item.data["geometry"]
+    for match in matches:
         previous = values.get(match.key)
         if previous is not None and not math.isclose(previous, match.value, rel_tol=1e-9):
             raise PromptError(
@@ -274,3 +276,25 @@ def row_spec(items: Sequence[Any], text: str) -> RowSpec | None:
     plants_per_row = counts.pop("plants_per_row", None)
     lengths = {k: v for k, v in values.items() if k not in _COUNTS}
     return RowSpec(**counts, **lengths, plants_per_row=plants_per_row, text="; ".join(words))
+
+
+def strip_geometry(request: str) -> tuple[str, list[tuple[int, GeometryMatch]]]:
+    """The request without its stated geometry, and where each match stood in it.
+
+    For readers that cannot hold a geometry item (the llm strategy): "10 rows of
+    maize, 76 cm apart" is read as "of maize," (no count of ten fields), and the
+    matches are given back to the field named nearest before them.
+    """
+    tokens = tokenize(request)
+    kept: list[str] = []
+    removed: list[tuple[int, GeometryMatch]] = []
+    cursor = 0
+    length = 0
+    for match in find_geometry(tokens):
+        start, end = tokens[match.first].start, tokens[match.last - 1].end
+        kept.append(request[cursor:start])
+        length += start - cursor
+        removed.append((length, match))
+        cursor = end
+    kept.append(request[cursor:])
+    return "".join(kept), removed

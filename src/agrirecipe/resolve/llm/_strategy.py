@@ -11,6 +11,8 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from agrirecipe._errors import ConfigurationError, PromptError
+from agrirecipe.resolve._casual import expand_casual
+from agrirecipe.resolve._geometry import GeometryMatch, merge_geometry, strip_geometry
 from agrirecipe.resolve._grammar import (
     ANY_PREFIX,
     NONE,
@@ -42,6 +44,7 @@ from agrirecipe.resolve.llm._parts import (
     _parse_parts,
     _Part,
     _repair_parts,
+    _word_spans,
 )
 
 if TYPE_CHECKING:
@@ -175,7 +178,11 @@ class LlmResolver(Resolver):
         """What ``prompt`` asks for, read by the language model under grammars."""
         from agrirecipe.resolve._lexicon import build_lexicon
 
-        request = " ".join(prompt.split())
+        # Texting forms are words; stated row geometry is read by its own reader and
+        # given back to the field named before it (the model never sees "10 rows" as
+        # a count of fields).
+        stripped, geometry = strip_geometry(" ".join(expand_casual(prompt).split()))
+        request = " ".join(stripped.split())
         words = prompt_words(request)
         if not words:
             raise PromptError(
@@ -273,6 +280,7 @@ class LlmResolver(Resolver):
                     hint="ask for fewer fields",
                 )
 
+        fields = _attach_geometry(fields, parts, first_field, stripped, request, geometry)
         relations: list[RelationIntent] = []
         if len(parts) > 1:
             kinds = list(dict.fromkeys(scene.relations)) if self.narrow else None
@@ -410,3 +418,30 @@ class LlmResolver(Resolver):
         named = [v for c, v in evidence.varieties if c == crop]
         strong = [v for v in named if (crop, v) not in evidence.weak_varieties]
         return strong if strong else [*named, NONE]
+
+
+def _attach_geometry(
+    fields: list[FieldIntent],
+    parts: Sequence[_Part],
+    first_field: Sequence[int],
+    stripped: str,
+    request: str,
+    geometry: Sequence[tuple[int, GeometryMatch]],
+) -> list[FieldIntent]:
+    """Give each stated geometry to the fields of the part named nearest before it."""
+    if not geometry or not parts:
+        return fields
+    spans = _word_spans(request)
+    starts = [spans[part.first][0] for part in parts]
+    by_part: dict[int, list[GeometryMatch]] = {}
+    for position, match in geometry:
+        at = len(" ".join(stripped[:position].split()))  # the same place in the request
+        before = [index for index, start in enumerate(starts) if start <= at]
+        by_part.setdefault(before[-1] if before else 0, []).append(match)
+    result = list(fields)
+    ends = [*first_field[1:], len(fields)]
+    for index, matches in by_part.items():
+        spec = merge_geometry(matches, parts[index].raw)
+        for number in range(first_field[index], ends[index]):
+            result[number] = result[number].model_copy(update={"rows": spec})
+    return result
