@@ -120,3 +120,27 @@ def test_rows_closer_than_the_plant_is_wide_are_refused() -> None:
 def test_density_and_spacing_that_disagree_are_refused() -> None:
     with pytest.raises(PromptError, match="plants/ha"):
         generate("maize rows 75 cm apart, a plant every 15 cm, 50,000 plants/ha", resolver="rules")
+
+
+@pytest.mark.parametrize(
+    ("prompt", "expected"),
+    [
+        (
+            "5 rows x 30 trees of Gala, 3.5 m x 1 m spacing",
+            {"rows": 5, "plants_per_row": 30, "row_spacing_m": 3.5, "in_row_spacing_m": 1.0},
+        ),
+        ("planted at 3 x 1.5 m", {"row_spacing_m": 3.0, "in_row_spacing_m": 1.5}),
+        ("8 rows of cabbage, 40 m each", {"rows": 8, "row_length_m": 40}),
+        ("a 100 m long row of tomatoes", {"row_length_m": 100, "rows": 1}),
+        ("one row of lettuce", {"rows": 1}),
+        ("three plots in a row of maize", {}),
+    ],
+)
+def test_grids_and_single_rows_are_read(prompt: str, expected: dict[str, float]) -> None:
+    assert read(prompt) == pytest.approx(expected)
+
+
+def test_a_grid_of_trees_is_planted_exactly() -> None:
+    scene = generate("orchard test site: 5 rows x 30 trees of Gala, 3.5 m x 1 m", resolver="rules")
+    (spec,) = scene.recipe.fields
+    assert (spec.row_count, spec.nominal_plant_count) == (5, 150)

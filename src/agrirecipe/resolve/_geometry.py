@@ -15,7 +15,7 @@ import functools
 import math
 import re
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import yaml
@@ -54,6 +54,14 @@ class _Pattern:
     max_m: float | None
     min_n: float | None
     near_rows: bool
+    #: A second value in the same words ("5 rows x 30 trees", "3.5 x 1 m spacing"),
+    #: read from the groups n2 / unit2.
+    key2: str | None = None
+    #: The first number borrows the second's unit ("3.5 x 1 m").
+    same_unit: bool = False
+    #: A value the words stand for without a number ("a row of" is one row).
+    constant: float | None = None
+    constant2: float | None = None
 
 
 def _alternatives(words: Iterable[str]) -> str:
@@ -87,7 +95,10 @@ def _tables() -> _Tables:
     areas: dict[str, float] = {str(k): float(v) for k, v in data["density_units"].items()}
     directions: dict[str, float] = {str(k): float(v) for k, v in words["directions"].items()}
     number = rf"(?P<n>\d+(?:\.\d+)?|{_alternatives(number_words)})"
+    number2 = number.replace("?P<n>", "?P<n2>")
     fill = {
+        "{N2}": number2,
+        "{LEN2}": rf"{number2} ?(?P<unit2>{_alternatives(units)})(?! 2\b)",
         "{N}": number,
         "{LEN}": rf"{number} ?(?P<unit>{_alternatives(units)})(?! 2\b)",
         "{ROWS}": _alternatives(words["rows"]),
@@ -114,6 +125,10 @@ def _tables() -> _Tables:
                 max_m=entry.get("max_m"),
                 min_n=entry.get("min_n"),
                 near_rows=bool(entry.get("near_rows", False)),
+                key2=entry.get("key2"),
+                same_unit=bool(entry.get("same_unit", False)),
+                constant=entry.get("value"),
+                constant2=entry.get("value2"),
             )
         )
     return _Tables(
@@ -170,9 +185,25 @@ def find_geometry(tokens: Sequence[Token]) -> list[GeometryMatch]:
                 abs(position - first) <= _NEAR_ROWS for position in row_positions
             ):
                 continue
-            value = _value(pattern, match, tables)
+            groups = match.groupdict()
+            if pattern.same_unit:
+                groups["unit"] = groups.get("unit2")
+            value = _value(pattern, groups, tables)
             if value is None:
                 continue
+            second: float | None = None
+            if pattern.key2 is not None:
+                second = (
+                    pattern.constant2
+                    if pattern.constant2 is not None
+                    else _value(
+                        replace(pattern, key=pattern.key2, min_m=None, max_m=None, min_n=None),
+                        {"n": groups["n2"], "unit": groups.get("unit2")},
+                        tables,
+                    )
+                )
+                if second is None:
+                    continue
             raw = " ".join(t.raw for t in tokens[first:last])
             if (
                 first
@@ -182,6 +213,9 @@ def find_geometry(tokens: Sequence[Token]) -> list[GeometryMatch]:
                 value, raw = -value, tokens[first - 1].raw + raw  # "-3 rows"
             _check(pattern.key, value, raw)
             found.append(GeometryMatch(pattern.key, value, first, last, raw))
+            if pattern.key2 is not None and second is not None:
+                _check(pattern.key2, second, raw)
+                found.append(GeometryMatch(pattern.key2, second, first, last, raw))
             for index in range(first, last):
                 claimed[index] = True
     found.sort(key=lambda m: m.first)
@@ -194,8 +228,9 @@ def _number(text: str, number_words: dict[str, float]) -> float:
     return float(text)
 
 
-def _value(pattern: _Pattern, match: re.Match[str], tables: _Tables) -> float | None:
-    groups = match.groupdict()
+def _value(pattern: _Pattern, groups: dict[str, str | None], tables: _Tables) -> float | None:
+    if pattern.constant is not None:
+        return float(pattern.constant)
     if pattern.key == "row_bearing_deg" and groups.get("a") is not None:
         a = tables.directions[str(groups["a"])]
         b = tables.directions[str(groups["b"])]
@@ -219,7 +254,7 @@ def _value(pattern: _Pattern, match: re.Match[str], tables: _Tables) -> float | 
     if pattern.invert:
         if value <= 0 or not math.isfinite(value):
             raise PromptError(
-                f"{match.group(0)!r} is not a number of plants a row can hold",
+                f"{groups['n']!r} is not a number of plants a row can hold",
                 stage="resolve",
                 hint="say how many plants per metre, e.g. '5 plants per metre'",
             )
