@@ -205,3 +205,36 @@ def test_one_zone_word_alone_is_not_a_zoning(prompt: str) -> None:
 
 def test_a_category_that_no_plot_option_belongs_to_is_its_own_field() -> None:
     assert len(fields("an orchard, vegetables")) == 2
+
+
+# --- from the blind casual set g1 -----------------------------------------------------------------
+
+
+def test_a_negated_crop_is_not_a_field() -> None:
+    with pytest.raises(PromptError):
+        generate("just a red tractor parked by a barn at sunset, no crops or anything")
+    assert [f[0] for f in fields("no apples, just pears")] == ["Pear"]
+
+
+def test_same_size_copies_the_size_of_the_field_before() -> None:
+    recipe = generate(
+        "100 by 200 ft plot of butterhead lettuce & same size of romaine right nxt to it"
+    ).recipe
+    assert recipe.fields[0].geometry.size_m == recipe.fields[1].geometry.size_m
+
+
+def test_a_second_field_named_by_place_is_not_one_more() -> None:
+    assert len(fields("bell peppers red & ripe and some chillies in a 2nd field, thx")) == 2
+
+
+def test_a_bunch_of_fields_is_a_few() -> None:
+    assert len(fields("a bunch of fruit fields, 3 or 4 idk")) == 3
+
+
+def test_inches_written_in_and_rows_counted_before_their_length() -> None:
+    corn, _ = generate(
+        "12 rows of sweetcorn, rows 30in apart & 80m long, nxt 2 a lil patch of jalapenos"
+    ).recipe.fields
+    assert corn.agronomy.row_spacing_m == pytest.approx(0.762) and corn.row_count == 12
+    (maize,) = generate("maize, 80k plants/ha, 75cm rows, 10 rows 150m long").recipe.fields
+    assert maize.row_count == 10 and maize.plants_per_ha == pytest.approx(80_000)

@@ -42,6 +42,7 @@ _PRE_HEAD = (
     "geometry",
     "cue",
     "zone",
+    "same_size",
     "filler",
     "unknown",
     "reference",

@@ -41,6 +41,7 @@ ATTRIBUTE_ROLES = (
     "geometry",
     "cue",
     "zone",
+    "same_size",
     "all",
 )
 

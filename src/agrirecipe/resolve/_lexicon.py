@@ -72,6 +72,7 @@ SenseKind = Literal[
     "non_agricultural",
     "geometry",
     "zone",
+    "same_size",
     "cue",
     "scenery",
     "filler",
@@ -385,6 +386,7 @@ _PLAIN_LISTS: dict[str, SenseKind] = {
     "distinct_words": "distinct",
     "other_words": "other",
     "of_words": "of",
+    "same_size_words": "same_size",
 }
 # ...phrase -> value mappings...
 _VALUED_PHRASES: dict[str, tuple[SenseKind, Callable[[Any], Any]]] = {

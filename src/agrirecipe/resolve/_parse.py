@@ -71,6 +71,7 @@ from agrirecipe.resolve._structure import (
     apply_plural_counts,
     apply_refinements,
     dissolve_plant_parts,
+    drop_negated,
     merge_coreferences,
     promote_weak_varieties,
     raise_conflicts,
@@ -152,6 +153,10 @@ class PromptReader(FieldReading):
                 TraceStep(stage="decompose", subject=dropped, detail="replaced by a correction")
             )
         raise_conflicts(clauses)
+        for negated in drop_negated(clauses):
+            self.trace.append(
+                TraceStep(stage="decompose", subject=negated, detail="negated: not a field")
+            )
         for dissolved in dissolve_plant_parts(clauses):
             self.trace.append(
                 TraceStep(
@@ -192,6 +197,11 @@ class PromptReader(FieldReading):
         ]
         scene_season = self._apply_scene_items(scene_items, fields, hemisphere)
         intents = [self._field_intent(f, hemisphere) for f in fields]
+        for index in range(1, len(intents)):  # "... & same size of romaine"
+            if intents[index].size is None and any(
+                i.role == "same_size" for i in fields[index].items
+            ):
+                intents[index] = intents[index].model_copy(update={"size": intents[index - 1].size})
         for index, intent in enumerate(intents):
             self.trace.append(
                 TraceStep(

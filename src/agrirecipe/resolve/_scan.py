@@ -52,6 +52,7 @@ _ROLE_ORDER = (
     "length_unit",
     "dimension_joiner",
     "side",
+    "same_size",
     "scenery",
     "filler",
 )

@@ -27,6 +27,7 @@ __all__ = [
     "apply_plural_counts",
     "apply_refinements",
     "dissolve_plant_parts",
+    "drop_negated",
     "merge_coreferences",
     "promote_weak_varieties",
     "raise_conflicts",
@@ -438,6 +439,29 @@ def raise_conflicts(clauses: Sequence[Clause]) -> None:
         for mention in clause.mentions:
             if mention.conflict is not None:
                 raise mention.conflict
+
+
+_ANY = frozenset({"any", "a", "an", "the", "some"})
+
+
+def drop_negated(clauses: Sequence[Clause]) -> list[str]:
+    """'no crops or anything', 'no apples, just pears': a negated mention asks for no field.
+
+    A mention whose head follows a negation word ("no", "not", "without", with
+    at most an article or "any" between) is removed from its clause. Returns
+    the texts dropped.
+    """
+    dropped: list[str] = []
+    for clause in clauses:
+        for mention in list(clause.mentions):
+            head = min(mention.heads, key=lambda h: h.start)
+            before = [i for i in clause.items if i.end <= head.start]
+            while before and before[-1].norm in _ANY:
+                before.pop()
+            if before and before[-1].role == "negation":
+                clause.mentions.remove(mention)
+                dropped.append(mention.text)
+    return dropped
 
 
 def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
