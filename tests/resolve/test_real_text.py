@@ -238,3 +238,15 @@ def test_inches_written_in_and_rows_counted_before_their_length() -> None:
     assert corn.agronomy.row_spacing_m == pytest.approx(0.762) and corn.row_count == 12
     (maize,) = generate("maize, 80k plants/ha, 75cm rows, 10 rows 150m long").recipe.fields
     assert maize.row_count == 10 and maize.plants_per_ha == pytest.approx(80_000)
+
+
+@pytest.mark.parametrize(
+    ("prompt", "categories"),
+    [
+        ("6 fields in total, half vegetables half fruit", ["Vegetables"] * 3 + ["Fruits"] * 3),
+        ("4 fields, a mix of fruit and vegetables", ["Fruits"] * 2 + ["Vegetables"] * 2),
+    ],
+)
+def test_categories_after_counted_fields_share_them(prompt: str, categories: list[str]) -> None:
+    recipe = generate(prompt).recipe
+    assert [f.category for f in recipe.fields] == categories

@@ -75,6 +75,7 @@ from agrirecipe.resolve._structure import (
     merge_coreferences,
     promote_weak_varieties,
     raise_conflicts,
+    share_counted_fields,
     share_leading_attributes,
     share_trailing_attributes,
 )
@@ -166,6 +167,7 @@ class PromptReader(FieldReading):
         share_leading_attributes(clauses)
         share_trailing_attributes(clauses)
         mentions = apply_refinements(clauses, self.crop_categories)
+        mentions = share_counted_fields(mentions)
         mentions = merge_coreferences(clauses, mentions, builder)
         apply_each_side(clauses)
         scene_items = self._attach_loose(clauses, mentions)

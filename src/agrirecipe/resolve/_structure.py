@@ -31,6 +31,7 @@ __all__ = [
     "merge_coreferences",
     "promote_weak_varieties",
     "raise_conflicts",
+    "share_counted_fields",
     "share_leading_attributes",
     "share_trailing_attributes",
 ]
@@ -444,6 +445,59 @@ def raise_conflicts(clauses: Sequence[Clause]) -> None:
 _ANY = frozenset({"any", "a", "an", "the", "some"})
 
 
+def share_counted_fields(mentions: Sequence[Mention]) -> list[Mention]:
+    """'6 fields in total, half vegetables half fruit', '4 fields, a mix of fruit and
+    vegetables': categories named after a counted generic mention say what its fields
+    are; they are not more fields.
+
+    The counted mention's fields are shared among the categories that follow it
+    (bare categories, no count, crop or plot of their own): by their fractions
+    ("half ... half ...") when those add up, evenly otherwise.
+    """
+    result: list[Mention] = []
+    index = 0
+    while index < len(mentions):
+        mention = mentions[index]
+        index += 1
+        result.append(mention)
+        if (
+            not mention.count
+            or mention.count < 2
+            or mention.has_crop
+            or mention.category is not None
+            or mention.refinements
+            or (mention.plot is not None and mention.plot["options"])
+        ):
+            continue
+        shares: list[Mention] = []
+        while index + len(shares) < len(mentions):
+            candidate = mentions[index + len(shares)]
+            if (
+                candidate.category is None
+                or candidate.has_crop
+                or candidate.count is not None
+                or candidate.plot is not None
+                or candidate.refinements
+            ):
+                break
+            shares.append(candidate)
+        if not 2 <= len(shares) <= mention.count:
+            continue
+        fractions = [
+            sum(float(i.data.get("value", 0)) for i in share.items if i.role == "fraction")
+            for share in shares
+        ]
+        counts = [round(mention.count * f) for f in fractions]
+        if sum(counts) != mention.count or 0 in counts:
+            base, extra = divmod(mention.count, len(shares))
+            counts = [base + (1 if k < extra else 0) for k in range(len(shares))]
+        mention.refinements = [s for s, n in zip(shares, counts, strict=True) for _ in range(n)]
+        for share in shares:
+            share.is_refinement = True
+        index += len(shares)
+    return result
+
+
 def drop_negated(clauses: Sequence[Clause]) -> list[str]:
     """'no crops or anything', 'no apples, just pears': a negated mention asks for no field.
 
@@ -487,12 +541,19 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
             continue
         mention = clause.mentions[0]
         definite = _definite_before_head(clause, mention)  # "in the fruit", "the vines"
+        following = clauses[position + 1] if position + 1 < len(clauses) else None
         listed = (
             clause.link is not None
             and clause.link.role == "conjunction"
             and bool(clauses[position - 1].mentions)
+        ) or (  # "a mix of fruit and vegetables": the first member of a list
+            following is not None
+            and following.link is not None
+            and following.link.role == "conjunction"
+            and bool(following.mentions)
         )
-        fraction = any(i.role == "fraction" for i in mention.items)  # "half the vines"
+        # "half the vines" (not "half fruit", a share of the fields)
+        fraction = definite and any(i.role == "fraction" for i in mention.items)
         own_size = any(i.role in ("size", "geometry") for i in mention.items)
         described = any(
             i.role in ("stage", "health", "cue", "season", "month") or "cue" in i.data
