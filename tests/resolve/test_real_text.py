@@ -250,3 +250,19 @@ def test_inches_written_in_and_rows_counted_before_their_length() -> None:
 def test_categories_after_counted_fields_share_them(prompt: str, categories: list[str]) -> None:
     recipe = generate(prompt).recipe
     assert [f.category for f in recipe.fields] == categories
+
+
+def test_one_plant_described_is_not_a_field() -> None:
+    result = fields(
+        "Close-up of a tomato truss, fruit still green, one plant has wilted leaves, "
+        "greenhouse in the background."
+    )
+    assert [f[0] for f in result] == ["Tomato"] and result[0][3] == "Ill"
+
+
+def test_a_line_of_trees_in_the_scenery_is_not_a_row() -> None:
+    recipe = generate(
+        "Looking across a field of Bintje potatoes in flower, rows running away from me "
+        "towards a line of poplars."
+    ).recipe
+    assert recipe.fields[0].row_count > 1

@@ -435,7 +435,13 @@ class PromptReader(FieldReading):
             geometry = [i for i in others if i.role == "geometry"]
             others = [i for i in others if i.role != "geometry"]
             for target in targets:
-                target.items.extend(seasons + others)
+                # "ripe wheat and maize, still green": words shared by a list go to the
+                # members that do not state that attribute themselves.
+                own = {i.role for i in target.items if i.role in ("stage", "health")}
+                shared = seasons + others
+                if len(targets) > 1:
+                    shared = [i for i in shared if i.role not in own]
+                target.items.extend(shared)
             if geometry and targets:
                 targets[-1].items.extend(geometry)
         return scene

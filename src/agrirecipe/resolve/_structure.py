@@ -559,9 +559,11 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
             i.role in ("stage", "health", "cue", "season", "month") or "cue" in i.data
             for i in mention.items
         )
+        # "one plant has wilted leaves": one plant described, not a field of one
+        one_described = mention.count == 1 and described
         if (
             not all(h.norm in words for h in mention.heads)
-            or (mention.count is not None and not (definite or fraction))
+            or (mention.count is not None and not (definite or fraction or one_described))
             or (mention.quantity is not None and not definite)  # "a lot of the fruit"
             or mention.other
             or own_size
