@@ -124,7 +124,7 @@ def test_eval_selects_the_new_genre_and_geometry_tags(
     assert "2 prompts (categories engineering, photo)" in out
     assert "`genres.yaml`" in out
     assert "| engineering requests (1) |" in out and "| stated geometry (1) |" in out
-    assert "| photo descriptions (1) |" in out and "casual text" not in out
+    assert "| photo descriptions (1) |" in out and "| casual text (" not in out
     assert "| phantom fields (recipe fields nobody asked for) |" in out
     assert "### Phantom fields per genre" in out
     # 999 rows cannot be what a 30 m wide field lays out: a geometry failure.
