@@ -266,3 +266,11 @@ def test_a_line_of_trees_in_the_scenery_is_not_a_row() -> None:
         "towards a line of poplars."
     ).recipe
     assert recipe.fields[0].row_count > 1
+
+
+def test_a_members_own_closing_words_replace_what_a_list_lent_it() -> None:
+    wheat, maize = fields(
+        "Two fields in the photo: ripe wheat in front and maize behind it, still green."
+    )
+    assert wheat[1] == "Maturation" and maize[1] != "Maturation"
+    assert [f[1] for f in fields("harvest-ready maize and wheat")] == ["Maturation"] * 2

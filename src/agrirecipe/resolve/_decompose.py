@@ -77,6 +77,9 @@ class Mention:
     continued: bool = False
     clause: int = 0
     refinements: list[Mention] = field(default_factory=list)
+    #: Attribute words another mention of a list lent it ("ripe wheat and maize"):
+    #: its own words said later replace them ("..., maize still green").
+    borrowed: list[Item] = field(default_factory=list)
     rest: Mention | None = None
     is_refinement: bool = False
 
@@ -202,8 +205,12 @@ class MentionBuilder:
         if categories and not interpretations:
             if mention.category is not None and mention.category not in categories:
                 return False
-            if mention.plot is not None and mention.plot["options"] and not any(
-                self.crop_categories.get(c) in categories for c in mention.plot["options"]
+            if (
+                mention.plot is not None
+                and mention.plot["options"]
+                and not any(
+                    self.crop_categories.get(c) in categories for c in mention.plot["options"]
+                )
             ):
                 return False  # "an orchard, vegetables": two fields, not vegetable trees
             if mention.has_crop:

@@ -437,10 +437,19 @@ class PromptReader(FieldReading):
             for target in targets:
                 # "ripe wheat and maize, still green": words shared by a list go to the
                 # members that do not state that attribute themselves.
-                own = {i.role for i in target.items if i.role in ("stage", "health")}
+                own = {
+                    i.role
+                    for i in target.items
+                    if i.role in ("stage", "health") and i not in target.borrowed
+                }
                 shared = seasons + others
                 if len(targets) > 1:
                     shared = [i for i in shared if i.role not in own]
+                said = {i.role for i in shared}
+                # Its own words replace what a list lent it ("ripe wheat and maize, ...").
+                target.items[:] = [
+                    i for i in target.items if not (i in target.borrowed and i.role in said)
+                ]
                 target.items.extend(shared)
             if geometry and targets:
                 targets[-1].items.extend(geometry)

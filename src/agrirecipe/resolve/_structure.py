@@ -391,7 +391,9 @@ def share_leading_attributes(clauses: Sequence[Clause]) -> None:
             if not following.items or following.items[0] is not mention.heads[0]:
                 break
             own = {i.role for i in mention.items}
-            mention.items.extend(i for i in leading if i.role not in own)
+            lent = [i for i in leading if i.role not in own]
+            mention.items.extend(lent)
+            mention.borrowed.extend(lent)
 
 
 def share_trailing_attributes(clauses: Sequence[Clause]) -> None:
