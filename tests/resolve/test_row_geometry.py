@@ -40,6 +40,34 @@ def read(prompt: str) -> dict[str, float]:
         ),
         ("200 Gala apple trees", {"plant_count": 200}),
         ("12 raised beds", {"beds": 12}),
+        # measures written after another one, the way engineers list them
+        ("rows 45 cm apart, running east-west", {"row_spacing_m": 0.45, "row_bearing_deg": 90}),
+        ("rows north–south", {"row_bearing_deg": 0}),
+        ("rows NNE-SSW", {"row_bearing_deg": 22.5}),
+        ("rows 100 m long at 67.5°", {"row_length_m": 100, "row_bearing_deg": 67.5}),
+        ("rows 20 degrees from north", {"row_bearing_deg": 20}),
+        ("20 rows at 5 m", {"rows": 20, "row_spacing_m": 5}),
+        ("8 rows each at 76 cm", {"rows": 8, "row_spacing_m": 0.76}),
+        ("12 rows spaced 30 cm", {"rows": 12, "row_spacing_m": 0.3}),
+        ("onion rows 30 cm", {"row_spacing_m": 0.3}),
+        ("wheat drilled at 15 cm", {"row_spacing_m": 0.15}),
+        ("8 in between seeds", {"in_row_spacing_m": 0.2032}),
+        ("one plant per 10 cm", {"in_row_spacing_m": 0.1}),
+        ("seed tubers every 33 cm", {"in_row_spacing_m": 0.33}),
+        ("6 beds on 1.52 m centres", {"beds": 6, "bed_width_m": 1.52}),
+        ("15 beds of 1.4 m", {"beds": 15, "bed_width_m": 1.4}),
+        ("2 rows per 75 cm ridge", {"rows_per_bed": 2, "bed_width_m": 0.75}),
+        ("on 3 m square spacing", {"row_spacing_m": 3, "in_row_spacing_m": 3}),
+        ("a 3 m x 3 m square grid", {"row_spacing_m": 3, "in_row_spacing_m": 3}),
+        (
+            "400 plants at 2 m by 2 m",
+            {"plant_count": 400, "row_spacing_m": 2, "in_row_spacing_m": 2},
+        ),
+        ("100 Ladyfinger plants", {"plant_count": 100}),
+        (
+            "40 rows at 2.5 m with vines 1 m apart",
+            {"rows": 40, "row_spacing_m": 2.5, "in_row_spacing_m": 1},
+        ),
     ],
 )
 def test_stated_geometry_is_read(prompt: str, expected: dict[str, float]) -> None:
@@ -58,6 +86,7 @@ def test_stated_geometry_is_read(prompt: str, expected: dict[str, float]) -> Non
         "three fields of maize",
         "a tree",
         "apple trees in bloom",
+        "two bed systems of strawberries",
     ],
 )
 def test_sizes_and_counts_of_fields_are_not_geometry(prompt: str) -> None:
@@ -144,3 +173,21 @@ def test_a_grid_of_trees_is_planted_exactly() -> None:
     scene = generate("orchard test site: 5 rows x 30 trees of Gala, 3.5 m x 1 m", resolver="rules")
     (spec,) = scene.recipe.fields
     assert (spec.row_count, spec.nominal_plant_count) == (5, 150)
+
+
+def test_a_row_direction_in_degrees_is_not_a_latitude() -> None:
+    """It once raised "latitude 160 is not on Earth"."""
+    recipe = generate(
+        "vines in 2.5 m rows, rows at 160 degrees from north", resolver="hybrid"
+    ).recipe
+    assert recipe.fields[0].row_bearing_deg == pytest.approx(160)
+
+
+def test_a_measure_is_never_a_count_of_fields() -> None:
+    """ "drilled at 15 cm" and "20 ridges at 75 cm centres" once made 15 and 20 fields."""
+    for prompt in (
+        "maize in 30-inch rows, and wheat drilled at 15 cm just north of the maize",
+        "Chantenay carrots on 20 ridges at 75 cm centres, two rows per ridge",
+        "14 rows at 1.5 m of plum tomatoes with 45 cm in-row",
+    ):
+        assert len(generate(prompt, resolver="hybrid").recipe.fields) <= 2, prompt

@@ -62,6 +62,10 @@ class _Pattern:
     #: A value the words stand for without a number ("a row of" is one row).
     constant: float | None = None
     constant2: float | None = None
+    #: The longest sensible second length ("6 beds on 1.52 m centres": a bed is at most 3 m).
+    max2_m: float | None = None
+    #: The second value is the first ("3 m square spacing": 3 m both ways).
+    same_value: bool = False
 
 
 def _alternatives(words: Iterable[str]) -> str:
@@ -129,6 +133,8 @@ def _tables() -> _Tables:
                 same_unit=bool(entry.get("same_unit", False)),
                 constant=entry.get("value"),
                 constant2=entry.get("value2"),
+                max2_m=entry.get("max2_m"),
+                same_value=bool(entry.get("same_value", False)),
             )
         )
     return _Tables(
@@ -193,15 +199,24 @@ def find_geometry(tokens: Sequence[Token]) -> list[GeometryMatch]:
                 continue
             second: float | None = None
             if pattern.key2 is not None:
-                second = (
-                    pattern.constant2
-                    if pattern.constant2 is not None
-                    else _value(
-                        replace(pattern, key=pattern.key2, min_m=None, max_m=None, min_n=None),
+                if pattern.constant2 is not None:
+                    second = pattern.constant2
+                elif pattern.same_value:
+                    second = value
+                else:
+                    second = _value(
+                        replace(
+                            pattern,
+                            key=pattern.key2,
+                            min_m=None,
+                            max_m=pattern.max2_m,
+                            min_n=None,
+                            scale=1.0,
+                            invert=False,
+                        ),
                         {"n": groups["n2"], "unit": groups.get("unit2")},
                         tables,
                     )
-                )
                 if second is None:
                     continue
             raw = " ".join(t.raw for t in tokens[first:last])
@@ -287,7 +302,9 @@ def row_spec(items: Sequence[Any], text: str) -> RowSpec | None:
 
     A key stated twice with different values is a :class:`~agrirecipe.PromptError`.
     """
-    return merge_geometry([i.data["geometry"] for i in items if i.role == "geometry"], text)
+    return merge_geometry(
+        [match for i in items if i.role == "geometry" for match in i.data["geometry"]], text
+    )
 
 
 def merge_geometry(matches: Sequence[GeometryMatch], text: str) -> RowSpec | None:

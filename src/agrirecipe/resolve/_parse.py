@@ -132,11 +132,16 @@ class PromptReader(FieldReading):
             )
         text = expand_casual(prompt)
         tokens = tokenize(text)
-        spans = [(m.first, m.last, Sense("geometry", m)) for m in find_geometry(tokens)]
+        spans: list[tuple[int, int, tuple[Sense, ...]]] = []
+        for match in find_geometry(tokens):
+            if spans and spans[-1][:2] == (match.first, match.last):  # "20 rows at 5 m"
+                spans[-1] = (match.first, match.last, (*spans[-1][2], Sense("geometry", match)))
+            else:
+                spans.append((match.first, match.last, (Sense("geometry", match),)))
         claimed = [False] * len(tokens)
         for first, last, _ in spans:
             claimed[first:last] = [True] * (last - first)
-        spans += [(z.first, z.last, Sense("zone", z.zone)) for z in find_zones(tokens, claimed)]
+        spans += [(z.first, z.last, (Sense("zone", z.zone),)) for z in find_zones(tokens, claimed)]
         items = self._tag(tokens, sorted(spans, key=lambda span: span[0]))
         items, steps = self.unknown_words(items, self.lexicon)
         self.trace.extend(steps)
@@ -241,14 +246,16 @@ class PromptReader(FieldReading):
             resolver=self.strategy,
         )
 
-    def _tag(self, tokens: Sequence[Token], spans: Sequence[tuple[int, int, Sense]]) -> list[Item]:
+    def _tag(
+        self, tokens: Sequence[Token], spans: Sequence[tuple[int, int, tuple[Sense, ...]]]
+    ) -> list[Item]:
         """The lexicon's items, with each span read before it (a stated geometry such as
         "76 cm apart", a zone such as "along the top") as one item."""
         items: list[Item] = []
         index = 0
-        for first, last, sense in spans:
+        for first, last, senses in spans:
             items.extend(self.lexicon.tag(tokens[index:first]))
-            items.append(Item(tuple(tokens[first:last]), (sense,)))
+            items.append(Item(tuple(tokens[first:last]), senses))
             index = last
         items.extend(self.lexicon.tag(tokens[index:]))
         return items

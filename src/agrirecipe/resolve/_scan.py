@@ -123,7 +123,8 @@ def _role(item: Item, previous: Item | None, cues: set[str], *, alone: bool = Fa
         if kind == "relation" and sense.value == "between":
             return "between"
         if kind == "geometry":
-            item.data["geometry"] = sense.value
+            # One phrase may state two values ("20 rows at 5 m": rows and their spacing).
+            item.data["geometry"] = tuple(s.value for s in item.senses_of("geometry"))
             return "geometry"
         if kind == "cue":
             return "cue"
@@ -327,7 +328,16 @@ def read_latitude(prompt: str, items: list[Item]) -> tuple[float | None, str | N
     Returns ``(latitude_deg, text, items)``; the latitude's tokens are removed
     so that its number is not read as a count.
     """
-    match = _LATITUDE.search(prompt)
+    # "rows at 30 degrees from north" is a row direction (a geometry item), not a latitude.
+    stated = [(i.start, i.end) for i in items if i.role == "geometry"]
+    match = next(
+        (
+            m
+            for m in _LATITUDE.finditer(prompt)
+            if not any(start < m.end() and m.start() < end for start, end in stated)
+        ),
+        None,
+    )
     if match is None:
         return None, None, items
     number = match.group(1) or match.group(3)
