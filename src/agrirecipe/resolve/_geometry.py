@@ -261,7 +261,7 @@ def _value(pattern: _Pattern, groups: dict[str, str | None], tables: _Tables) ->
             return None
         if pattern.min_m is not None and metres < pattern.min_m:
             return None
-        value = metres
+        value = round(metres, 9)  # "35 cm" is 0.35 m, not 0.35000000000000003
     if groups.get("area") is not None:
         value = value / tables.areas[str(groups["area"])]
     if pattern.min_n is not None and value < pattern.min_n:
@@ -276,7 +276,7 @@ def _value(pattern: _Pattern, groups: dict[str, str | None], tables: _Tables) ->
         value = 1.0 / value
     if pattern.key == "row_bearing_deg":
         value = value % 180.0
-    return value
+    return round(value, 9) if pattern.scale != 1.0 else value
 
 
 def _check(key: str, value: float, raw: str) -> None:

@@ -435,7 +435,8 @@ class PromptReader(FieldReading):
             ):
                 targets = [forward] if forward is not None else []
             elif refined is not None and refined.refinements:
-                targets = [refined.refinements[-1]]
+                # The member the clause before named ("carrots (75 cm ridges), onions ...").
+                targets = [clauses[position - 1].refinement or refined.refinements[-1]]
             else:
                 targets = coordinated(clauses, position)
             # Rows and spacings describe one plot: the nearest field named ("each" shares them).

@@ -43,6 +43,20 @@ def read_relations(
             continue
         if position in placed:
             continue
+        if (
+            link.role == "relation"
+            and not clause.mentions
+            and clause.items
+            and all(i.role == "filler" for i in clause.items)
+            and any("scenery" in i.data for i in clause.items)
+        ):
+            # "a test strip along the farm track": placed by scenery, not by a field
+            trace.append(
+                TraceStep(
+                    stage="decompose", subject=link.raw, detail="relative to scenery: not used"
+                )
+            )
+            continue
         before = [m for c in clauses[:position] for m in c.named]
         after = [m for c in clauses[position:] for m in c.named]
         pronoun = bool(clause.items) and clause.items[0].norm in _PRONOUNS
@@ -71,6 +85,13 @@ def read_relations(
             if ordered:
                 warnings.append(f"ignored {link.raw!r}: it needs two or more fields before it")
                 continue
+        if link.role == "trailer" and str(link.data.get("value")) in _TOWARDS:
+            relations += _directed_row(clauses, position, members, link, trace, warnings)
+            continue
+        listed = _listed_middle(clauses, position, link)
+        if listed is not None:
+            relations.extend(_pair("between", listed[0], listed[1], members, link, trace))
+            continue
         if link.role == "trailer" and link.data.get("value") in ("each_side", "middle"):
             pairs = _surrounded(str(link.data["value"]), clauses, position, before)
         else:
@@ -84,6 +105,68 @@ def read_relations(
     for relation in relations:  # "in a line, in this order": one row
         unique.setdefault((relation.kind, relation.subject, relation.objects), relation)
     return list(unique.values())
+
+
+#: "from west to east": each field of the row lies on this side of the next one.
+_TOWARDS = {
+    "towards_east": "west_of",
+    "towards_west": "east_of",
+    "towards_north": "south_of",
+    "towards_south": "north_of",
+}
+
+
+def _directed_row(
+    clauses: Sequence[Clause],
+    position: int,
+    members: dict[int, list[int]],
+    link: Item,
+    trace: list[TraceStep],
+    warnings: list[str],
+) -> list[RelationIntent]:
+    """'three strips from west to east: wheat, potatoes, maize', 'A, B and C from north
+    to south': the fields in the order named, each on one side of the next."""
+    group = list(reversed(coordinated(clauses, position)))
+    fields: list[int] = []
+    for mention in group:
+        for index in members.get(id(mention), []):
+            if index not in fields:
+                fields.append(index)
+    if len(fields) < 2:
+        warnings.append(f"ignored {link.raw!r}: it needs two or more fields before it")
+        return []
+    kind = _TOWARDS[str(link.data["value"])]
+    trace.append(
+        TraceStep(
+            stage="decompose",
+            subject=link.raw,
+            detail=f"{len(fields)} fields in a row, each {kind.replace('_', ' ')} the next",
+        )
+    )
+    return [
+        RelationIntent(kind=kind, subject=a, objects=(b,), text=link.raw)
+        for a, b in itertools.pairwise(fields)
+    ]
+
+
+def _listed_middle(
+    clauses: Sequence[Clause], position: int, link: Item
+) -> tuple[Mention, tuple[Mention, Mention]] | None:
+    """'three plots: carrots, onions in the middle, then potatoes': the middle one of
+    three listed members is between the other two."""
+    if link.role != "trailer" or link.data.get("value") != "middle" or not position:
+        return None
+    previous = clauses[position - 1]
+    parent, member = previous.refined_parent, previous.refinement
+    if parent is None or member is None:
+        return None
+    listed: list[Mention] = []
+    for sub in parent.refinements:
+        if not any(sub is seen for seen in listed):
+            listed.append(sub)
+    if len(listed) != 3 or listed[1] is not member:
+        return None
+    return member, (listed[0], listed[2])
 
 
 def _pair(

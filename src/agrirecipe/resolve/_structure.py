@@ -197,6 +197,33 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
     parent: Mention | None = None
     enumerating = False
     for clause in clauses:
+        previous = clauses[clause.index - 1] if clause.index else None
+        if (
+            not clause.items
+            and not clause.mentions
+            and clause.link is not None
+            and clause.link.role in ("separator", "conjunction", "trailer")
+        ):
+            # ", and potatoes", "(...), then", "onions in the middle, ...": words between
+            # members end no listing.
+            if previous is not None:
+                clause.refined_parent = previous.refined_parent
+                clause.refinement = previous.refinement
+            continue
+        if (
+            enumerating
+            and parent is not None
+            and previous is not None
+            and previous.refined_parent is parent
+            and not clause.mentions
+            and clause.items
+            and all(i.role in _MEMBER_DETAIL_ROLES for i in clause.items)
+        ):
+            # "carrots (75 cm ridges, 2 rows per ridge), onions ...": the listed member's
+            # own details; the listing goes on after them.
+            clause.refined_parent = parent
+            clause.refinement = previous.refinement
+            continue
         first = next((i for i in clause.items if i.norm != "the"), None)
         share_of = _counted_reference(clause.items)
         is_reference = share_of is not None or (
@@ -296,6 +323,12 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             last = clause.mentions[-1]
             parent = last if (last.count or 1) >= 2 else None
     return top
+
+
+#: Words a listed member's details may hold without naming another field.
+_MEMBER_DETAIL_ROLES = frozenset(
+    {"stage", "health", "size", "geometry", "cue", "same_size", "filler", "of", "month", "season"}
+)
 
 
 def _names_varieties_of(sub: Mention, parent: Mention) -> bool:

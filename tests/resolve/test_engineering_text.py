@@ -1,0 +1,85 @@
+"""Test-plot requests as engineers write them (issue 8, blind set g1 engineering):
+counted plots listed after a colon with each member's own measures, rows of plots in a
+compass order, the site around the plots."""
+
+from __future__ import annotations
+
+from agrirecipe import generate
+from agrirecipe.recipe import SceneRecipe
+
+
+def recipe(prompt: str) -> SceneRecipe:
+    return generate(prompt, resolver="hybrid").recipe
+
+
+def crop_of(scene: SceneRecipe, field_id: str) -> str:
+    return next(f.crop for f in scene.fields if f.id == field_id)
+
+
+def relations(scene: SceneRecipe) -> set[tuple[str, str, tuple[str, ...]]]:
+    return {
+        (r.kind, crop_of(scene, r.subject), tuple(crop_of(scene, o) for o in r.objects))
+        for r in scene.relations
+    }
+
+
+def test_counted_plots_are_the_members_listed_after_them() -> None:
+    scene = recipe(
+        "Three 10 m x 25 m plots for the weeding robot: first Cos lettuce with rows 35 cm "
+        "apart and 30 cm between heads, then Savoy cabbage at 75 cm rows and 45 cm in the "
+        "row, then Sturon onions in 30 cm rows, one plant every 10 cm."
+    )
+    assert [(f.crop, f.variety) for f in scene.fields] == [
+        ("Lettuce", "Romaine"),
+        ("Cabbage", "Savoy"),
+        ("Onion", "Sturon"),
+    ]
+    # the shared size goes to every member, each member's measures to itself alone
+    assert {f.geometry.size_m for f in scene.fields} == {(10.0, 25.0)}
+    assert [f.agronomy.row_spacing_m for f in scene.fields] == [0.35, 0.75, 0.3]
+    assert [f.agronomy.in_row_spacing_m for f in scene.fields] == [0.3, 0.45, 0.1]
+
+
+def test_a_comma_before_and_does_not_end_the_list() -> None:
+    scene = recipe(
+        "two plots side by side, each 30 x 60 m: wheat drilled at 12.5 cm row spacing, "
+        "and potatoes on 75 cm ridges"
+    )
+    assert [f.crop for f in scene.fields] == ["Wheat", "Potato"]
+    assert scene.fields[0].agronomy.row_spacing_m == 0.125
+
+
+def test_details_in_brackets_stay_with_their_member() -> None:
+    scene = recipe(
+        "three plots: carrots (75 cm ridges, 2 rows per ridge), onions in the middle "
+        "(30 cm rows), then potatoes (75 cm ridges)"
+    )
+    assert [f.crop for f in scene.fields] == ["Carrot", "Onion", "Potato"]
+    assert scene.fields[0].agronomy.rows_per_bed == 2
+    assert scene.fields[1].agronomy.row_spacing_m == 0.3
+    assert ("between", "Onion", ("Carrot", "Potato")) in relations(scene)
+
+
+def test_from_west_to_east_orders_the_row() -> None:
+    before = recipe(
+        "three strips, each 18 m wide and 200 m long, from west to east: wheat, potatoes, maize"
+    )
+    after = recipe("a pepper plot, a lettuce plot and a cabbage plot in a line from north to south")
+    assert {("west_of", "Wheat", ("Potato",)), ("west_of", "Potato", ("Maize",))} <= relations(
+        before
+    )
+    assert {f.geometry.size_m for f in before.fields} == {(18.0, 200.0)}
+    assert {("north_of", "Pepper", ("Lettuce",)), ("north_of", "Lettuce", ("Cabbage",))} <= (
+        relations(after)
+    )
+    # the packer follows: the wheat strip lies west of the potatoes
+    wheat, potato = (next(f for f in before.fields if f.crop == c) for c in ("Wheat", "Potato"))
+    assert wheat.geometry.origin_m[0] < potato.geometry.origin_m[0]
+
+
+def test_the_site_and_scenery_it_lies_along_are_not_fields() -> None:
+    scene = recipe(
+        "Hoeing-robot test strip along the farm track, three plots: carrots, onions, potatoes"
+    )
+    assert [f.crop for f in scene.fields] == ["Carrot", "Onion", "Potato"]
+    assert not scene.relations  # "along the farm track" relates no two fields
