@@ -83,3 +83,40 @@ def test_the_site_and_scenery_it_lies_along_are_not_fields() -> None:
     )
     assert [f.crop for f in scene.fields] == ["Carrot", "Onion", "Potato"]
     assert not scene.relations  # "along the farm track" relates no two fields
+
+
+def test_details_after_the_list_with_each_go_to_every_member() -> None:
+    scene = recipe(
+        "three maize strips: field corn, flint corn and popping corn, 8 rows each at 76 cm, "
+        "150 m long"
+    )
+    assert [f.variety for f in scene.fields] == ["Dent", "Flint", "Popcorn"]
+    assert {f.row_count for f in scene.fields} == {8}
+    assert {f.agronomy.row_spacing_m for f in scene.fields} == {0.76}
+
+
+def test_a_member_placed_against_the_one_before_keeps_the_listing() -> None:
+    scene = recipe(
+        "two vineyard blocks, rows 80 m long: Chardonnay, 30 rows at 2.5 m; Riesling north of "
+        "it, 25 rows at 2 m. October, grapes harvest-ready."
+    )
+    assert [(f.variety, f.row_count, f.stage) for f in scene.fields] == [
+        ("Chardonnay", 30, "Maturation"),
+        ("Riesling", 25, "Maturation"),
+    ]
+    assert [f.agronomy.row_spacing_m for f in scene.fields] == [2.5, 2.0]
+    assert ("north_of", "Grape", ("Grape",)) in relations(scene)
+
+
+def test_a_disease_a_dataset_is_for_is_not_the_plants_health() -> None:
+    scene = recipe(
+        "Late-blight detection dataset: two potato plots, the east plot Bintje with late "
+        "blight, the west plot healthy Fontane"
+    )
+    assert [(f.variety, f.health) for f in scene.fields] == [
+        ("Bintje", "Ill"),
+        ("Fontane", "Healthy"),
+    ]
+    (field,) = recipe("a potato field for a blight-spotting drone").fields
+    assert field.health == "Healthy"
+    assert "health" not in field.stated

@@ -154,9 +154,8 @@ class FieldReading:
 
     def _field_intent(self, member: FieldDraft, hemisphere: Hemisphere | None) -> FieldIntent:
         text = member.mention.text
-        for sub in member.mention.refinements or []:
-            if any(item in member.items for item in sub.items):
-                text = f"{text} ({sub.text})"
+        if member.sub is not None and member.sub is not member.mention and member.sub.items:
+            text = f"{text} ({member.sub.text})"
         stage: Stage | None = single_value(member.items, ("stage",), "stage", text, hemisphere)  # type: ignore[assignment]
         season: Season | None = single_value(
             member.items, ("season", "month"), "season", text, hemisphere

@@ -35,6 +35,7 @@ step  pass                                        module (data)
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Callable, Sequence
 
 from agrirecipe._errors import PromptError, UnknownCropError
@@ -146,6 +147,7 @@ class PromptReader(FieldReading):
         items, steps = self.unknown_words(items, self.lexicon)
         self.trace.extend(steps)
         assign_roles(items)
+        _purpose_diseases(items)
         prompt_latitude, latitude_text, items = read_latitude(text, items)
         items = read_sizes(items)
         self._reject_scenery(items)
@@ -403,7 +405,8 @@ class PromptReader(FieldReading):
             if says_all:
                 scene.extend(attributes)
                 continue
-            if not before or (len(mentions) > 1 and not after):
+            several = len(mentions) > 1 or any((m.count or 1) > 1 for m in mentions)
+            if not before or (several and not after):
                 # Opening words ("In autumn, ...") or closing words after several fields:
                 # a time of year belongs to the whole scene.
                 scene.extend(seasons)
@@ -419,6 +422,7 @@ class PromptReader(FieldReading):
                     target.items.extend(others)
                 continue
             targets: list[Mention] = []
+            shared_by_list = False
             forward = after[0] if after else None
             next_link = clauses[position + 1].link if position + 1 < len(clauses) else None
             starts_bare = (
@@ -435,8 +439,14 @@ class PromptReader(FieldReading):
             ):
                 targets = [forward] if forward is not None else []
             elif refined is not None and refined.refinements:
-                # The member the clause before named ("carrots (75 cm ridges), onions ...").
-                targets = [clauses[position - 1].refinement or refined.refinements[-1]]
+                # The member the clause before named ("carrots (75 cm ridges), onions ..."),
+                # or all of them ("..., 8 rows each at 76 cm").
+                member = clauses[position - 1].refinement
+                if clause.refined_parent is refined and clause.refinement is None:
+                    targets = list({id(m): m for m in refined.refinements}.values())
+                    shared_by_list = True
+                else:
+                    targets = [member or refined.refinements[-1]]
             else:
                 targets = coordinated(clauses, position)
             # Rows and spacings describe one plot: the nearest field named ("each" shares them).
@@ -459,8 +469,8 @@ class PromptReader(FieldReading):
                     i for i in target.items if not (i in target.borrowed and i.role in said)
                 ]
                 target.items.extend(shared)
-            if geometry and targets:
-                targets[-1].items.extend(geometry)
+            for target in targets if shared_by_list else targets[-1:]:
+                target.items.extend(geometry)
         return scene
 
     def _place(
@@ -501,6 +511,24 @@ class PromptReader(FieldReading):
 
 
 _ALL_PLANTS = frozenset({"plants", "trees", "vines", "crops", "bushes"})
+
+
+#: Scenery groups whose words name what a request is for ("a blight detection dataset").
+_PURPOSES = frozenset({"robots", "purposes"})
+
+
+def _purpose_diseases(items: Sequence[Item]) -> None:
+    """'Late-blight detection dataset', 'a blight-spotting drone': a disease named as what
+    a dataset or robot is for says nothing about the plants' health (scenery words)."""
+    for item, following in itertools.pairwise(items):
+        if (
+            item.role == "health"
+            and following.role == "filler"
+            and following.data.get("scenery") in _PURPOSES
+            and following.start - item.end <= 1  # "blight-spotting", "blight detection"
+        ):
+            item.role = "filler"
+            item.data["scenery"] = "purposes"
 
 
 def _says_all_plants(item: Item) -> bool:

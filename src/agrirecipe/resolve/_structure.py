@@ -217,12 +217,20 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             and previous.refined_parent is parent
             and not clause.mentions
             and clause.items
-            and all(i.role in _MEMBER_DETAIL_ROLES for i in clause.items)
+            and clause.link is not None
+            and clause.link.norm not in (".", "!", "?")  # a new sentence ends the listing
+            and (
+                all(i.role in _MEMBER_DETAIL_ROLES for i in clause.items)
+                # "Riesling north of it, 25 rows at 2 m": placed against the one before
+                or (clause.link.role == "relation" and clause.items[0].norm in _POINTERS)
+            )
         ):
             # "carrots (75 cm ridges, 2 rows per ridge), onions ...": the listed member's
             # own details; the listing goes on after them.
             clause.refined_parent = parent
-            clause.refinement = previous.refinement
+            # "field corn, flint corn and popping corn, 8 rows each at 76 cm": for them all
+            shared = any(t.norm in _EACH for i in clause.items for t in i.tokens)
+            clause.refinement = None if shared else previous.refinement
             continue
         first = next((i for i in clause.items if i.norm != "the"), None)
         share_of = _counted_reference(clause.items)
@@ -273,7 +281,9 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             ):
                 is_reference = False  # "three fields of sweet peppers and one of chillies"
             fits = _fits(sub, parent, crop_categories)
-            definite = bool(clause.items) and clause.items[0].norm in _definite_words()
+            definite = (bool(clause.items) and clause.items[0].norm in _definite_words()) or (
+                bool(clause.mentions) and _definite_before_head(clause, clause.mentions[0])
+            )  # "..., with the popping corn between the other two" points back
             if (
                 listable
                 and (enumerating or (sub.count or 1) > 1)
@@ -324,6 +334,12 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             parent = last if (last.count or 1) >= 2 else None
     return top
 
+
+#: Pronouns after a relation word that point back at the member before.
+_POINTERS = frozenset({"it", "them", "this", "that", "these", "those"})
+
+#: Words that give a listed member's details to every member listed.
+_EACH = frozenset({"each", "all", "both"})
 
 #: Words a listed member's details may hold without naming another field.
 _MEMBER_DETAIL_ROLES = frozenset(
@@ -705,6 +721,10 @@ def merge_coreferences(
             candidates = [m for m in members if _compatible(builder, m, mention)]
             if is_definite or len(candidates) == 1:
                 run = candidates[:1]
+            elif bare and len(candidates) == len(members) and not names_variety:
+                # "two vineyard blocks: Chardonnay and Riesling. October, grapes ripe":
+                # the crop every field named is, said again, describes them all.
+                run = candidates
         if not run:
             kept.append(mention)
             continue
