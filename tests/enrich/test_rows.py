@@ -39,6 +39,21 @@ def test_rows_share_beds(knowledge: KnowledgeBase) -> None:
     assert result.rows_per_bed == 2 and result.row_spacing_m == 1.5
 
 
+def test_rows_said_with_their_spacing_are_single_rows(knowledge: KnowledgeBase) -> None:
+    """Bananas grow in double rows by default; "12 rows, 3 m apart" are 12 single rows."""
+    assert plan(knowledge, "Banana").rows_per_bed == 2
+    result = plan(knowledge, "Banana", rows=12, row_spacing_m=3.0, in_row_spacing_m=3.0)
+    assert (result.rows_per_bed, result.row_spacing_m) == (1, 3.0)
+
+
+def test_the_rows_said_fit_on_the_bed_said(knowledge: KnowledgeBase) -> None:
+    """ "12 beds at 1.5 m, 4 rows per bed": the rows share the bed, never overhang it."""
+    for crop, per_bed in (("Lettuce", 4), ("Onion", 5), ("Strawberry", 3)):
+        result = plan(knowledge, crop, beds=12, bed_width_m=1.5, rows_per_bed=per_bed)
+        assert result.rows_per_bed == per_bed
+        assert result.bed_row_spacing_m * (per_bed - 1) < 1.5
+
+
 def test_rows_that_do_not_share_beds_evenly_are_refused(knowledge: KnowledgeBase) -> None:
     with pytest.raises(PromptError, match="evenly"):
         plan(knowledge, "Strawberry", rows=7, beds=3)

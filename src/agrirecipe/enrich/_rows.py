@@ -94,6 +94,9 @@ def plan_rows(
     warnings: list[str] = []
 
     rows_per_bed = int(stated.get("rows_per_bed", planting.rows_per_bed))
+    if "row_spacing_m" in stated and not {"rows_per_bed", "bed_width_m", "beds"} & set(stated):
+        # "12 rows on a 3 m grid" of a crop grown in double rows: the rows said, one by one.
+        rows_per_bed = 1
     rows = stated.get("rows")
     beds = stated.get("beds")
     if rows is not None and beds is not None and "rows_per_bed" not in stated:
@@ -121,6 +124,8 @@ def plan_rows(
             )
             default_rows = planting.bed_row_spacing_m.value
             bed_rows = default_rows if default_rows > 0 else spacing / rows_per_bed / 2
+            # "4 rows per bed on 1.5 m beds": the rows said fit on the bed said.
+            bed_rows = min(bed_rows, spacing / rows_per_bed)
     else:
         spacing = (
             stated.get("row_spacing_m") or stated.get("bed_width_m") or planting.row_spacing_m.value
