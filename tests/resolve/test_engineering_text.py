@@ -120,3 +120,28 @@ def test_a_disease_a_dataset_is_for_is_not_the_plants_health() -> None:
     (field,) = recipe("a potato field for a blight-spotting drone").fields
     assert field.health == "Healthy"
     assert "health" not in field.stated
+
+
+def test_rows_of_a_length_and_a_closing_sentence_of_row_measures() -> None:
+    (field,) = recipe("cherry tomatoes: 20 rows of 50 m, 1.6 m between rows").fields
+    assert (field.row_count, field.row_length_m) == (20, 50.0)
+    scene = recipe(
+        "Chantenay carrots on 20 ridges at 75 cm centres, two rows per ridge; Red Baron "
+        "onions in 12 rows spaced 30 cm. Rows are 60 m."
+    )
+    assert [(f.crop, f.row_length_m) for f in scene.fields] == [("Carrot", 60.0), ("Onion", 60.0)]
+    assert scene.fields[0].bed_count == 20
+
+
+def test_one_and_north_of_it_one_more() -> None:
+    scene = recipe(
+        "LiDAR stand-count benchmark: two maize plots, 20 rows x 50 m each at 75 cm row "
+        "spacing; one sown at 75,000 plants/ha and, north of it, one at 95,000 plants/ha."
+    )
+    assert [f.plants_per_ha for f in scene.fields] == [75_000, 95_000]
+    (relation,) = scene.relations
+    assert (relation.kind, relation.subject, relation.objects) == (
+        "north_of",
+        scene.fields[1].id,
+        (scene.fields[0].id,),
+    )

@@ -64,6 +64,7 @@ class _Pattern:
     constant2: float | None = None
     #: The longest sensible second length ("6 beds on 1.52 m centres": a bed is at most 3 m).
     max2_m: float | None = None
+    min2_m: float | None = None
     #: The second value is the first ("3 m square spacing": 3 m both ways).
     same_value: bool = False
 
@@ -134,6 +135,7 @@ def _tables() -> _Tables:
                 constant=entry.get("value"),
                 constant2=entry.get("value2"),
                 max2_m=entry.get("max2_m"),
+                min2_m=entry.get("min2_m"),
                 same_value=bool(entry.get("same_value", False)),
             )
         )
@@ -208,7 +210,7 @@ def find_geometry(tokens: Sequence[Token]) -> list[GeometryMatch]:
                         replace(
                             pattern,
                             key=pattern.key2,
-                            min_m=None,
+                            min_m=pattern.min2_m,
                             max_m=pattern.max2_m,
                             min_n=None,
                             scale=1.0,

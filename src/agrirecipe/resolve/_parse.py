@@ -415,7 +415,17 @@ class PromptReader(FieldReading):
                 before
                 and not after
                 and len(before) > 1
-                and any(_says_all_plants(i) for i in others)
+                and (
+                    any(_says_all_plants(i) for i in others)
+                    # "... onions in 12 rows. Rows are 60 m.": a closing sentence of
+                    # row measures is about every field's rows
+                    or (
+                        clause.link is not None
+                        and clause.link.norm in (".", "!")
+                        and any(i.role == "geometry" for i in clause.items)
+                        and all(i.role in ("geometry", "filler", "all") for i in clause.items)
+                    )
+                )
             ):
                 # "A next to B, young plants": closing words about "the plants" describe all.
                 for target in before:

@@ -60,7 +60,13 @@ def read_relations(
         before = [m for c in clauses[:position] for m in c.named]
         after = [m for c in clauses[position:] for m in c.named]
         pronoun = bool(clause.items) and clause.items[0].norm in _PRONOUNS
-        if pronoun and not clause.mentions and position and clauses[position - 1].named:
+        if (
+            pronoun
+            and not clause.mentions
+            and position
+            and clauses[position - 1].named
+            and clauses[position - 1].items  # not "one ... and, north of it, one ..."
+        ):
             # "put valencia oranges north of it, and a banana plot ...": the pronoun
             # ends its clause after a subject, so it points back and the fields after
             # are not its subject ("a cherry orchard and, south of it, two fields" is)
