@@ -98,3 +98,19 @@ def test_turned_fields_are_packed_without_overlap() -> None:
             assert not _rectangles_overlap(geometry[first], geometry[second])
     assert geometry["a"].rotation_deg == -30.0
     assert min(x for x, _ in geometry["a"].corners_m()) >= -1e-9
+
+
+def test_a_size_said_with_the_rows_is_the_field(knowledge: KnowledgeBase) -> None:
+    """ "36 m x 60 m: 12 rows 3 m apart": the field is 36 m wide, its border what is left."""
+    result = plan_rows(
+        {"rows": 12, "row_spacing_m": 3.0, "in_row_spacing_m": 3.0},
+        knowledge.crop_file("Banana"),
+        label="banana",
+        size_m=(36.0, 60.0),
+        area_m2=None,
+        default_size_m=knowledge.default_field_size_m("Banana"),
+        default_headland_m=knowledge.default_headland_m("Banana"),
+    )
+    assert result.size_m == (36.0, 60.0)
+    usable = 36.0 - 2 * result.headland_m
+    assert math.floor(usable / 3.0 + 1e-9) + 1 == 12

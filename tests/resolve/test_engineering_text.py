@@ -145,3 +145,36 @@ def test_one_and_north_of_it_one_more() -> None:
         scene.fields[1].id,
         (scene.fields[0].id,),
     )
+
+
+def test_as_many_fields_as_announced_listed_after_a_comma() -> None:
+    generated = generate(
+        "test orchard with two blocks, 150 cherry trees in the western block and 300 apple "
+        "trees in the eastern one; rows N-S in both",
+        resolver="hybrid",
+    )
+    scene = generated.recipe
+    counts = [generated.layout.field(f.id).nominal_plant_count for f in scene.fields]
+    assert [f.crop for f in scene.fields] == ["Cherry", "Apple"]
+    assert counts == [150, 300]
+    assert ("west_of", "Cherry", ("Apple",)) in relations(scene)
+    assert {f.row_bearing_deg for f in scene.fields} == {0.0}
+
+
+def test_a_relation_that_opens_its_sentence() -> None:
+    scene = recipe(
+        "peppers on 10 beds, 1.5 m bed centres, two rows to a bed, 30 m rows; west of the "
+        "peppers an onion plot of 60 x 40 m with rows 30 cm apart"
+    )
+    assert [f.crop for f in scene.fields] == ["Pepper", "Onion"]
+    assert scene.fields[0].agronomy.rows_per_bed == 2
+    assert relations(scene) == {("west_of", "Onion", ("Pepper",))}
+
+
+def test_fields_named_again_in_a_list_are_not_new_fields() -> None:
+    scene = recipe(
+        "cabbages between a potato plot and an onion plot, all rows east-west; cabbage and "
+        "potato rows 75 cm apart, onion rows 30 cm"
+    )
+    assert [f.crop for f in scene.fields] == ["Cabbage", "Potato", "Onion"]
+    assert [f.agronomy.row_spacing_m for f in scene.fields][1:] == [0.75, 0.3]

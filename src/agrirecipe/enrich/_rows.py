@@ -204,6 +204,17 @@ def plan_rows(
         headland = min(default_headland_m, round(_HEADLAND_SHARE * min(planted), 2))
     else:
         headland = default_headland_m
+    if size_m is not None and stated_headland is None:
+        # "36 m x 60 m: 12 rows on a 3 m grid": the size said is the field; its border
+        # narrows to what the rows leave (they are planted whole only if they fit).
+        room = [
+            (side - planted) / 2
+            for side, planted in ((width, usable_w), (length, usable_l))
+            if planted is not None
+        ]
+        if room and min(room) >= 0:
+            headland = min(headland, *room)
+            usable_w = usable_l = None
     # A stated count or length is planted area: the headland goes around it.
     if usable_w is not None:
         width = usable_w + 2 * headland

@@ -100,6 +100,10 @@ def read_relations(
             continue
         if link.role == "trailer" and link.data.get("value") in ("each_side", "middle"):
             pairs = _surrounded(str(link.data["value"]), clauses, position, before)
+        elif _fronted(clauses, position):
+            # "...; west of the peppers an onion plot": the field after the object
+            kind = link.data.get("value", "next_to")
+            pairs = (kind, clause.mentions[1], (clause.mentions[0],))
         else:
             pairs = _relation_mentions(link, before, after, pronoun=pronoun)
         if pairs is None:
@@ -120,6 +124,25 @@ _TOWARDS = {
     "towards_north": "south_of",
     "towards_south": "north_of",
 }
+
+
+def _fronted(clauses: Sequence[Clause], position: int) -> bool:
+    """'West of the peppers, an onion plot': a relation that opens its sentence, its
+    object and then its subject."""
+    clause = clauses[position]
+    link = clause.link
+    if link is None or link.role != "relation" or len(clause.mentions) < 2:
+        return False
+    if clause.mentions[0] is clause.mentions[1]:
+        return False
+    if position == 0:
+        return True
+    previous = clauses[position - 1]
+    return (
+        not previous.items
+        and previous.link is not None
+        and previous.link.norm in (";", ".", ":", "!")
+    ) or (previous.link is None and not previous.items)
 
 
 def _directed_row(

@@ -249,7 +249,15 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             and link.role == "relation"
             and clauses[clause.index - 1].refined_parent is parent
             and len(clause.mentions) == 1
-            and _names_varieties_of(clause.mentions[0], parent)
+            and (
+                _names_varieties_of(clause.mentions[0], parent)
+                # "two plots: a pear orchard, and north of it a strawberry field"
+                or (
+                    enumerating
+                    and not _strong_crops(parent)
+                    and _fits(clause.mentions[0], parent, crop_categories)
+                )
+            )
         ):
             joined = True  # "two vineyards, chardonnay west of riesling": the next member
         if parent is not None and joined and len(clause.mentions) <= 1:
@@ -263,7 +271,11 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             # plural crop followed by its varieties ("two beds of lettuce, lollo rosso
             # and bibb").
             lists_members = not _strong_crops(parent) and (
-                enumerating or link.norm in (":", "-", "—", "–")
+                enumerating
+                or link.norm in (":", "-", "—", "–")
+                # "two blocks, 150 cherry trees ... and 300 apple trees ...": as many
+                # fields as announced, listed after a comma
+                or (link.norm == "," and _lists_exactly(clauses, clause.index, parent.count))
             )
             lists_members = lists_members or (
                 _names_varieties_of(sub, parent) and (enumerating or link.role == "separator")
@@ -345,6 +357,28 @@ _EACH = frozenset({"each", "all", "both"})
 _MEMBER_DETAIL_ROLES = frozenset(
     {"stage", "health", "size", "geometry", "cue", "same_size", "filler", "of", "month", "season"}
 )
+
+
+def _lists_exactly(clauses: Sequence[Clause], start: int, count: int | None) -> bool:
+    """Whether the clauses from ``start`` to the end of the sentence name exactly
+    ``count`` single fields, joined as a list (commas and "and")."""
+    named: list[Mention] = []
+    for clause in clauses[start:]:
+        link = clause.link
+        if (
+            clause.index > start
+            and link is not None
+            and not listing(link)
+            and (link.norm in (".", "!", "?", ";") or link.role == "relation")
+        ):
+            break
+        named.extend(clause.mentions)
+    return (
+        count is not None
+        and count >= 2
+        and len(named) == count
+        and all((m.count or 1) == 1 and m.has_crop for m in named)
+    )
 
 
 def _names_varieties_of(sub: Mention, parent: Mention) -> bool:
@@ -668,6 +702,7 @@ def merge_coreferences(
     definite = _definite_words()
     clause_of = {id(m): c for c in clauses for m in c.mentions}
     kept: list[Mention] = []
+    merged: set[int] = set()  # clauses whose mention was a field named again
     for mention in mentions:
         clause = clause_of.get(id(mention))
         if clause is None or not kept or clause.mentions[0] is not mention:
@@ -680,7 +715,11 @@ def merge_coreferences(
         )
         if is_definite and mention.count == 1 and _pronoun_one(mention):
             mention.count = None
-        bare = clause.link is not None and clause.link.role == "separator"
+        bare = clause.link is not None and (
+            clause.link.role == "separator"
+            # "; cabbage and potato rows 75 cm apart": a list of fields named again
+            or (clause.link.role == "conjunction" and clause.index - 1 in merged)
+        )
         summary = _is_summary(mention)
         # "imperator and danvers carrots, ..., imperator north of danvers": a variety
         # named again without an article is the field already named.
@@ -728,6 +767,7 @@ def merge_coreferences(
         if not run:
             kept.append(mention)
             continue
+        merged.add(clause.index)
         attributes = [i for i in mention.items if i not in mention.heads]
         for target in run:
             target.items.extend(attributes)
