@@ -178,3 +178,37 @@ def test_fields_named_again_in_a_list_are_not_new_fields() -> None:
     )
     assert [f.crop for f in scene.fields] == ["Cabbage", "Potato", "Onion"]
     assert [f.agronomy.row_spacing_m for f in scene.fields][1:] == [0.75, 0.3]
+
+
+def test_labelled_blocks_and_references_to_their_labels() -> None:
+    scene = recipe(
+        "Orchard layout for the spraying-drone trials. Block A: Jonagored apples, 20 rows, "
+        "rows 3.5 m apart. Block B, directly north of A: Conference pears, 15 rows, 3.8 m "
+        "between rows, 1.2 m between trees. All rows run north-south."
+    )
+    assert [(f.crop, f.row_count) for f in scene.fields] == [("Apple", 20), ("Pear", 15)]
+    assert [f.agronomy.row_spacing_m for f in scene.fields] == [3.5, 3.8]
+    assert {f.row_bearing_deg for f in scene.fields} == {0.0}
+    assert relations(scene) == {("north_of", "Pear", ("Apple",))}
+
+
+def test_labels_nobody_refers_to_change_nothing() -> None:
+    from agrirecipe.resolve._labels import resolve_labels
+
+    text = "Plot 1: wheat. Plot 2: maize, 30 m wide."
+    assert resolve_labels(text, lambda phrase: ()) == (text, [])
+
+
+def test_same_spacing_and_a_closing_sentence_about_the_trees() -> None:
+    scene = recipe(
+        "two sweet cherry blocks: Kordia, 10 rows at 4.6 m with 2.4 m in-row; Regina directly "
+        "south, same spacing, 8 rows. Trees in bloom, mid-April."
+    )
+    assert [(f.variety, f.row_count, f.stage) for f in scene.fields] == [
+        ("Kordia", 10, "Reproductive"),
+        ("Regina", 8, "Reproductive"),
+    ]
+    assert {(f.agronomy.row_spacing_m, f.agronomy.in_row_spacing_m) for f in scene.fields} == {
+        (4.6, 2.4)
+    }
+    assert relations(scene) == {("south_of", "Cherry", ("Cherry",))}

@@ -43,6 +43,7 @@ _PRE_HEAD = (
     "cue",
     "zone",
     "same_size",
+    "same_spacing",
     "filler",
     "unknown",
     "reference",

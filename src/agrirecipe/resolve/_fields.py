@@ -42,6 +42,7 @@ ATTRIBUTE_ROLES = (
     "cue",
     "zone",
     "same_size",
+    "same_spacing",
     "all",
 )
 

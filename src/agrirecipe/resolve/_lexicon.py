@@ -73,6 +73,7 @@ SenseKind = Literal[
     "geometry",
     "zone",
     "same_size",
+    "same_spacing",
     "cue",
     "scenery",
     "filler",
@@ -387,6 +388,7 @@ _PLAIN_LISTS: dict[str, SenseKind] = {
     "other_words": "other",
     "of_words": "of",
     "same_size_words": "same_size",
+    "same_spacing_words": "same_spacing",
 }
 # ...phrase -> value mappings...
 _VALUED_PHRASES: dict[str, tuple[SenseKind, Callable[[Any], Any]]] = {

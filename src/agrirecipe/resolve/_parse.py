@@ -50,11 +50,14 @@ from agrirecipe.resolve._decompose import (
 from agrirecipe.resolve._fields import ATTRIBUTE_ROLES, FieldReading, describe_intent
 from agrirecipe.resolve._geometry import find_geometry
 from agrirecipe.resolve._intent import (
+    FieldIntent,
     Hemisphere,
     ResolveContext,
+    RowSpec,
     SceneIntent,
     TraceStep,
 )
+from agrirecipe.resolve._labels import resolve_labels
 from agrirecipe.resolve._lexicon import (
     Item,
     Lexicon,
@@ -132,6 +135,9 @@ class PromptReader(FieldReading):
                 hint=f"describe the fields you want, e.g. {_EXAMPLES}",
             )
         text = expand_casual(prompt)
+        text, labels = resolve_labels(text, lambda phrase: self.lexicon.tag(tokenize(phrase)))
+        for note in labels:
+            self.trace.append(TraceStep(stage="decompose", subject="label", detail=note))
         tokens = tokenize(text)
         spans: list[tuple[int, int, tuple[Sense, ...]]] = []
         for match in find_geometry(tokens):
@@ -211,6 +217,8 @@ class PromptReader(FieldReading):
                 i.role == "same_size" for i in fields[index].items
             ):
                 intents[index] = intents[index].model_copy(update={"size": intents[index - 1].size})
+            if any(i.role == "same_spacing" for i in fields[index].items):
+                intents[index] = _same_spacing(intents[index], intents[index - 1])
         for index, intent in enumerate(intents):
             self.trace.append(
                 TraceStep(
@@ -414,9 +422,16 @@ class PromptReader(FieldReading):
             if (
                 before
                 and not after
-                and len(before) > 1
+                and (len(before) > 1 or any((m.count or 1) > 1 for m in before))
                 and (
                     any(_says_all_plants(i) for i in others)
+                    # "... 8 rows. Trees in bloom.": a sentence about the plants in general
+                    or (
+                        clause.link is not None
+                        and clause.link.norm in (".", "!")
+                        and bool(clause.items)
+                        and clause.items[0].norm in _ALL_PLANTS
+                    )
                     # "... onions in 12 rows. Rows are 60 m.": a closing sentence of
                     # row measures is about every field's rows
                     or (
@@ -541,10 +556,32 @@ def _purpose_diseases(items: Sequence[Item]) -> None:
             item.data["scenery"] = "purposes"
 
 
+#: What "same spacing" copies from the field before: how its rows and plants are spaced.
+_SPACINGS = ("row_spacing_m", "in_row_spacing_m", "bed_width_m", "rows_per_bed", "plants_per_ha")
+
+
+def _same_spacing(intent: FieldIntent, before: FieldIntent) -> FieldIntent:
+    """'Kordia, 10 rows at 4.6 m ...; Regina, same spacing, 8 rows': the spacings of the
+    field before, except those this field states itself."""
+    if before.rows is None:
+        return intent
+    copied = {k: getattr(before.rows, k) for k in _SPACINGS if getattr(before.rows, k) is not None}
+    if not copied:
+        return intent
+    own = intent.rows
+    if own is not None:
+        copied = {k: v for k, v in copied.items() if getattr(own, k) is None}
+        rows = own.model_copy(update=copied)
+    else:
+        rows = RowSpec(**copied, text="same spacing")
+    return intent.model_copy(update={"rows": rows})
+
+
 def _says_all_plants(item: Item) -> bool:
     """'young plants', 'healthy trees': an attribute phrase about the plants in general."""
     words = item.norm.split()
-    return len(words) > 1 and words[-1] in _ALL_PLANTS
+    # "1.2 m between trees" is one field's spacing, not words about all the plants
+    return item.role != "geometry" and len(words) > 1 and words[-1] in _ALL_PLANTS
 
 
 def _detach_trailing_all(clause: Clause) -> None:

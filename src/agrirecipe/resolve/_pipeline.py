@@ -358,7 +358,8 @@ def _words(text: str) -> set[str]:
 def _validate(intent: SceneIntent, context: ResolveContext) -> None:
     """Catch intents that name what the hierarchy does not hold (any strategy can err)."""
     hierarchy = context.hierarchy
-    prompt_words = _words(intent.prompt) | _words(expand_casual(intent.prompt))
+    # "the": references to labelled fields are spelled "the <crop>" ("north of A")
+    prompt_words = _words(intent.prompt) | _words(expand_casual(intent.prompt)) | {"the"}
     for index, field in enumerate(intent.fields):
         path = f"fields[{index}]"
         # Intent validation (the paper's stage): every field is traceable to the words

@@ -100,10 +100,9 @@ def read_relations(
             continue
         if link.role == "trailer" and link.data.get("value") in ("each_side", "middle"):
             pairs = _surrounded(str(link.data["value"]), clauses, position, before)
-        elif _fronted(clauses, position):
+        elif (fronted := _fronted(clauses, position)) is not None:
             # "...; west of the peppers an onion plot": the field after the object
-            kind = link.data.get("value", "next_to")
-            pairs = (kind, clause.mentions[1], (clause.mentions[0],))
+            pairs = (link.data.get("value", "next_to"), fronted[0], (fronted[1],))
         else:
             pairs = _relation_mentions(link, before, after, pronoun=pronoun)
         if pairs is None:
@@ -126,23 +125,33 @@ _TOWARDS = {
 }
 
 
-def _fronted(clauses: Sequence[Clause], position: int) -> bool:
-    """'West of the peppers, an onion plot': a relation that opens its sentence, its
-    object and then its subject."""
+def _fronted(clauses: Sequence[Clause], position: int) -> tuple[Mention, Mention] | None:
+    """'West of the peppers, an onion plot', 'north of A: Conference pears': a relation
+    that opens its sentence, its object and then its subject (subject, object)."""
     clause = clauses[position]
     link = clause.link
-    if link is None or link.role != "relation" or len(clause.mentions) < 2:
-        return False
-    if clause.mentions[0] is clause.mentions[1]:
-        return False
-    if position == 0:
-        return True
-    previous = clauses[position - 1]
-    return (
-        not previous.items
-        and previous.link is not None
-        and previous.link.norm in (";", ".", ":", "!")
-    ) or (previous.link is None and not previous.items)
+    if link is None or link.role != "relation" or not clause.mentions:
+        return None
+    if position:
+        previous = clauses[position - 1]
+        opens = not previous.items and (
+            previous.link is None or previous.link.norm in (";", ".", ":", "!", ",")
+        )
+        if not opens:
+            return None
+    if len(clause.mentions) >= 2:
+        subject, target = clause.mentions[1], clause.mentions[0]
+    else:
+        following = clauses[position + 1] if position + 1 < len(clauses) else None
+        if (
+            following is None
+            or following.link is None
+            or following.link.norm not in (":", ",")
+            or not following.mentions
+        ):
+            return None
+        subject, target = following.mentions[0], clause.mentions[0]
+    return None if subject is target else (subject, target)
 
 
 def _directed_row(

@@ -53,6 +53,7 @@ _ROLE_ORDER = (
     "dimension_joiner",
     "side",
     "same_size",
+    "same_spacing",
     "scenery",
     "filler",
 )

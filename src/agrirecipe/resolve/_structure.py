@@ -355,7 +355,19 @@ _EACH = frozenset({"each", "all", "both"})
 
 #: Words a listed member's details may hold without naming another field.
 _MEMBER_DETAIL_ROLES = frozenset(
-    {"stage", "health", "size", "geometry", "cue", "same_size", "filler", "of", "month", "season"}
+    {
+        "stage",
+        "health",
+        "size",
+        "geometry",
+        "cue",
+        "same_size",
+        "same_spacing",
+        "filler",
+        "of",
+        "month",
+        "season",
+    }
 )
 
 

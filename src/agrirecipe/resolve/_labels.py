@@ -1,0 +1,76 @@
+"""Fields named by a label: "Block A: Jonagored apples, ... Block B, north of A: pears".
+
+Engineers name plots by letter or number and then place the others against the
+label. Before the prompt is read, each label that introduces a field ("Block A:",
+"Plot 2 -") is dropped, and each later reference to it ("north of A", "beside plot
+2") becomes a definite reference to the crop named after the label ("north of the
+Jonagored apples"), which the reader already resolves to that field.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable, Sequence
+
+from agrirecipe.resolve._lexicon import Item, tokenize
+
+__all__ = ["resolve_labels"]
+
+_NOUNS = r"(?:block|plot|field|parcel|area|section|strip|zone|bay|compartment|trial plot)"
+# "Block A:", "plot 2 -", "Field B," : a label that introduces what follows it.
+_DEFINITION = re.compile(rf"\b(?i:{_NOUNS})\s+(?P<label>[A-H]|\d{{1,2}})\b\s*(?P<mark>[:,(\-–—])")
+# What a reference to a label follows: a relation word, or the label's noun.
+_BEFORE_REFERENCE = r"(?:of|to|from|beside|besides|by|and|than|next to|alongside|between)"
+
+#: The items a crop phrase keeps ("Jonagored apples"): crop, variety and category words.
+_NAMING = ("crop", "variety", "category")
+
+
+def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str, list[str]]:
+    """``text`` with field labels dropped and references to them spelled out.
+
+    ``tag`` reads a phrase into lexicon items. Returns the new text and one note per
+    label resolved ("Block A = Jonagored apples"). Text without a referenced label is
+    returned unchanged.
+    """
+    definitions = list(_DEFINITION.finditer(text))
+    if len(definitions) < 2:
+        return text, []
+    names: dict[str, str] = {}
+    for match in definitions:
+        label = match.group("label").upper()
+        phrase = _crop_phrase(text[match.end() :], tag)
+        if phrase and label not in names:
+            names[label] = phrase
+    if len(names) < 2:
+        return text, []
+    notes: list[str] = []
+    # Drop the definitions (last first, so offsets stay valid), keeping their mark.
+    out = text
+    for match in reversed(definitions):
+        mark = match.group("mark")
+        keep = "" if mark in ":-–—" else mark
+        out = out[: match.start()] + keep + out[match.end() :]
+    for label, phrase in names.items():
+        noun = rf"(?i:{_NOUNS})\s+"
+        # "north of A", "beside block A" (a capital letter); "beside plot 2" (a number
+        # only after its noun)
+        pattern = re.compile(
+            rf"(?P<before>\b(?i:{_BEFORE_REFERENCE})\s+)(?:(?i:the)\s+)?"
+            + (rf"(?:{noun})?" if label.isalpha() else noun)
+            + rf"{re.escape(label)}\b"
+        )
+        replaced, count = pattern.subn(lambda m, p=phrase: f"{m.group('before')}the {p}", out)
+        if count:
+            out = replaced
+            notes.append(f"{label} = {phrase}")
+    return (out, notes) if notes else (text, [])
+
+
+def _crop_phrase(following: str, tag: Callable[[str], Sequence[Item]]) -> str:
+    """The crop words of the phrase after a label, up to its first comma or stop."""
+    clause = re.split(r"[,.;]", following, maxsplit=1)[0]
+    if not tokenize(clause):
+        return ""
+    words = [item.raw for item in tag(clause) if item.has(*_NAMING)]
+    return " ".join(words)
