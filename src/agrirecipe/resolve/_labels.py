@@ -60,7 +60,7 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
             + (rf"(?:{noun})?" if label.isalpha() else noun)
             + rf"{re.escape(label)}\b"
         )
-        replaced, count = pattern.subn(lambda m, p=phrase: f"{m.group('before')}the {p}", out)
+        replaced, count = pattern.subn(rf"\g<before>the {phrase}", out)
         if count:
             out = replaced
             notes.append(f"{label} = {phrase}")
