@@ -60,7 +60,8 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
             + (rf"(?:{noun})?" if label.isalpha() else noun)
             + rf"{re.escape(label)}\b"
         )
-        replaced, count = pattern.subn(rf"\g<before>the {phrase}", out)
+        template = "\\g<before>the " + phrase.replace("\\", "\\\\")
+        replaced, count = pattern.subn(template, out)
         if count:
             out = replaced
             notes.append(f"{label} = {phrase}")
