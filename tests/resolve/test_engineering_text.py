@@ -4,6 +4,8 @@ compass order, the site around the plots."""
 
 from __future__ import annotations
 
+import pytest
+
 from agrirecipe import generate
 from agrirecipe.recipe import SceneRecipe
 
@@ -212,3 +214,18 @@ def test_same_spacing_and_a_closing_sentence_about_the_trees() -> None:
         (4.6, 2.4)
     }
     assert relations(scene) == {("south_of", "Cherry", ("Cherry",))}
+
+
+def test_purpose_words_marks_and_styles_are_not_crops() -> None:
+    scene = recipe(
+        "Weed/crop segmentation dataset, two plots: carrots, 2 rows per 75 cm ridge, 30 ridges; "
+        "and letuce at 80,000 heads per ha, 16 rows of 50 m, 30 cm in-row, rows running "
+        "north-east."
+    )
+    assert [f.crop for f in scene.fields] == ["Carrot", "Lettuce"]
+    lettuce = scene.fields[1]
+    assert lettuce.row_bearing_deg == 45.0
+    # density and in-row spacing said, the rows are as far apart as they make
+    assert lettuce.agronomy.row_spacing_m == pytest.approx(10_000 / (80_000 * 0.3), rel=1e-3)
+    (vines,) = recipe("US-style vinyard for a pruning robot: 30 rows, 10 ft row spacing").fields
+    assert (vines.crop, vines.row_count, vines.agronomy.row_spacing_m) == ("Grape", 30, 3.048)

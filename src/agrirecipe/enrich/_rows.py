@@ -130,6 +130,12 @@ def plan_rows(
         spacing = (
             stated.get("row_spacing_m") or stated.get("bed_width_m") or planting.row_spacing_m.value
         )
+        if {"plants_per_ha", "in_row_spacing_m"} <= set(stated) and not {
+            "row_spacing_m",
+            "bed_width_m",
+        } & set(stated):
+            # "80,000 heads per ha, 30 cm in-row": the rows are as far apart as that makes
+            spacing = round(10_000.0 / (stated["plants_per_ha"] * stated["in_row_spacing_m"]), 4)
         bed_rows = 0.0
     bed_span = bed_rows * (rows_per_bed - 1)
     if bed_span >= spacing:

@@ -250,6 +250,8 @@ def _value(pattern: _Pattern, groups: dict[str, str | None], tables: _Tables) ->
         return float(pattern.constant)
     if pattern.key == "row_bearing_deg" and groups.get("a") is not None:
         a = tables.directions[str(groups["a"])]
+        if groups.get("b") is None:
+            return a % 180.0  # "rows running north-east"
         b = tables.directions[str(groups["b"])]
         if (a - b) % 180 != 0:
             return None  # "north east" is one direction, not a line

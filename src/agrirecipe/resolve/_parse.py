@@ -635,7 +635,8 @@ def _word_before(items: Sequence[Item], index: int | None) -> Item | None:
     if index is None or index == 0:
         return None
     word = items[index - 1]
-    return word if word.role == "unknown" else None
+    # "Weed/crop": a mark is not a name
+    return word if word.role == "unknown" and any(c.isalpha() for c in word.norm) else None
 
 
 def _word_after_of(items: Sequence[Item], index: int | None) -> Item | None:
