@@ -229,3 +229,40 @@ def test_purpose_words_marks_and_styles_are_not_crops() -> None:
     assert lettuce.agronomy.row_spacing_m == pytest.approx(10_000 / (80_000 * 0.3), rel=1e-3)
     (vines,) = recipe("US-style vinyard for a pruning robot: 30 rows, 10 ft row spacing").fields
     assert (vines.crop, vines.row_count, vines.agronomy.row_spacing_m) == ("Grape", 30, 3.048)
+
+
+def test_counted_plots_whose_members_follow_in_sentences_of_their_own() -> None:
+    scene = recipe(
+        "Weeding-bot trial in May on two bed plots. Lollo Rosso: 4 beds on 1.2 m centres, 4 "
+        "rows per bed, young plants. Beside it, Imperator carrots: 16 ridges on 75 cm, two "
+        "rows per ridge. Beds and ridges run NW-SE with a 3 m headland."
+    )
+    assert [(f.variety, f.bed_count) for f in scene.fields] == [
+        ("Lollo Rosso", 4),
+        ("Imperator", 16),
+    ]
+    assert {f.row_bearing_deg for f in scene.fields} == {135.0}
+    assert relations(scene) == {("next_to", "Carrot", ("Lettuce",))}
+
+
+def test_a_member_named_again_by_its_variety_is_that_member() -> None:
+    scene = recipe(
+        "two pear blocks, rows 3.5 m apart, trees 1.25 m in the row: Doyenné du Comice, 16 rows, "
+        "and Durondeau, 12 rows, east of the Comice. The trees are white with blossom."
+    )
+    assert [(f.variety, f.row_count, f.stage) for f in scene.fields] == [
+        ("Doyenne du Comice", 16, "Reproductive"),
+        ("Durondeau", 12, "Reproductive"),
+    ]
+    assert {f.agronomy.in_row_spacing_m for f in scene.fields} == {1.25}
+    assert relations(scene) == {("east_of", "Pear", ("Pear",))}
+
+
+def test_measures_after_a_plural_noun_shared_by_a_list() -> None:
+    scene = recipe(
+        "Bing and Sweetheart Lapins cherry blocks, 180 trees each, 5 m rows with 3 m in-row"
+    )
+    assert [f.variety for f in scene.fields] == ["Bing", "Lapins"]
+    assert {(f.agronomy.row_spacing_m, f.agronomy.in_row_spacing_m) for f in scene.fields} == {
+        (5.0, 3.0)
+    }

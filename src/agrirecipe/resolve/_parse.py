@@ -494,7 +494,18 @@ class PromptReader(FieldReading):
                     i for i in target.items if not (i in target.borrowed and i.role in said)
                 ]
                 target.items.extend(shared)
-            for target in targets if shared_by_list else targets[-1:]:
+            # "Bing and Lapins cherry blocks, 5 m rows": a plural noun shared by the list
+            shared_noun = (
+                len(targets) > 1
+                and any(h.role == "plot" and h.data["value"]["plural"] for h in targets[0].heads)
+                # (a plot word of its own, named before the shared noun, ends the sharing)
+                and not any(
+                    h.role == "plot" and h.start < min(x.start for x in targets[0].heads)
+                    for t in targets[1:]
+                    for h in t.heads
+                )
+            )
+            for target in targets if shared_by_list or shared_noun else targets[-1:]:
                 target.items.extend(geometry)
         return scene
 

@@ -58,7 +58,10 @@ def read_relations(
             )
             continue
         before = [m for c in clauses[:position] for m in c.named]
-        after = [m for c in clauses[position:] for m in c.named]
+        # a pronoun's clause ("north of it") names no field of its own after the word
+        after = [
+            m for c in clauses[position:] for m in (c.named if c is not clause else c.mentions)
+        ]
         pronoun = bool(clause.items) and clause.items[0].norm in _PRONOUNS
         if (
             pronoun

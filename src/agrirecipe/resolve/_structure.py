@@ -276,6 +276,11 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
                 # "two blocks, 150 cherry trees ... and 300 apple trees ...": as many
                 # fields as announced, listed after a comma
                 or (link.norm == "," and _lists_exactly(clauses, clause.index, parent.count))
+                # "... on two bed plots. Lollo Rosso: 4 beds ... Beside it, carrots: ..."
+                or (
+                    link.norm == "."
+                    and _lists_exactly(clauses, clause.index, parent.count, to_the_end=True)
+                )
             )
             lists_members = lists_members or (
                 _names_varieties_of(sub, parent) and (enumerating or link.role == "separator")
@@ -371,25 +376,32 @@ _MEMBER_DETAIL_ROLES = frozenset(
 )
 
 
-def _lists_exactly(clauses: Sequence[Clause], start: int, count: int | None) -> bool:
-    """Whether the clauses from ``start`` to the end of the sentence name exactly
-    ``count`` single fields, joined as a list (commas and "and")."""
+def _lists_exactly(
+    clauses: Sequence[Clause], start: int, count: int | None, *, to_the_end: bool = False
+) -> bool:
+    """Whether the clauses from ``start`` to the end of the sentence (or of the prompt)
+    name exactly ``count`` single fields, joined as a list (commas and "and")."""
     named: list[Mention] = []
     for clause in clauses[start:]:
         link = clause.link
         if (
-            clause.index > start
+            not to_the_end
+            and clause.index > start
             and link is not None
             and not listing(link)
             and (link.norm in (".", "!", "?", ";") or link.role == "relation")
         ):
             break
-        named.extend(clause.mentions)
+        # fields named again ("the Comice") or plot words alone ("Beds and ridges run
+        # NW-SE") name no new field
+        named.extend(
+            m for m in clause.mentions if m.has_crop and not _definite_before_head(clause, m)
+        )
     return (
         count is not None
         and count >= 2
         and len(named) == count
-        and all((m.count or 1) == 1 and m.has_crop for m in named)
+        and all((m.count or 1) == 1 for m in named)
     )
 
 
@@ -750,12 +762,25 @@ def merge_coreferences(
             continue
         run: list[Mention] = []
         own = _strong_crops(mention)
-        for earlier in reversed(kept):
+        # "two pear blocks: Comice, ... and Durondeau, east of the Comice": the member
+        # that variety named, not the plural mention listing it
+        member = next(
+            (
+                sub
+                for m in reversed(kept)
+                for sub in m.refinements
+                if sub is not mention and _same_variety(sub, mention)
+            ),
+            None,
+        )
+        for earlier in [] if member is not None else reversed(kept):
             if not _compatible(builder, earlier, mention):
                 break
             if own and _strong_crops(earlier) and not own & _strong_crops(earlier):
                 break  # "cherries" is the cherry orchard, not the cherry tomatoes
             run.append(earlier)
+        if member is not None:
+            run = [member]
         if summary and len(run) != mention.count:
             kept.append(mention)
             continue
