@@ -266,3 +266,56 @@ def test_measures_after_a_plural_noun_shared_by_a_list() -> None:
     assert {(f.agronomy.row_spacing_m, f.agronomy.in_row_spacing_m) for f in scene.fields} == {
         (5.0, 3.0)
     }
+
+
+def test_the_one_between_the_other_two_of_a_listed_three() -> None:
+    scene = recipe(
+        "three maize strips: field corn, flint corn and popping corn, 8 rows each at 76 cm, "
+        "with the popping corn between the other two"
+    )
+    (relation,) = scene.relations
+    ids = {f.variety: f.id for f in scene.fields}
+    assert (relation.kind, relation.subject, set(relation.objects)) == (
+        "between",
+        ids["Popcorn"],
+        {ids["Dent"], ids["Flint"]},
+    )
+
+
+def test_words_after_a_field_named_again_describe_the_new_field() -> None:
+    scene = recipe(
+        "vines, 2.5 m rows; a wheat plot to the south of the vineyard, 25 x 100 m. Bananas on "
+        "2.5 m square spacing, and south of the bananas a citrus block of 1.5 ha."
+    )
+    sizes = {f.crop: f.geometry.size_m for f in scene.fields}
+    assert sizes["Wheat"] == (25.0, 100.0)
+    assert {("south_of", "Wheat", ("Grape",)), ("south_of", "Orange", ("Banana",))} <= relations(
+        scene
+    )
+
+
+def test_measures_after_each_stay_with_every_field() -> None:
+    scene = recipe(
+        "a pepper plot, a lettuce plot and a cabbage plot in a line from north to south, each "
+        "20 x 30 m, rows at 90° from north"
+    )
+    assert {(f.geometry.size_m, f.row_bearing_deg) for f in scene.fields} == {((20.0, 30.0), 90.0)}
+
+
+def test_a_field_named_by_its_compass_position() -> None:
+    from agrirecipe.resolve._labels import place_leading_directions
+
+    assert place_leading_directions("the east plot is Bintje, the west plot Fontane") == (
+        "Bintje in the eastern block, Fontane in the western block"
+    )
+    # a compass position after a preposition is already a placement
+    text = "cherry trees in the western block and apple trees in the eastern one"
+    assert place_leading_directions(text) == text
+    scene = recipe(
+        "two potato plots: the east plot is Bintje with late blight, the west plot healthy Fontane"
+    )
+    assert [(f.variety, f.health) for f in scene.fields] == [
+        ("Bintje", "Ill"),
+        ("Fontane", "Healthy"),
+    ]
+    assert ("east_of", "Potato", ("Potato",)) in relations(scene)

@@ -5,6 +5,10 @@ label. Before the prompt is read, each label that introduces a field ("Block A:"
 "Plot 2 -") is dropped, and each later reference to it ("north of A", "beside plot
 2") becomes a definite reference to the crop named after the label ("north of the
 Jonagored apples"), which the reader already resolves to that field.
+
+A compass position used as a label ("the east plot is Bintje, the west plot
+Fontane") is moved after what it names ("Bintje in the eastern block"), where the
+reader places fields by a trailing direction.
 """
 
 from __future__ import annotations
@@ -14,7 +18,7 @@ from collections.abc import Callable, Sequence
 
 from agrirecipe.resolve._lexicon import Item, tokenize
 
-__all__ = ["resolve_labels"]
+__all__ = ["place_leading_directions", "resolve_labels"]
 
 _NOUNS = r"(?:block|plot|field|parcel|area|section|strip|zone|bay|compartment|trial plot)"
 # "Block A:", "plot 2 -", "Field B," : a label that introduces what follows it.
@@ -75,3 +79,19 @@ def _crop_phrase(following: str, tag: Callable[[str], Sequence[Item]]) -> str:
         return ""
     words = [item.raw for item in tag(clause) if item.has(*_NAMING)]
     return " ".join(words)
+
+
+# "the east plot is Bintje with late blight, ...": a field named by its compass position
+_LEADING = re.compile(
+    r"(?<!in )(?<!on )(?<!of )(?<!at )(?<!to )\b(?i:the)\s+(?P<side>(?i:north|south|east|west))(?i:ern)?\s+"
+    r"(?i:plot|block|field|one|part|half|strip|parcel|section)\s*"
+    r"(?:(?i:is|are|has|holds|gets|grows|has got)\s+|[:\-–—]\s*)?"
+    r"(?P<rest>(?!(?i:of|to|and|with|in|on|at|is|are)\b)[^\s,;.:()][^,;.:()]*)"
+)
+
+
+def place_leading_directions(text: str) -> str:
+    """``text`` with "the east plot is X" written "X in the eastern block"."""
+    return _LEADING.sub(
+        lambda m: f"{m.group('rest').rstrip()} in the {m.group('side').lower()}ern block", text
+    )

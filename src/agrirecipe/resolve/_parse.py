@@ -57,7 +57,7 @@ from agrirecipe.resolve._intent import (
     SceneIntent,
     TraceStep,
 )
-from agrirecipe.resolve._labels import resolve_labels
+from agrirecipe.resolve._labels import place_leading_directions, resolve_labels
 from agrirecipe.resolve._lexicon import (
     Item,
     Lexicon,
@@ -67,7 +67,7 @@ from agrirecipe.resolve._lexicon import (
     tokenize,
     vocabulary,
 )
-from agrirecipe.resolve._relations import coordinated, read_relations
+from agrirecipe.resolve._relations import coordinated, listing, read_relations
 from agrirecipe.resolve._scan import assign_roles, read_latitude, read_sizes
 from agrirecipe.resolve._structure import (
     apply_corrections,
@@ -136,6 +136,7 @@ class PromptReader(FieldReading):
             )
         text = expand_casual(prompt)
         text, labels = resolve_labels(text, lambda phrase: self.lexicon.tag(tokenize(phrase)))
+        text = place_leading_directions(text)
         for note in labels:
             self.trace.append(TraceStep(stage="decompose", subject="label", detail=note))
         tokens = tokenize(text)
@@ -474,9 +475,20 @@ class PromptReader(FieldReading):
                     targets = [member or refined.refinements[-1]]
             else:
                 targets = coordinated(clauses, position)
+                targets = _past_a_reference(clauses, position, targets)
             # Rows and spacings describe one plot: the nearest field named ("each" shares them).
             geometry = [i for i in others if i.role == "geometry"]
             others = [i for i in others if i.role != "geometry"]
+            if (
+                geometry
+                and position
+                and any(i.role == "all" for i in clauses[position - 1].loose)
+                and clause.link is not None
+                and listing(clause.link)
+            ):
+                # "A, B and C, each 20 x 30 m, rows at 90°": still about each of them
+                scene.extend(geometry)
+                geometry = []
             for target in targets:
                 # "ripe wheat and maize, still green": words shared by a list go to the
                 # members that do not state that attribute themselves.
@@ -586,6 +598,33 @@ def _same_spacing(intent: FieldIntent, before: FieldIntent) -> FieldIntent:
     else:
         rows = RowSpec(**copied, text="same spacing")
     return intent.model_copy(update={"rows": rows})
+
+
+def _past_a_reference(
+    clauses: Sequence[Clause], position: int, targets: list[Mention]
+) -> list[Mention]:
+    """'a wheat plot to the south of the vineyard, 25 x 100 m': words after a field
+    named again as a relation's object describe the relation's subject."""
+    if len(targets) != 1:
+        return targets
+    index = position - 1
+    while index >= 0 and not clauses[index].mentions:
+        index -= 1
+    if index < 1:
+        return targets
+    relation = clauses[index]
+    named_before = any(targets[0] is m for c in clauses[:index] for m in c.mentions)
+    subject = clauses[index - 1].mentions[-1] if clauses[index - 1].mentions else None
+    if (
+        relation.link is not None
+        and relation.link.role == "relation"
+        and relation.mentions == [targets[0]]
+        and named_before
+        and subject is not None
+        and subject is not targets[0]
+    ):
+        return [subject]
+    return targets
 
 
 def _says_all_plants(item: Item) -> bool:

@@ -138,7 +138,9 @@ def _fronted(clauses: Sequence[Clause], position: int) -> tuple[Mention, Mention
     if position:
         previous = clauses[position - 1]
         opens = not previous.items and (
-            previous.link is None or previous.link.norm in (";", ".", ":", "!", ",")
+            previous.link is None
+            or previous.link.norm in (";", ".", ":", "!", ",")
+            or previous.link.role == "conjunction"  # ", and south of the bananas a citrus"
         )
         if not opens:
             return None
@@ -302,6 +304,8 @@ def _surrounded(
     """
     distinct: list[Mention] = []
     for mention in before:  # a field named twice counts once
+        if mention.refinements and any(r is m for r in mention.refinements for m in before):
+            continue  # "three strips: A, B and C": the members stand, not the plural
         if not any(mention is seen for seen in distinct):
             distinct.append(mention)
     if value == "each_side":
