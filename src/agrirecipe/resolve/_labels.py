@@ -83,7 +83,8 @@ def _crop_phrase(following: str, tag: Callable[[str], Sequence[Item]]) -> str:
 
 # "the east plot is Bintje with late blight, ...": a field named by its compass position
 _LEADING = re.compile(
-    r"(?<!in )(?<!on )(?<!of )(?<!at )(?<!to )\b(?i:the)\s+(?P<side>(?i:north|south|east|west))(?i:ern)?\s+"
+    r"(?<!in )(?<!on )(?<!of )(?<!at )(?<!to )"
+    r"\b(?i:the)\s+(?P<side>(?i:north|south|east|west))(?i:ern)?\s+"
     r"(?i:plot|block|field|one|part|half|strip|parcel|section)\s*"
     r"(?:(?i:is|are|has|holds|gets|grows|has got)\s+|[:\-–—]\s*)?"
     r"(?P<rest>(?!(?i:of|to|and|with|in|on|at|is|are)\b)[^\s,;.:()][^,;.:()]*)"
