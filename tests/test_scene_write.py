@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import pytest
@@ -32,8 +33,9 @@ def test_write_produces_the_recipe_and_the_ground_truth_outputs(
     for path in written:
         assert path.parent == tmp_path / "out" and path.stat().st_size > 0
     assert load_recipe(tmp_path / "out" / "recipe.json") == scene.recipe
-    # Atomic writes leave no temporary files behind.
-    assert sorted(p.name for p in (tmp_path / "out").iterdir()) == sorted(names)
+    # Atomic writes leave no temporary files behind; the plant meshes are beside.
+    assert sorted(p.name for p in (tmp_path / "out").iterdir()) == sorted([*names, "assets"])
+    assert not list((tmp_path / "out").rglob(".*"))
     rows = (tmp_path / "out" / "plants.csv").read_text(encoding="utf-8").count("\n") - 1
     assert rows == scene.layout.plant_count
 
@@ -65,3 +67,29 @@ def test_outputs_are_readable_by_others(scene: Scene, tmp_path: Path) -> None:
     # Atomic writes go through mkstemp, whose files are private (0600) unless changed.
     for path in scene.write(tmp_path, backends=["usd", "annotations"]):
         assert path.stat().st_mode & 0o044 == 0o044, path.name
+
+
+def test_a_write_removes_what_a_killed_write_left(scene: Scene, tmp_path: Path) -> None:
+    import subprocess
+    import sys
+
+    out = tmp_path / "out"
+    (out / "assets").mkdir(parents=True)
+    child = subprocess.run(
+        [sys.executable, "-c", "import os; print(os.getpid())"],
+        capture_output=True,
+        text=True,
+        check=True,
+    )
+    dead = int(child.stdout)  # a process that has exited
+    stale = [
+        out / f".scene.usda.{dead}.abcd1234.usda",
+        out / "assets" / f".x.glb.{dead}.q1w2e3r4.tmp",
+    ]
+    live = out / f".plants.csv.{os.getpid()}.zzzz9999.tmp"  # a write still running
+    other = out / ".hidden-by-the-user"
+    for path in (*stale, live, other):
+        path.write_bytes(b"partial")
+    scene.write(out, backends=["annotations"])
+    assert not any(path.exists() for path in stale)
+    assert live.exists() and other.exists()

@@ -8,7 +8,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Literal
 
 from agrirecipe._errors import ConfigurationError
-from agrirecipe._files import write_atomic
+from agrirecipe._files import remove_stale_temporaries, write_atomic
 from agrirecipe.recipe import DEFAULT_MAX_PLANTS, SceneRecipe, dump_recipe, load_recipe
 
 if TYPE_CHECKING:
@@ -27,14 +27,30 @@ DEFAULT_BACKENDS: tuple[str, ...] = ("unreal", "blender", "usd", "annotations")
 class Scene:
     """A validated :class:`SceneRecipe` and its compiled outputs (computed on demand)."""
 
-    def __init__(self, recipe: SceneRecipe, *, explanation: Explanation | None = None) -> None:
+    def __init__(
+        self,
+        recipe: SceneRecipe,
+        *,
+        explanation: Explanation | None = None,
+        knowledge: KnowledgeBase | None = None,
+    ) -> None:
         self.recipe = recipe
         self.explanation = explanation
+        #: The knowledge base the plant meshes are drawn from (None: the shipped one).
+        self.knowledge = knowledge
 
     @classmethod
-    def from_file(cls, path: str | Path, *, hierarchy: Hierarchy | None = None) -> Scene:
+    def from_file(
+        cls,
+        path: str | Path,
+        *,
+        hierarchy: Hierarchy | None = None,
+        knowledge: KnowledgeBase | None = None,
+    ) -> Scene:
         """A scene from a recipe file (validated; see :func:`agrirecipe.recipe.load_recipe`)."""
-        return cls(load_recipe(path, hierarchy=hierarchy))
+        if hierarchy is None and knowledge is not None:
+            hierarchy = knowledge.hierarchy
+        return cls(load_recipe(path, hierarchy=hierarchy), knowledge=knowledge)
 
     @functools.cached_property
     def layout(self) -> Layout:
@@ -57,7 +73,8 @@ class Scene:
     ) -> list[Path]:
         """Write ``recipe.json`` and every backend's outputs into ``directory``.
 
-        Each file is written atomically; the folder is created if needed.
+        Each file is written atomically; the folder is created if needed. Temporary
+        files that an earlier, killed write left in the folder are removed first.
         """
         from agrirecipe.backends import get_backend
 
@@ -68,6 +85,7 @@ class Scene:
             raise ConfigurationError(
                 f"output path {str(folder)!r} exists and is not a folder", stage="write"
             )
+        remove_stale_temporaries(folder)
         written = [write_atomic(folder / "recipe.json", dump_recipe(self.recipe))]
         for backend in resolved:
             written.extend(backend.write(self, folder))
@@ -112,4 +130,6 @@ def generate(
         explain=explain,
         max_plants=max_plants,
     )
-    return Scene(resolution.recipe, explanation=resolution.explanation)
+    return Scene(
+        resolution.recipe, explanation=resolution.explanation, knowledge=resolution.knowledge
+    )

@@ -22,6 +22,15 @@ EXAMPLES = sorted(
 )
 
 
+def read_plants_csv_column(path: Path, column: str) -> dict[str, list[int]]:
+    """Per field: one integer column of plants.csv."""
+    values: dict[str, list[int]] = {}
+    with path.open(encoding="utf-8", newline="") as stream:
+        for row in csv.DictReader(stream):
+            values.setdefault(row["field_id"], []).append(int(row[column]))
+    return values
+
+
 def read_plants_csv(path: Path) -> dict[str, np.ndarray]:
     """Per field: an (n, 5) array of x, y, z, yaw_deg, scale."""
     rows: dict[str, list[list[float]]] = {}
@@ -85,20 +94,64 @@ def test_instance_transforms_match_plants_csv(written: tuple[Scene, Path]) -> No
         assert np.abs(difference).max() < math.radians(0.25), spec.id  # half-precision quaternions
 
 
-def test_prototypes_name_the_asset_and_are_sized_like_the_plant(
+def test_prototypes_reference_the_plant_meshes_and_name_the_asset(
     written: tuple[Scene, Path],
 ) -> None:
     scene, folder = written
     stage = Usd.Stage.Open(str(folder / "scene.usda"))
+    variants = {
+        field: np.array(values)
+        for field, values in read_plants_csv_column(folder / "plants.csv", "variant").items()
+    }
+    for spec in scene.recipe.fields:
+        instancer = UsdGeom.PointInstancer(stage.GetPrimAtPath(f"/World/Fields/{spec.id}/Plants"))
+        targets = instancer.GetPrototypesRel().GetTargets()
+        assert len(targets) == 3
+        stem = spec.asset_path.rsplit(".", 1)[1]
+        for variant, target in enumerate(targets):
+            prototype = stage.GetPrimAtPath(target)
+            assert target.name == f"{stem}_v{variant}"
+            assert str(target).startswith(str(instancer.GetPath()))  # not drawn on its own
+            assert prototype.GetAttribute("agrirecipe:asset_path").Get() == spec.asset_path
+            assert prototype.GetAttribute("agrirecipe:crop").Get() == spec.crop
+            assert prototype.GetAttribute("agrirecipe:variety").Get() == spec.variety
+            assert prototype.GetAttribute("agrirecipe:variant").Get() == variant
+            assert prototype.GetAssetInfo()["name"] == stem
+            # The reference resolves: the mesh file is beside the stage and composes in.
+            (reference,) = prototype.GetMetadata("references").GetAddedOrExplicitItems()
+            assert (folder / reference.assetPath).is_file()
+            meshes = [p for p in Usd.PrimRange(prototype) if p.IsA(UsdGeom.Mesh)]
+            assert meshes, f"{target} holds no mesh"
+            bound = UsdGeom.Imageable(prototype).ComputeLocalBound(
+                Usd.TimeCode.Default(), UsdGeom.Tokens.default_
+            )
+            box = bound.ComputeAlignedRange()
+            low, high = np.array(box.GetMin()), np.array(box.GetMax())
+            agronomy = spec.agronomy
+            height, width = agronomy.plant_height_m, agronomy.canopy_width_m
+            assert 0.0 <= low[2] <= max(0.02 * height, 0.01)  # standing on the ground
+            assert high[2] == pytest.approx(height, rel=0.05)
+            # Across the row the canopy; along it a trellis may span the in-row spacing.
+            assert high[0] - low[0] <= 1.05 * width
+            assert high[1] - low[1] <= 1.05 * max(width, agronomy.in_row_spacing_m)
+        # Instance i shows the variant plants.csv names for it.
+        indices = np.array(instancer.GetProtoIndicesAttr().Get())
+        assert np.array_equal(indices, variants[spec.id])
+
+
+def test_a_field_without_a_plant_mesh_gets_a_proxy(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    import agrirecipe.plants as plants
+
+    scene = Scene.from_file(EXAMPLES[0])
+    monkeypatch.setattr(
+        plants, "field_assets", lambda recipe, **_: {spec.id: None for spec in recipe.fields}
+    )
+    stage = get_backend("usd").stage(scene)  # type: ignore[attr-defined]
     for spec in scene.recipe.fields:
         instancer = UsdGeom.PointInstancer(stage.GetPrimAtPath(f"/World/Fields/{spec.id}/Plants"))
         (target,) = instancer.GetPrototypesRel().GetTargets()
-        prototype = stage.GetPrimAtPath(target)
-        assert prototype.GetAttribute("agrirecipe:asset_path").Get() == spec.asset_path
-        assert prototype.GetAttribute("agrirecipe:crop").Get() == spec.crop
-        assert prototype.GetAttribute("agrirecipe:variety").Get() == spec.variety
-        assert prototype.GetAssetInfo()["name"] == spec.asset_path.rsplit(".", 1)[1]
-        assert str(target).startswith(str(instancer.GetPath()))  # beneath: not drawn on its own
         mesh = UsdGeom.Mesh(stage.GetPrimAtPath(target.AppendChild("Proxy")))
         low, high = (np.array(v) for v in mesh.GetExtentAttr().Get())
         assert high[2] == pytest.approx(spec.agronomy.plant_height_m, rel=1e-5)
@@ -126,7 +179,12 @@ def test_stage_is_byte_identical_when_written_again(
     again = get_backend("usd").write(Scene(scene.recipe), tmp_path)
     assert again == [tmp_path / "scene.usda"]
     assert (tmp_path / "scene.usda").read_bytes() == (folder / "scene.usda").read_bytes()
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["scene.usda"]  # no temporary left
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["assets", "scene.usda"]
+    meshes = sorted(p.relative_to(tmp_path) for p in (tmp_path / "assets").rglob("*.usdc"))
+    assert len(meshes) == 3 * len({spec.asset_path for spec in scene.recipe.fields})
+    for relative in meshes:  # the meshes too are byte-identical
+        assert (tmp_path / relative).read_bytes() == (folder / relative).read_bytes()
+    assert not [p for p in tmp_path.rglob(".*")]  # no temporary left
 
 
 def test_sun_light_points_at_the_sun(written: tuple[Scene, Path]) -> None:

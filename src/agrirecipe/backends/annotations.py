@@ -7,7 +7,9 @@ metres, right-handed, X east, Y north, Z up; ``yaw_deg`` is counter-clockwise
 seen from above.
 
 ``plants.csv`` columns: ``field_id, crop, variety, stage, season, health, x_m,
-y_m, z_m, yaw_deg, scale, height_m``; plants in recipe field order, each field
+y_m, z_m, yaw_deg, scale, height_m, variant``; ``variant`` is the shape variant
+the engines draw the plant with (the mesh ``assets/.../SM_..._v<variant>.glb``,
+:func:`agrirecipe.plants.plant_variant`); plants in recipe field order, each field
 in kernel order (the order of its USD ``PointInstancer`` instances). Numbers
 have fixed decimals (positions and heights 0.1 mm, yaw 0.001 degree, scale
 1e-5), so the same recipe and seed give a byte-identical file.
@@ -28,6 +30,7 @@ import numpy as np
 
 from agrirecipe._files import atomic_path, write_atomic
 from agrirecipe.backends._base import Backend
+from agrirecipe.plants import SCENE_VARIANTS, plant_variants
 
 if TYPE_CHECKING:
     from PIL import Image, ImageFont
@@ -58,8 +61,9 @@ CSV_COLUMNS = (
     "yaw_deg",
     "scale",
     "height_m",
+    "variant",
 )
-_ROW_NUMBERS = ",%.4f,%.4f,%.4f,%.3f,%.5f,%.4f\n"
+_ROW_NUMBERS = ",%.4f,%.4f,%.4f,%.3f,%.5f,%.4f,%d\n"
 _CSV_CHUNK = 65_536
 # Okabe-Ito and Tableau hues: distinguishable for colour-blind readers; fields
 # beyond the palette reuse it darker.
@@ -109,6 +113,7 @@ def write_plants_csv(layout: Layout, path: str | Path) -> Path:
     with atomic_path(target) as temporary, temporary.open("w", encoding="utf-8", newline="") as out:
         out.write(",".join(CSV_COLUMNS) + "\n")
         for plants in layout.fields:
+            variants = plant_variants(plants.plant_count, SCENE_VARIANTS)
             # '%' formatting is not applied to the prefix: a name with '%' stays literal.
             row_format = _csv_prefix(plants).replace("%", "%%") + _ROW_NUMBERS
             yaw_deg = np.degrees(plants.yaw_rad)
@@ -121,6 +126,7 @@ def write_plants_csv(layout: Layout, path: str | Path) -> Path:
                     yaw_deg[start:stop].tolist(),
                     plants.scale[start:stop].tolist(),
                     plants.height_m[start:stop].tolist(),
+                    variants[start:stop].tolist(),
                 )
                 out.write("".join(row_format % row for row in zip(*columns, strict=True)))
     return target

@@ -15,12 +15,16 @@ the positions ``plants.csv`` holds. Starting from Blender's empty factory
 scene, it makes:
 
 - per field, a collection named by the field id holding a point-cloud mesh
-  object of that name (one vertex per plant, with ``yaw``, ``scale`` and
-  ``height_m`` point attributes) whose Geometry Nodes modifier instances a
-  proxy plant on every point (Instance on Points; Collection Info + Pick
-  Instance over the field's proxy variants; rotation from ``yaw``, uniform
-  scale from ``scale``), so a million plants build in seconds;
-- procedural proxy plants per growth form (tree, vine, bush, row crop, leafy
+  object of that name (one vertex per plant, with ``yaw``, ``scale``,
+  ``height_m`` and ``variant`` point attributes) whose Geometry Nodes modifier
+  instances a plant on every point (Instance on Points; Collection Info + Pick
+  Instance over the field's shape variants by ``variant``, the column of
+  ``plants.csv``; rotation from ``yaw``, uniform scale from ``scale``), so a
+  million plants build in seconds;
+- the plants are the plant library's meshes (:mod:`agrirecipe.plants`), imported
+  from the ``.glb`` files in ``assets/`` beside the script (written with it);
+  with ``--plants proxies``, or where a file is missing, procedural proxy
+  plants per growth form (tree, vine, bush, row crop, leafy
   head, cereal) built from primitive meshes, sized by the field's plant height
   and canopy width, whose look follows the agronomy's foliage state (leafless
   trees keep only trunk and branches, autumn and senescent colours, blossom
@@ -63,6 +67,7 @@ from agrirecipe.recipe import SceneRecipe
 
 if TYPE_CHECKING:
     from agrirecipe._scene import Scene
+    from agrirecipe.knowledge import KnowledgeBase
 
 __all__ = [
     "ENGINES",
@@ -82,6 +87,9 @@ SCRIPT_NAME = "blender_build.py"
 EngineName = Literal["cycles", "workbench", "eevee"]
 #: Render engines :class:`RenderSettings` accepts (EEVEE works but is very slow on CPU).
 ENGINES: tuple[EngineName, ...] = ("cycles", "workbench", "eevee")
+PlantMode = Literal["meshes", "proxies"]
+#: How plants are drawn: the plant library's meshes, or the builder's proxies.
+PLANT_MODES: tuple[PlantMode, ...] = ("meshes", "proxies")
 _MAX_PIXELS_PER_SIDE = 16384
 _MAX_SAMPLES = 4096
 _LOG_LINES = 25
@@ -91,7 +99,8 @@ _LOG_LINES = 25
 class RenderSettings:
     """How a generated script renders: image size, samples and engine.
 
-    The defaults render a 960 x 540 image with 16 CPU Cycles samples, denoised.
+    The defaults render a 960 x 540 image with 16 CPU Cycles samples, denoised,
+    with the plant library's meshes (``plants="proxies"``: the simple proxies).
     Out-of-range values raise :class:`~agrirecipe.ConfigurationError`.
     """
 
@@ -99,6 +108,7 @@ class RenderSettings:
     samples: int = 16
     engine: EngineName = "cycles"
     denoise: bool = True
+    plants: PlantMode = "meshes"
 
     def __post_init__(self) -> None:
         resolution = self.resolution
@@ -129,6 +139,12 @@ class RenderSettings:
                 stage="render",
                 hint="engines: " + ", ".join(ENGINES),
             )
+        if self.plants not in PLANT_MODES:
+            raise ConfigurationError(
+                f"unknown plant mode {self.plants!r}",
+                stage="render",
+                hint="plants: " + ", ".join(PLANT_MODES),
+            )
 
 
 @dataclass(frozen=True)
@@ -154,6 +170,10 @@ def _recipe_of(scene: Scene | SceneRecipe) -> SceneRecipe:
     return scene if isinstance(scene, SceneRecipe) else scene.recipe
 
 
+def _knowledge_of(scene: Scene | SceneRecipe) -> KnowledgeBase | None:
+    return None if isinstance(scene, SceneRecipe) else scene.knowledge
+
+
 def scene_description(
     scene: Scene | SceneRecipe, style: BlenderStyle | None = None
 ) -> dict[str, Any]:
@@ -165,9 +185,11 @@ def scene_description(
     from agrirecipe import __version__
     from agrirecipe.layout import field_parameters
     from agrirecipe.layout._kernel import KERNEL_MIN_SCALE, KERNEL_VERSION
+    from agrirecipe.plants import field_assets
 
     recipe = _recipe_of(scene)
     style = style or load_style()
+    assets = field_assets(recipe, knowledge=_knowledge_of(scene))
     fields = []
     for spec, params in zip(recipe.fields, field_parameters(recipe), strict=True):
         variation = spec.placement.size_variation
@@ -187,6 +209,9 @@ def scene_description(
                 "max_plant_height_m": round(tallest, 6),
                 "params": params,
                 "proxy": proxy_plan(spec, style),
+                "assets": None
+                if (asset := assets[spec.id]) is None
+                else {"files": list(asset.files), "scale": list(asset.scale)},
             }
         )
     colours = style.colours
@@ -230,7 +255,11 @@ def _builder_source() -> str:
 
 
 def _settings_block(
-    settings: RenderSettings, render_png: str | None, save_blend: str | None, verbose: bool
+    settings: RenderSettings,
+    render_png: str | None,
+    save_blend: str | None,
+    verbose: bool,
+    assets_root: str | None,
 ) -> str:
     width, height = settings.resolution
     return "\n".join(
@@ -243,6 +272,8 @@ def _settings_block(
             f"RENDER_PNG = {render_png!r}  # a .png path to render to after building",
             f"SAVE_BLEND = {save_blend!r}  # a .blend path to save the built scene to",
             f"VERBOSE = {verbose!r}  # print progress",
+            f"PLANTS = {settings.plants!r}  # 'meshes' (the .glb files in assets/) or 'proxies'",
+            f"ASSETS_ROOT = {assets_root!r}  # the folder holding assets/ (None: this script's)",
         ]
     )
 
@@ -254,7 +285,7 @@ _HEADER = '''\
 #     blender -b -P {script} -- --render scene.png --resolution 1920x1080
 #     python {script} --render scene.png --save scene.blend   (bpy module)
 # Options: --render PNG, --save BLEND, --resolution WxH, --samples N,
-#          --engine cycles|workbench|eevee
+#          --engine cycles|workbench|eevee, --plants meshes|proxies, --assets DIR
 # Without options the scene is only built (headless: nothing is written).
 # {fields} field(s), {nominal:,} planting positions; agrirecipe {version}.
 """Build an agrirecipe scene in Blender (generated by agrirecipe's Blender backend)."""
@@ -279,6 +310,8 @@ if __name__ == "__main__":
             "render_png": RENDER_PNG,
             "save_blend": SAVE_BLEND,
             "verbose": VERBOSE,
+            "plants": PLANTS,
+            "assets_root": ASSETS_ROOT,
         },
         sys.argv,
     )
@@ -292,11 +325,14 @@ def blender_script(
     render_png: str | os.PathLike[str] | None = None,
     save_blend: str | os.PathLike[str] | None = None,
     verbose: bool = True,
+    assets_root: str | os.PathLike[str] | None = None,
 ) -> str:
     """The bpy script that builds ``scene`` (see the module docstring).
 
     ``settings`` become the variables at the script's top; with ``render_png``
     (or ``save_blend``) the script also renders (or saves) after building.
+    ``assets_root`` is the folder whose ``assets/`` holds the plant meshes
+    (default: the folder the script is run from).
     """
     from agrirecipe import __version__
     from agrirecipe.layout import kernel_source
@@ -316,6 +352,7 @@ def blender_script(
             None if render_png is None else os.fspath(render_png),
             None if save_blend is None else os.fspath(save_blend),
             verbose,
+            None if assets_root is None else os.fspath(assets_root),
         ),
         "\n\n# --- placement kernel: agrirecipe.layout, inlined verbatim ---\n",
         kernel_source().rstrip(),
@@ -339,7 +376,10 @@ class BlenderBackend(Backend):
         return blender_script(scene)
 
     def write(self, scene: Scene, directory: Path) -> list[Path]:
-        """Write ``blender_build.py`` into ``directory`` atomically."""
+        """Write ``blender_build.py`` into ``directory`` atomically, its meshes to ``assets/``."""
+        from agrirecipe.plants import write_scene_assets
+
+        write_scene_assets(scene.recipe, directory, knowledge=scene.knowledge)
         return [write_atomic(Path(directory) / SCRIPT_NAME, self.script(scene))]
 
 
@@ -372,6 +412,8 @@ def _run_in_process(script: str) -> dict[str, Any]:
             "render_png": namespace["RENDER_PNG"],
             "save_blend": namespace["SAVE_BLEND"],
             "verbose": namespace["VERBOSE"],
+            "plants": namespace["PLANTS"],
+            "assets_root": namespace["ASSETS_ROOT"],
         }
         report: dict[str, Any] = namespace["main"](
             namespace["SCENE"], namespace["place_field"], settings, ()
@@ -413,13 +455,27 @@ def _run_isolated(script: str, timeout_s: float | None) -> None:
         )
 
 
+def _cached_assets(scene: Scene | SceneRecipe) -> Path:
+    """A folder whose ``assets/`` holds the scene's plant meshes (in the cache folder)."""
+    from agrirecipe.knowledge import default_knowledge_base
+    from agrirecipe.localmodels import cache_dir
+    from agrirecipe.plants import write_scene_assets
+
+    knowledge = _knowledge_of(scene) or default_knowledge_base()
+    root = cache_dir() / "plants" / knowledge.digest()[:16]
+    write_scene_assets(_recipe_of(scene), root, knowledge=knowledge)
+    return root
+
+
 def build(scene: Scene | SceneRecipe, *, verbose: bool = False) -> BuildReport:
     """Build the scene in this process's ``bpy`` (replacing whatever Blender held).
 
     Needs the ``bpy`` module (``pip install 'agrirecipe[blender]'``); Blender
     errors raise :class:`~agrirecipe.BackendError`.
     """
-    report = _run_in_process(blender_script(scene, verbose=verbose))
+    report = _run_in_process(
+        blender_script(scene, verbose=verbose, assets_root=_cached_assets(scene))
+    )
     return BuildReport(
         plants=dict(report["plants"]),
         seconds=float(report["seconds"]),
@@ -435,6 +491,7 @@ def render(
     samples: int = 16,
     engine: EngineName = "cycles",
     denoise: bool = True,
+    plants: PlantMode = "meshes",
     isolated: bool = False,
     timeout_s: float | None = None,
     save_blend: str | os.PathLike[str] | None = None,
@@ -453,7 +510,7 @@ def render(
     :class:`~agrirecipe.BackendError`.
     """
     settings = RenderSettings(
-        resolution=resolution, samples=samples, engine=engine, denoise=denoise
+        resolution=resolution, samples=samples, engine=engine, denoise=denoise, plants=plants
     )
     target = Path(png_path)
     if target.suffix.lower() != ".png":
@@ -475,7 +532,12 @@ def render(
             )
         blend.parent.mkdir(parents=True, exist_ok=True)
     script = blender_script(
-        scene, settings, render_png=temporary, save_blend=blend, verbose=verbose
+        scene,
+        settings,
+        render_png=temporary,
+        save_blend=blend,
+        verbose=verbose,
+        assets_root=_cached_assets(scene) if settings.plants == "meshes" else None,
     )
     try:
         if isolated:

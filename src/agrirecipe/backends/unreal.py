@@ -63,7 +63,10 @@ from agrirecipe.backends._base import Backend
 from agrirecipe.hierarchy import pascal_case
 
 if TYPE_CHECKING:
+    from collections.abc import Mapping
+
     from agrirecipe._scene import Scene
+    from agrirecipe.plants import FieldAsset
     from agrirecipe.recipe import FieldSpec, SceneRecipe, Sun
 
 __all__ = [
@@ -81,7 +84,7 @@ SCENE_FORMAT = 1
 
 _SCENE_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,63}")
 # Names the generated script binds after the kernel and the runtime.
-_SCRIPT_NAMES = frozenset({"SCENE_JSON", "AGRIRECIPE_RESULT"})
+_SCRIPT_NAMES = frozenset({"SCENE_JSON", "AGRIRECIPE_RESULT", "ASSETS_ROOT"})
 # Kernel entry points, best first: a generator keeps a million plants out of memory.
 _KERNEL_ENTRY_POINTS = ("iter_field_plants", "place_field")
 _MAX_CHUNK_SIZE = 1_000_000
@@ -169,22 +172,35 @@ class UnrealBackend(Backend):
     def script(self, scene: Scene) -> str:
         """The editor Python that builds ``scene`` in Unreal (deterministic text)."""
         from agrirecipe.layout import field_parameters, kernel_source
+        from agrirecipe.plants import field_assets
 
         kernel = kernel_source()
         runtime = _runtime_source()
         entry_point = _check_sources(kernel, runtime)
-        document = self.scene_document(scene.recipe, field_parameters(scene.recipe))
+        assets = field_assets(scene.recipe, knowledge=scene.knowledge)
+        document = self.scene_document(scene.recipe, field_parameters(scene.recipe), assets)
         return _assemble(kernel, runtime, document, scene.recipe, entry_point)
 
     def write(self, scene: Scene, directory: Path) -> list[Path]:
-        """Write ``unreal_build.py`` into ``directory`` atomically."""
+        """Write ``unreal_build.py`` into ``directory`` atomically, its meshes to ``assets/``."""
+        from agrirecipe.plants import write_scene_assets
+
+        write_scene_assets(scene.recipe, directory, knowledge=scene.knowledge)
         return [write_atomic(Path(directory) / SCRIPT_NAME, self.script(scene))]
 
     def scene_document(
-        self, recipe: SceneRecipe, kernel_parameters: list[dict[str, Any]]
+        self,
+        recipe: SceneRecipe,
+        kernel_parameters: list[dict[str, Any]],
+        assets: Mapping[str, FieldAsset | None] | None = None,
     ) -> dict[str, Any]:
-        """The JSON-able description the script's runtime builds (all values pre-converted)."""
+        """The JSON-able description the script's runtime builds (all values pre-converted).
+
+        ``assets`` are the fields' plant meshes (:func:`agrirecipe.plants.field_assets`);
+        without them every field falls back to its project asset or a basic shape.
+        """
         defaults = _defaults()
+        assets = assets or {}
         by_id = {str(params["id"]): params for params in kernel_parameters}
         missing = [spec.id for spec in recipe.fields if spec.id not in by_id]
         if missing:
@@ -195,7 +211,8 @@ class UnrealBackend(Backend):
         scene_name = self.scene_name or default_scene_name(recipe)
         root = f"{defaults['folder_root']}/{scene_name}"
         fields = [
-            self._field_document(spec, by_id[spec.id], root, defaults) for spec in recipe.fields
+            self._field_document(spec, by_id[spec.id], root, defaults, assets.get(spec.id))
+            for spec in recipe.fields
         ]
         nominal = recipe.nominal_plant_count
         # One unit per plant, plus one per field set-up and ground, plus the light.
@@ -250,6 +267,7 @@ class UnrealBackend(Backend):
         kernel_parameters: dict[str, Any],
         root: str,
         defaults: dict[str, Any],
+        asset: FieldAsset | None,
     ) -> dict[str, Any]:
         geometry = spec.geometry
         fallback = defaults["fallback_meshes"].get(spec.agronomy.growth_form)
@@ -269,6 +287,7 @@ class UnrealBackend(Backend):
             "label": spec.label,
             "folder": f"{root}/{spec.id}",
             "asset_path": spec.asset_path,
+            "plant_meshes": None if asset is None else _plant_meshes(spec, asset),
             "fallback_mesh": fallback,
             "canopy_width_m": spec.agronomy.canopy_width_m,
             "foliage_rgb": list(spec.agronomy.foliage_rgb),
@@ -279,9 +298,10 @@ class UnrealBackend(Backend):
             "progress_plants": f"agrirecipe: field {spec.id}: plants",
             "progress_ground": f"agrirecipe: field {spec.id}: ground",
             "log_missing_asset": (
-                f"agrirecipe: asset {spec.asset_path} is not a static mesh in this project; "
-                f"field {spec.id} is drawn with the placeholder {fallback} (import the asset "
-                "pack, or map the catalogue to your own meshes, to see the real plants)"
+                f"agrirecipe: asset {spec.asset_path} is not a static mesh in this project "
+                f"and its plant meshes could not be imported; field {spec.id} is drawn with "
+                f"the placeholder {fallback} (keep the assets/ folder beside this script, "
+                "or import your own asset pack, to see the real plants)"
             ),
             "ground": {
                 "label": f"{spec.label} ground",
@@ -291,6 +311,17 @@ class UnrealBackend(Backend):
                 "scale": [width_m, length_m, 1.0],
             },
         }
+
+
+def _plant_meshes(spec: FieldSpec, asset: FieldAsset) -> dict[str, Any]:
+    """Where a field's shape variants are and where they are imported to in the project."""
+    folder, _, _ = spec.asset_path.rpartition("/")
+    return {
+        "files": list(asset.files),
+        "destination_path": folder,
+        "names": [Path(relative).stem for relative in asset.files],
+        "scale": list(asset.scale),
+    }
 
 
 def default_scene_name(recipe: SceneRecipe) -> str:
@@ -415,7 +446,9 @@ def _assemble(
         )
         + "# Plants are placed by the agrirecipe placement kernel below, the same code\n"
         "# that wrote plants.csv, from the per-field parameters in SCENE_JSON.\n"
-        "# Assets missing from the project are replaced by engine basic shapes with a\n"
+        "# A field's asset from the project is used when it exists; otherwise the plant\n"
+        "# meshes in assets/ beside this script are imported (once) into that content\n"
+        "# folder, and only without them does an engine basic shape stand in, with a\n"
         "# warning in the Output Log.\n"
     )
     return (
@@ -429,5 +462,7 @@ def _assemble(
         + "SCENE_JSON = (\n"
         + _string_literal_lines(document_text, "    ")
         + "\n)\n\n"
-        + f"AGRIRECIPE_RESULT = run(SCENE_JSON, {entry_point})\n"
+        + "# The folder holding the plant meshes' assets/ folder (None: this script's folder).\n"
+        + "ASSETS_ROOT = None\n\n"
+        + f"AGRIRECIPE_RESULT = run(SCENE_JSON, {entry_point}, ASSETS_ROOT)\n"
     )

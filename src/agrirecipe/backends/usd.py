@@ -1,9 +1,12 @@
 """The OpenUSD backend: ``scene.usda``, one ``PointInstancer`` per field.
 
 The stage opens in usdview, Isaac Sim, Omniverse and Unreal's USD importer
-without our asset pack: every prototype carries a simple proxy mesh sized like
-the plant (canopy width x height at this stage) and coloured like its foliage,
-and names the Unreal asset it stands for. Layout::
+without our asset pack: each field's prototypes reference the plant library's
+meshes for its asset (one prototype per shape variant, ``assets/.../SM_..._v<N>.usdc``
+written beside the stage, see :mod:`agrirecipe.plants`), and name the Unreal
+asset they stand for. A field whose crop the knowledge base cannot draw gets a
+simple proxy mesh sized like the plant (canopy width x height at this stage)
+and coloured like its foliage instead. Layout::
 
     /World                       Xform, default prim, kind = assembly
         Sun                      DistantLight from the recipe's sun
@@ -11,12 +14,14 @@ and names the Unreal asset it stands for. Layout::
         Fields/<field id>        Xform with the field's attributes (agrirecipe:*)
             Ground               soil quad over the field rectangle, z = 0
             Plants               PointInstancer: positions, orientations, scales, protoIndices
-                Prototypes/<SM_...>  the asset: assetInfo, agrirecipe:asset_path, crop attributes
-                    Proxy        Mesh
+                Prototypes/<SM_..._vN>  one shape variant: references @./assets/...usdc@,
+                                 assetInfo, agrirecipe:asset_path, crop attributes
+                                 (or <SM_...> with a Proxy mesh child)
 
 Units and axes: ``metersPerUnit = 1``, ``upAxis = Z``, right-handed, X east,
 Y north, exactly the recipe's frame. Instance ``i`` of a field's instancer is
-the field's ``i``-th row of ``plants.csv``. Orientations are half-precision
+the field's ``i``-th row of ``plants.csv``, and shows the prototype of its
+``variant`` column. Orientations are half-precision
 quaternions (the schema's ``quath[]``) for a yaw about Z; positions and scales
 are single precision, as the schema stores them.
 
@@ -42,6 +47,7 @@ from agrirecipe.backends._base import Backend
 if TYPE_CHECKING:
     from agrirecipe._scene import Scene
     from agrirecipe.layout import FieldPlants
+    from agrirecipe.plants import FieldAsset
     from agrirecipe.recipe import FieldSpec, GrowthForm, SceneRecipe
 
 __all__ = ["STAGE_NAME", "UsdBackend", "proxy_mesh", "yaw_quaternions"]
@@ -149,10 +155,13 @@ class UsdBackend(Backend):
     outputs: ClassVar[tuple[str, ...]] = (STAGE_NAME,)
 
     def write(self, scene: Scene, directory: Path) -> list[Path]:
-        """Build the stage in memory and export it atomically to ``directory/scene.usda``."""
+        """Export the stage atomically to ``directory/scene.usda``, its meshes to ``assets/``."""
+        from agrirecipe.plants import write_scene_assets
+
         tf = _import_pxr()
         target = Path(directory) / STAGE_NAME
         try:
+            write_scene_assets(scene.recipe, directory, knowledge=scene.knowledge, usd=True)
             stage = _build_stage(scene)
             with atomic_path(target, suffix=".usda") as temporary:
                 if not stage.GetRootLayer().Export(str(temporary)):
@@ -195,6 +204,8 @@ def _import_pxr() -> Any:
 def _build_stage(scene: Scene) -> Any:
     from pxr import Kind, Sdf, Usd, UsdGeom
 
+    from agrirecipe.plants import field_assets
+
     recipe = scene.recipe
     stage = Usd.Stage.CreateInMemory()
     UsdGeom.SetStageUpAxis(stage, UsdGeom.Tokens.z)
@@ -219,13 +230,14 @@ def _build_stage(scene: Scene) -> Any:
     _add_sun(stage, recipe)
     _add_surroundings(stage, recipe)
     UsdGeom.Scope.Define(stage, "/World/Fields")
+    assets = field_assets(recipe, knowledge=scene.knowledge)
     for plants in scene.layout.fields:
         spec = plants.spec
         field_path = Sdf.Path("/World/Fields").AppendChild(spec.id)
         field_prim = UsdGeom.Xform.Define(stage, field_path).GetPrim()
         _set_attributes(field_prim, plants.attributes())
         _add_ground(stage, field_path.AppendChild("Ground"), spec)
-        _add_instancer(stage, field_path.AppendChild("Plants"), plants)
+        _add_instancer(stage, field_path.AppendChild("Plants"), plants, assets[spec.id])
     return stage
 
 
@@ -309,25 +321,81 @@ def _add_surroundings(stage: Any, recipe: SceneRecipe) -> None:
     )
 
 
-def _add_instancer(stage: Any, path: Any, plants: FieldPlants) -> None:
-    from pxr import Gf, Sdf, Tf, Usd, UsdGeom, Vt
+def _add_instancer(stage: Any, path: Any, plants: FieldPlants, asset: FieldAsset | None) -> None:
+    from pxr import Gf, Tf, UsdGeom, Vt
+
+    from agrirecipe.plants import plant_variants
 
     spec = plants.spec
     agronomy = spec.agronomy
     instancer = UsdGeom.PointInstancer.Define(stage, path)
     prototypes = UsdGeom.Scope.Define(stage, path.AppendChild("Prototypes"))
     asset_name = Tf.MakeValidIdentifier(spec.asset_path.rsplit(".", 1)[-1])
-    prototype_path = prototypes.GetPath().AppendChild(asset_name)
-    prototype = UsdGeom.Xform.Define(stage, prototype_path).GetPrim()
-    prototype.SetAssetInfoByKey("name", asset_name)
-    prototype.SetAssetInfoByKey("identifier", Sdf.AssetPath(spec.asset_path))
     field_attributes = plants.attributes()
     asset_attributes = {key: field_attributes[key] for key in _ASSET_ATTRIBUTES}
-    _set_attributes(prototype, asset_attributes | {"canopy_width_m": agronomy.canopy_width_m})
+    asset_attributes |= {"canopy_width_m": agronomy.canopy_width_m}
+    prototype_paths = []
+    if asset is None:
+        prototype_path = prototypes.GetPath().AppendChild(asset_name)
+        prototype = UsdGeom.Xform.Define(stage, prototype_path).GetPrim()
+        _describe_prototype(prototype, asset_name, spec.asset_path, asset_attributes)
+        _add_proxy(stage, prototype_path.AppendChild("Proxy"), agronomy)
+        prototype_paths.append(prototype_path)
+    else:
+        for variant in range(asset.variants):
+            prototype_path = prototypes.GetPath().AppendChild(f"{asset_name}_v{variant}")
+            xform = UsdGeom.Xform.Define(stage, prototype_path)
+            prototype = xform.GetPrim()
+            prototype.GetReferences().AddReference(f"./{asset.usd_file(variant)}")
+            if asset.scale != (1.0, 1.0, 1.0):
+                xform.AddScaleOp().Set(Gf.Vec3f(*asset.scale))
+            _describe_prototype(
+                prototype,
+                asset_name,
+                spec.asset_path,
+                asset_attributes | {"variant": variant, "mesh_file": asset.files[variant]},
+            )
+            prototype_paths.append(prototype_path)
+
+    instancer.CreatePrototypesRel().SetTargets(prototype_paths)
+    count = plants.plant_count
+    indices = plant_variants(count, len(prototype_paths))
+    instancer.CreateProtoIndicesAttr(Vt.IntArray.FromNumpy(indices))
+    instancer.CreatePositionsAttr(Vt.Vec3fArray.FromNumpy(plants.xyz.astype(np.float32)))
+    instancer.CreateOrientationsAttr(Vt.QuathArray.FromNumpy(yaw_quaternions(plants.yaw_rad)))
+    scales = np.repeat(plants.scale.astype(np.float32)[:, None], 3, axis=1)
+    instancer.CreateScalesAttr(Vt.Vec3fArray.FromNumpy(scales))
+    # Extent: every instance fits in a cylinder of the canopy radius, scaled (meshes
+    # reach at most 5 % beyond the canopy the knowledge base gives).
+    reach = 1.05 * agronomy.canopy_width_m / 2.0 * float(plants.scale.max()) if count else 0.0
+    low = plants.xyz.min(axis=0) - reach if count else np.zeros(3)
+    high = plants.xyz.max(axis=0) + reach if count else np.zeros(3)
+    top = 1.05 * agronomy.plant_height_m * (float(plants.scale.max()) if count else 1.0)
+    instancer.CreateExtentAttr(
+        [
+            Gf.Vec3f(float(low[0]), float(low[1]), 0.0),
+            Gf.Vec3f(float(high[0]), float(high[1]), top),
+        ]
+    )
+
+
+def _describe_prototype(
+    prototype: Any, name: str, asset_path: str, attributes: Mapping[str, Any]
+) -> None:
+    from pxr import Sdf
+
+    prototype.SetAssetInfoByKey("name", name)
+    prototype.SetAssetInfoByKey("identifier", Sdf.AssetPath(asset_path))
+    _set_attributes(prototype, attributes)
+
+
+def _add_proxy(stage: Any, path: Any, agronomy: Any) -> None:
+    from pxr import Gf, Usd, UsdGeom
+
     points, counts, indices, colours = proxy_mesh(
         agronomy.growth_form, agronomy.plant_height_m, agronomy.canopy_width_m, agronomy.foliage_rgb
     )
-    mesh = UsdGeom.Mesh.Define(stage, prototype_path.AppendChild("Proxy"))
+    mesh = UsdGeom.Mesh.Define(stage, path)
     mesh.CreatePointsAttr([Gf.Vec3f(*p) for p in points])
     mesh.CreateFaceVertexCountsAttr(counts)
     mesh.CreateFaceVertexIndicesAttr(indices)
@@ -335,22 +403,3 @@ def _add_instancer(stage: Any, path: Any, plants: FieldPlants) -> None:
     colour = mesh.CreateDisplayColorPrimvar(UsdGeom.Tokens.vertex)
     colour.Set([Gf.Vec3f(*c) for c in colours])
     mesh.CreateExtentAttr(UsdGeom.Boundable.ComputeExtentFromPlugins(mesh, Usd.TimeCode.Default()))
-
-    instancer.CreatePrototypesRel().SetTargets([prototype_path])
-    count = plants.plant_count
-    instancer.CreateProtoIndicesAttr(Vt.IntArray.FromNumpy(np.zeros(count, dtype=np.int32)))
-    instancer.CreatePositionsAttr(Vt.Vec3fArray.FromNumpy(plants.xyz.astype(np.float32)))
-    instancer.CreateOrientationsAttr(Vt.QuathArray.FromNumpy(yaw_quaternions(plants.yaw_rad)))
-    scales = np.repeat(plants.scale.astype(np.float32)[:, None], 3, axis=1)
-    instancer.CreateScalesAttr(Vt.Vec3fArray.FromNumpy(scales))
-    # Extent: every instance's proxy fits in a cylinder of the canopy radius, scaled.
-    reach = agronomy.canopy_width_m / 2.0 * float(plants.scale.max()) if count else 0.0
-    low = plants.xyz.min(axis=0) - reach if count else np.zeros(3)
-    high = plants.xyz.max(axis=0) + reach if count else np.zeros(3)
-    top = agronomy.plant_height_m * (float(plants.scale.max()) if count else 1.0)
-    instancer.CreateExtentAttr(
-        [
-            Gf.Vec3f(float(low[0]), float(low[1]), 0.0),
-            Gf.Vec3f(float(high[0]), float(high[1]), top),
-        ]
-    )

@@ -496,7 +496,43 @@ def resolve_weak_varieties(mention: Mention) -> None:
             item.role = "head"
             mention.heads.append(item)
             continue
+        # "Russet field": a name, not a colour, right before a plot of any crop names
+        # the plot's variety (the mention names no crop of its own).
+        named: list[Interpretation] = [
+            (s.crop, str(s.value), False) for s in item.senses_of("variety") if s.crop
+        ]
+        if (
+            len({crop for crop, _, _ in named}) == 1
+            and mention.interpretations is None
+            and _names_plot(mention, item)
+        ):
+            mention.interpretations = named
+            item.role = "head"
+            mention.heads.append(item)
+            continue
         item.role = "filler"
+
+
+def _names_plot(mention: Mention, item: Item) -> bool:
+    """Whether ``item`` stands right before the mention's plot noun, which holds any crop,
+    and is not also a colour word ("golden field" is a colour)."""
+    if mention.plot is None or mention.plot.get("options") or mention.plot.get("category"):
+        return False
+    if item.norm in _colour_words():
+        return False
+    position = next((k for k, i in enumerate(mention.items) if i is item), None)
+    following = (
+        mention.items[position + 1]
+        if position is not None and position + 1 < len(mention.items)
+        else None
+    )
+    return following is not None and following.role == "plot"
+
+
+@functools.lru_cache(maxsize=1)
+def _colour_words() -> frozenset[str]:
+    words = vocabulary()["colour_words"]
+    return frozenset(str(w) for group in words.values() for w in group)
 
 
 def decompose(items: Sequence[Item], builder: MentionBuilder) -> list[Clause]:

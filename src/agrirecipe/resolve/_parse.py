@@ -297,8 +297,22 @@ class PromptReader(FieldReading):
         )
 
     def _reject_other_crops(self, items: Sequence[Item]) -> None:
-        for item in items:
+        generic = {str(word) for word in vocabulary()["generic_vegetation"]}
+        for index, item in enumerate(items):
             if item.role != "other_crop":
+                continue
+            following = items[index + 1] if index + 1 < len(items) else None
+            before = items[index - 1] if index else None
+            listed = any(n is not None and n.role == "conjunction" for n in (before, following))
+            if (
+                item.norm in generic
+                and not listed
+                and (following is None or following.role != "plot")
+            ):
+                # "the grass white underneath": the scenery's grass, not a grass crop
+                # ("a grass field", "grass and wheat" still ask for it and are refused).
+                item.role = "filler"
+                item.data["scenery"] = "vegetation"
                 continue
             other: OtherCrop = item.senses_of("other_crop")[0].value
             if other.variety_of is not None:

@@ -73,6 +73,7 @@ class Resolution:
     recipe: SceneRecipe
     intent: SceneIntent
     explanation: Explanation | None = None
+    knowledge: KnowledgeBase | None = None
 
 
 def resolve(
@@ -153,7 +154,7 @@ def resolve(
             steps=(*intent.trace, *steps),
             warnings=recipe.warnings,
         )
-    return Resolution(recipe=recipe, intent=intent, explanation=explanation)
+    return Resolution(recipe=recipe, intent=intent, explanation=explanation, knowledge=kb)
 
 
 def _hierarchy(value: Hierarchy | str | Path | None) -> Hierarchy:

@@ -48,6 +48,7 @@ def _instances(obj: Any, depsgraph: Any) -> dict[str, Any]:
         "scale_z": np.linalg.norm(columns[:, 2, :3], axis=1).tolist(),
         "references": references,
         "reference_counts": np.bincount(variants, minlength=len(references)).tolist(),
+        "reference_index": variants.tolist(),
         "attributes": sorted(a.name for a in cloud.attributes if not a.name.startswith(".")),
     }
 
@@ -63,9 +64,11 @@ def _proxies(collection: Any) -> list[dict[str, Any]]:
         proxies.append(
             {
                 "name": obj.name,
-                "parts": list(obj["agrirecipe_parts"]),
+                "role": obj.get("agrirecipe_role"),
+                "mesh_file": obj.get("agrirecipe_mesh_file"),
+                "parts": list(obj.get("agrirecipe_parts", [])),
                 "materials": {
-                    mesh.materials[slot].name: list(mesh.materials[slot]["agrirecipe_srgb"])
+                    mesh.materials[slot].name: list(mesh.materials[slot].get("agrirecipe_srgb", []))
                     for slot in sorted(used_slots)
                 },
                 "faces": len(mesh.polygons),

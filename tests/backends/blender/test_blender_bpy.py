@@ -9,9 +9,12 @@ from typing import Any
 import numpy as np
 import pytest
 from blender_recipes import HOSTILE, mixed_recipe, single_field_recipe
-from blender_runner import build_in_bpy
+from blender_runner import build_in_bpy, run_in_bpy
 
+from agrirecipe import Scene
+from agrirecipe.backends.blender import BlenderBackend
 from agrirecipe.layout import layout_scene
+from agrirecipe.plants import plant_variants
 from agrirecipe.recipe import SceneRecipe
 
 pytestmark = pytest.mark.slow
@@ -27,8 +30,8 @@ def recipe() -> SceneRecipe:
 
 @pytest.fixture(scope="module")
 def built(recipe: SceneRecipe, tmp_path_factory: pytest.TempPathFactory) -> dict[str, Any]:
-    """The mixed recipe built once in bpy and described by the probe."""
-    return build_in_bpy(recipe, tmp_path_factory.mktemp("mixed"))
+    """The mixed recipe built once in bpy with proxy plants, described by the probe."""
+    return build_in_bpy(recipe, tmp_path_factory.mktemp("mixed"), ["--plants", "proxies"])
 
 
 def test_every_field_instances_exactly_the_layout_plants(
@@ -188,3 +191,60 @@ def test_hostile_label_is_kept_as_text_and_options_override_settings(tmp_path: P
     assert built["render"]["engine"] == "BLENDER_WORKBENCH"
     assert built["render"]["resolution"] == [320, 180]
     assert built["fields"]["plot"]["instances"]["count"] == layout_scene(recipe).plant_count
+
+
+@pytest.fixture(scope="module")
+def built_meshes(
+    recipe: SceneRecipe, tmp_path_factory: pytest.TempPathFactory
+) -> tuple[dict[str, Any], Path]:
+    """The mixed recipe built in bpy with the plant library's meshes (the default)."""
+    folder = tmp_path_factory.mktemp("meshes")
+    return build_in_bpy(recipe, folder), folder
+
+
+def test_plants_are_the_library_meshes_imported_from_assets(
+    recipe: SceneRecipe, built_meshes: tuple[dict[str, Any], Path]
+) -> None:
+    built, folder = built_meshes
+    layout = layout_scene(recipe)
+    for plants in layout.fields:
+        spec = plants.spec
+        described = built["fields"][spec.id]
+        assert described["properties"]["agrirecipe_plants"] == "meshes"
+        meshes = described["proxies"]
+        assert [m["name"] for m in meshes] == [f"{spec.id}_plant_{v}" for v in range(3)]
+        for mesh in meshes:
+            assert mesh["role"] == "plant"
+            assert (folder / mesh["mesh_file"]).is_file()  # written beside the script
+            min_x, _, min_z, max_x, _, max_z = mesh["bounds"]
+            height = spec.agronomy.plant_height_m
+            assert max_z == pytest.approx(height, rel=0.05)  # glTF's Y up is Z up again
+            assert 0.0 <= min_z <= max(0.02 * height, 0.01)
+            assert max_x - min_x <= 1.05 * spec.agronomy.canopy_width_m
+        instances = described["instances"]
+        assert instances["count"] == plants.plant_count
+        xyz = np.array(instances["xyz"])
+        np.testing.assert_allclose(xyz, plants.xyz, rtol=0, atol=POSITION_TOLERANCE_M)
+
+
+def test_each_plant_shows_the_variant_plants_csv_names(
+    recipe: SceneRecipe, built_meshes: tuple[dict[str, Any], Path]
+) -> None:
+    built, _ = built_meshes
+    for plants in layout_scene(recipe).fields:
+        instances = built["fields"][plants.field_id]["instances"]
+        names = instances["references"]
+        shown = [int(names[i].rsplit("_", 1)[1]) for i in instances["reference_index"]]
+        assert shown == plant_variants(plants.plant_count, 3).tolist()
+
+
+def test_a_missing_mesh_file_falls_back_to_proxies(tmp_path: Path) -> None:
+    recipe = single_field_recipe()
+    BlenderBackend().write(Scene(recipe), tmp_path)
+    for mesh in (tmp_path / "assets").rglob("*_v1.glb"):
+        mesh.unlink()
+    built = run_in_bpy(tmp_path / "blender_build.py", tmp_path / "probe.json")
+    described = built["fields"]["plot"]
+    assert described["properties"]["agrirecipe_plants"] == "proxies"
+    assert "is missing; drawing proxies" in built["log"]
+    assert described["instances"]["count"] == layout_scene(recipe).plant_count

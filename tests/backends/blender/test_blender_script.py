@@ -168,7 +168,7 @@ def test_backend_is_registered_and_writes_its_script(tmp_path: Path) -> None:
     written = backend.write(scene, tmp_path / "out")
     assert written == [tmp_path / "out" / SCRIPT_NAME]
     assert written[0].read_text(encoding="utf-8") == scene.script("blender")
-    assert sorted(p.name for p in (tmp_path / "out").iterdir()) == [SCRIPT_NAME]
+    assert sorted(p.name for p in (tmp_path / "out").iterdir()) == ["assets", SCRIPT_NAME]
 
 
 def test_scene_write_includes_the_blender_script(tmp_path: Path) -> None:

@@ -13,8 +13,14 @@ where it matters for placement:
   an actor without one;
 - ``add_instances(..., world_space=True)`` stores instances relative to the
   component (the actor's location subtracted), as the engine does;
-- ``EditorAssetLibrary`` knows only the project assets it was given; engine
-  basic shapes and ``BasicShapeMaterial`` always load;
+- ``EditorAssetLibrary`` knows only the project assets it was given and those
+  imported while the script runs; engine basic shapes and
+  ``BasicShapeMaterial`` always load;
+- ``AssetTools.import_asset_tasks`` imports a glTF binary the way Interchange
+  does: it reads the file (failing on anything that is not glTF 2.0), names the
+  static mesh after the file's first mesh (Interchange ignores
+  ``destination_name``), creates one material asset per glTF material, and
+  fills ``imported_object_paths``;
 - every state change is recorded with the transaction and slow-task depth it
   happened at; ``should_cancel`` turns true after a given number of progress
   frames.
@@ -24,9 +30,12 @@ State the tests read is kept in underscore attributes, outside the API surface.
 
 from __future__ import annotations
 
+import json
+import struct
 import sys
 import types
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 __all__ = [
@@ -71,6 +80,8 @@ SUPPORT_TYPES = frozenset(
         "SubobjectDataHandle",
         "SubobjectData",
         "Text",
+        "Interface",
+        "AssetTools",
     }
 )
 
@@ -92,6 +103,8 @@ class Recording:
 
     project_assets: frozenset[str] = frozenset()
     cancel_after_frames: int | None = None
+    imported: dict[str, str] = field(default_factory=dict)  # object path -> asset kind
+    import_tasks: list[dict[str, Any]] = field(default_factory=list)
     events: list[Event] = field(default_factory=list)
     actors: list[Any] = field(default_factory=list)
     logs: list[tuple[str, str]] = field(default_factory=list)
@@ -264,6 +277,78 @@ def _define(recording: Recording) -> dict[str, Any]:
             _require(isinstance(value, LinearColor), "value must be a LinearColor")
             self._vectors[str(parameter_name)] = value
             recording.record("material_vector", self, str(parameter_name), value)
+
+    class Interface(Object):
+        """Base of UE interfaces."""
+
+    task_properties = {
+        "async_": False,
+        "automated": False,
+        "destination_name": "",
+        "destination_path": "",
+        "factory": None,
+        "filename": "",
+        "imported_object_paths": [],
+        "options": None,
+        "replace_existing": True,
+        "replace_existing_settings": False,
+        "result": [],
+        "save": True,
+    }
+
+    class AssetImportTask(Object):
+        """One file to import (editor properties only, like the engine's)."""
+
+        def __init__(self, outer: Any = None, name: str = "None") -> None:
+            super().__init__(outer, name)
+            self._properties = dict(task_properties)
+
+        def get_editor_property(self, name: Any) -> object:
+            _require(str(name) in self._properties, f"AssetImportTask has no property {name}")
+            return self._properties[str(name)]
+
+        def set_editor_property(self, name: Any, value: object, notify_mode: Any = None) -> None:
+            _require(str(name) in self._properties, f"AssetImportTask has no property {name}")
+            self._properties[str(name)] = value
+
+    def _read_glb(filename: str) -> dict[str, Any]:
+        data = Path(filename).read_bytes()
+        magic, version, length = struct.unpack_from("<III", data)
+        _require(magic == 0x46546C67 and version == 2, f"{filename} is not glTF 2.0 binary")
+        _require(length == len(data), f"{filename} is truncated")
+        chunk_length, chunk_type = struct.unpack_from("<II", data, 12)
+        _require(chunk_type == 0x4E4F534A, f"{filename} has no JSON chunk")
+        document: dict[str, Any] = json.loads(data[20 : 20 + chunk_length])
+        return document
+
+    class AssetTools(Interface):
+        """The editor's asset tools (only file import)."""
+
+        def import_asset_tasks(self, import_tasks: Any) -> None:
+            for task in import_tasks:
+                _require(isinstance(task, AssetImportTask), "import_tasks holds AssetImportTasks")
+                properties = task._properties
+                filename = str(properties["filename"])
+                folder = str(properties["destination_path"])
+                _require(folder.startswith("/Game/"), "destination_path must be under /Game/")
+                document = _read_glb(filename)  # the engine logs an error and imports nothing
+                mesh_name = document["meshes"][0]["name"]
+                paths = [f"{folder}/{mesh_name}.{mesh_name}"]
+                recording.imported[paths[0]] = "StaticMesh"
+                for material in document.get("materials", []):
+                    material_path = f"{folder}/MI_{material['name']}.MI_{material['name']}"
+                    recording.imported[material_path] = "MaterialInterface"
+                    paths.append(material_path)
+                properties["imported_object_paths"] = paths
+                recording.import_tasks.append(dict(properties))
+                recording.record("import", task, filename, folder, mesh_name)
+
+    class AssetToolsHelpers(Object):
+        """Access to the editor's asset tools."""
+
+        @classmethod
+        def get_asset_tools(cls) -> Any:
+            return subsystems.setdefault(AssetTools, AssetTools())
 
     def _asset(path: str, kind: str) -> Object:
         asset: Object = StaticMesh() if kind == "StaticMesh" else MaterialInterface()
@@ -605,12 +690,14 @@ def _define(recording: Recording) -> dict[str, Any]:
         @classmethod
         def does_asset_exist(cls, asset_path: str) -> bool:
             _require(isinstance(asset_path, str), "asset_path must be a str")
-            return asset_path in recording.project_assets
+            return asset_path in recording.project_assets or asset_path in recording.imported
 
         @classmethod
         def load_asset(cls, asset_path: str) -> Any:
             if asset_path in recording.project_assets:
                 return _asset(asset_path, "StaticMesh")
+            if asset_path in recording.imported:
+                return _asset(asset_path, recording.imported[asset_path])
             recording.logs.append(("error", f"LoadAsset failed: {asset_path}"))
             return None
 

@@ -50,7 +50,9 @@ def test_script_is_valid_python_3_11_with_the_kernel_and_runtime_inlined() -> No
     ast.parse(script, feature_version=(3, 11))
     assert agrirecipe.layout.kernel_source().rstrip("\n") in script
     assert "import unreal\n" in script
-    assert script.rstrip().endswith("AGRIRECIPE_RESULT = run(SCENE_JSON, iter_field_plants)")
+    assert script.rstrip().endswith(
+        "ASSETS_ROOT = None\n\nAGRIRECIPE_RESULT = run(SCENE_JSON, iter_field_plants, ASSETS_ROOT)"
+    )
     header = script.split("\n\n", 1)[0]
     assert "-run=pythonscript -script=unreal_build.py -unattended -nullrhi" in header
     assert all(line.startswith("#") for line in header.splitlines())
@@ -131,7 +133,11 @@ def test_write_creates_the_script_atomically(tmp_path: Path) -> None:
     written = UnrealBackend().write(scene, tmp_path / "out")
     assert written == [tmp_path / "out" / SCRIPT_NAME]
     assert written[0].read_text(encoding="utf-8") == scene.script("unreal")
-    assert sorted(p.name for p in (tmp_path / "out").iterdir()) == [SCRIPT_NAME]
+    # Beside it, only the plant meshes it imports (no temporary file left behind).
+    assert sorted(p.name for p in (tmp_path / "out").iterdir()) == ["assets", SCRIPT_NAME]
+    meshes = sorted((tmp_path / "out" / "assets").rglob("*.glb"))
+    assert len(meshes) == 3 * len(scene.recipe.fields)
+    assert not [p for p in (tmp_path / "out").rglob(".*")]
 
 
 def test_backend_is_registered_by_name() -> None:

@@ -38,12 +38,20 @@ def _asset_paths(recipe: SceneRecipe) -> frozenset[str]:
     return frozenset(spec.asset_path for spec in recipe.fields)
 
 
+# A folder without plant meshes: fields fall back to project assets or basic shapes.
+_NO_MESHES = "/nonexistent/agrirecipe-assets"
+
+
 def _run(
     scene: Scene,
     backend: UnrealBackend | None = None,
+    assets_root: str | Path = _NO_MESHES,
     **fake: Any,
 ) -> tuple[dict[str, Any], Recording]:
-    namespace, recording = run_script((backend or UnrealBackend()).script(scene), **fake)
+    script = (backend or UnrealBackend()).script(scene)
+    assert script.count("\nASSETS_ROOT = None\n") == 1
+    script = script.replace("\nASSETS_ROOT = None\n", f"\nASSETS_ROOT = {str(assets_root)!r}\n")
+    namespace, recording = run_script(script, **fake)
     return namespace["AGRIRECIPE_RESULT"], recording
 
 
@@ -328,3 +336,76 @@ def test_sun_light_shines_from_the_recipe_sun(season: Any, latitude: float) -> N
     assert forward == pytest.approx(tuple(-c for c in towards_sun), abs=1e-9)
     if sun.elevation_deg > 0:
         assert forward[2] < 0, "a sun above the horizon shines downward"
+
+
+# --- the plant library's meshes, imported from assets/ beside the script ---
+
+
+def _component_instances(actor: Any) -> list[list[Any]]:
+    """Each instanced component's transforms, in the order the components were added."""
+    return [component._instances for component in actor._components]
+
+
+def test_plant_meshes_are_imported_once_and_instanced_per_variant(tmp_path: Path) -> None:
+    scene = _scene()
+    scene.write(tmp_path, backends=["unreal", "annotations"])
+    result, recording = _run(scene, assets_root=tmp_path)
+    assert recording.warnings() == [] and recording.errors() == []
+    with (tmp_path / "plants.csv").open(newline="", encoding="utf-8") as stream:
+        rows = list(csv.DictReader(stream))
+    imports = recording.import_tasks
+    assert len(imports) == 3 * len(scene.recipe.fields)  # each variant once, then reused
+    for task in imports:
+        assert Path(task["filename"]).is_file()
+        assert task["automated"] is True and task["save"] is True
+    for plants in scene.layout.fields:
+        spec = plants.spec
+        folder = spec.asset_path.rpartition("/")[0]
+        actor = _field_actor(recording, spec)
+        components = actor._components
+        assert len(components) == 3
+        stems = [f"{spec.asset_path.rsplit('.', 1)[-1]}_v{v}" for v in range(3)]
+        assert [c._mesh._path for c in components] == [f"{folder}/{s}.{s}" for s in stems]
+        assert all(c._materials == {} for c in components), "meshes keep their own materials"
+        variant = np.array([int(r["variant"]) for r in rows if r["field_id"] == spec.id])
+        per_component = _component_instances(actor)
+        assert [len(chunk) for chunk in per_component] == [
+            int((variant == v).sum()) for v in range(3)
+        ]
+        # Every plant is placed once, on the component of its plants.csv variant.
+        origin = actor._location
+        expected = plants.xyz * np.array([100.0, -100.0, 100.0])
+        for v, instances in enumerate(per_component):
+            got = np.array(
+                [
+                    (t._location.x + origin.x, t._location.y + origin.y, t._location.z)
+                    for t in instances
+                ]
+            ).reshape(-1, 3)
+            np.testing.assert_allclose(got, expected[variant == v], atol=1e-6)
+            scales = np.array([t._scale.x for t in instances])
+            np.testing.assert_allclose(scales, plants.scale[variant == v], rtol=1e-12)
+        assert result["fields"][spec.id] == plants.plant_count
+
+
+def test_a_project_asset_wins_over_the_plant_meshes(tmp_path: Path) -> None:
+    scene = _scene()
+    apples, carrots = scene.recipe.fields
+    scene.write(tmp_path, backends=["unreal"])
+    _, recording = _run(scene, assets_root=tmp_path, project_assets=frozenset({apples.asset_path}))
+    apple_actor = _field_actor(recording, apples)
+    assert [c._mesh._path for c in apple_actor._components] == [apples.asset_path]
+    imported = {task["filename"] for task in recording.import_tasks}
+    assert imported and all("Carrot" in name for name in imported)
+    assert len(_field_actor(recording, carrots)._components) == 3
+    assert recording.warnings() == []
+
+
+def test_a_second_run_reuses_the_imported_meshes(tmp_path: Path) -> None:
+    scene = _scene()
+    scene.write(tmp_path, backends=["unreal"])
+    _, first = _run(scene, assets_root=tmp_path)
+    imported = frozenset(path for path, kind in first.imported.items() if kind == "StaticMesh")
+    _, second = _run(scene, assets_root=tmp_path, project_assets=imported)
+    assert second.import_tasks == []
+    assert second.warnings() == []

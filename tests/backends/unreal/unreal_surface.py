@@ -32,6 +32,8 @@ ALLOWED_NAMES = frozenset(
         "AddNewSubobjectParams",
         "SubobjectDataBlueprintFunctionLibrary",
         "EditorAssetLibrary",
+        "AssetToolsHelpers",
+        "AssetImportTask",
         # assets
         "StaticMesh",
         "MaterialInterface",

@@ -8,18 +8,19 @@
 # - no `from __future__` (it would have to be the first statement of the script);
 # - no agrirecipe import, no module-level state besides constants;
 # - every name the script's tail calls (`main`) is defined here.
-"""Build an agrirecipe scene in Blender: proxy plants instanced with Geometry Nodes."""
+"""Build an agrirecipe scene in Blender: plant meshes instanced with Geometry Nodes."""
 
 import argparse
 import math
 import time
 from collections.abc import Callable, Sequence
+from pathlib import Path
 from typing import Any
 
 import bpy
 
 #: Bumped whenever the scene this builder makes from the same description changes.
-BUILDER_VERSION = 1
+BUILDER_VERSION = 2
 ROOT_COLLECTION = "agrirecipe"
 PROXY_COLLECTION = "agrirecipe_proxies"
 NODE_GROUP = "agrirecipe_plants"
@@ -27,6 +28,10 @@ NODE_GROUP = "agrirecipe_plants"
 ENGINES = {"cycles": "CYCLES", "workbench": "BLENDER_WORKBENCH", "eevee": "BLENDER_EEVEE"}
 #: Per-plant attributes stored on each field's points (and so on its instances).
 PLANT_ATTRIBUTES = ("yaw", "scale", "height_m")
+#: What plants are drawn with: the plant library's meshes (``assets/``) or proxies.
+PLANT_MODES = ("meshes", "proxies")
+# Knuth's multiplicative hash: agrirecipe.plants.plant_variant, the same formula.
+_FIBONACCI = 0x9E3779B1
 _GOLDEN_ANGLE = math.pi * (3.0 - math.sqrt(5.0))
 _SEGMENTS = {"part": 10, "scatter": 6}
 #: Materials whose brightness varies from plant to plant (leaves, not bark or fruit).
@@ -286,6 +291,67 @@ def make_material(name: str, srgb: Sequence[float], *, vary_by_scale: bool = Fal
     return material
 
 
+def plant_variant(index: int, variants: int) -> int:
+    """The shape variant of a field's ``index``-th plant (``plants.csv``'s ``variant``)."""
+    return (((index * _FIBONACCI) & 0xFFFFFFFF) >> 16) % variants
+
+
+def assets_root(settings: dict[str, Any]) -> str:
+    """The folder holding ``assets/``: the setting, else this script's folder, else the cwd."""
+    configured = settings.get("assets_root")
+    if configured:
+        return str(configured)
+    script = globals().get("__file__")
+    return str(Path(script).resolve().parent if script else Path.cwd())
+
+
+def import_glb(path: str, name: str, collection: Any, scale: Sequence[float]) -> Any:
+    """Import one plant mesh (glTF binary) as an object named ``name`` in ``collection``."""
+    before = set(bpy.data.objects)
+    bpy.ops.import_scene.gltf(filepath=path)
+    added = [obj for obj in bpy.data.objects if obj not in before]
+    meshes = [obj for obj in added if obj.type == "MESH"]
+    if len(meshes) != 1:
+        raise RuntimeError(f"agrirecipe: {path} holds {len(meshes)} meshes, expected one")
+    plant = meshes[0]
+    for obj in added:
+        if obj is not plant:
+            bpy.data.objects.remove(obj)
+    for owner in list(plant.users_collection):
+        owner.objects.unlink(plant)
+    collection.objects.link(plant)
+    plant.name = name
+    plant.parent = None
+    plant.location = (0.0, 0.0, 0.0)
+    if tuple(scale) != (1.0, 1.0, 1.0):
+        co = [0.0] * (3 * len(plant.data.vertices))
+        plant.data.vertices.foreach_get("co", co)
+        for axis in range(3):
+            co[axis::3] = [value * float(scale[axis]) for value in co[axis::3]]
+        plant.data.vertices.foreach_set("co", co)
+        plant.data.update()
+    return plant
+
+
+def build_meshes(field: dict[str, Any], parent: Any, root: str) -> Any:
+    """The plant library's shape variants of one field, or None when a file is missing."""
+    assets = field.get("assets")
+    if not assets:
+        return None
+    paths = [str(Path(root).joinpath(*relative.split("/"))) for relative in assets["files"]]
+    missing = [path for path in paths if not Path(path).is_file()]
+    if missing:
+        print(f"agrirecipe: {field['id']}: plant mesh {missing[0]} is missing; drawing proxies")
+        return None
+    collection = bpy.data.collections.new(f"{field['id']}_proxies")
+    parent.children.link(collection)
+    for variant, path in enumerate(paths):
+        plant = import_glb(path, f"{field['id']}_plant_{variant}", collection, assets["scale"])
+        plant["agrirecipe_role"] = "plant"
+        plant["agrirecipe_mesh_file"] = assets["files"][variant]
+    return collection
+
+
 def build_proxies(field: dict[str, Any], parent: Any) -> Any:
     """The proxy variants of one field, in a collection of their own under ``parent``."""
     field_id = field["id"]
@@ -325,10 +391,11 @@ def _socket(sockets: Any, name: str, kind: str | None = None) -> Any:
 def plants_node_group() -> Any:
     """The Geometry Nodes group that puts a proxy on every point of a field.
 
-    Inputs: the field's points (with ``yaw`` and ``scale`` attributes), its
-    proxy collection, how many variants it holds and a seed. Each point gets
-    one proxy, picked at random among the variants, turned by ``yaw`` about Z
-    and scaled uniformly by ``scale``.
+    Inputs: the field's points (with ``yaw``, ``scale`` and ``variant``
+    attributes) and its collection of shape variants (plant meshes or proxies).
+    Each point gets the variant its ``variant`` attribute names (the
+    ``variant`` column of ``plants.csv``), turned by ``yaw`` about Z and scaled
+    uniformly by ``scale``.
     """
     group = bpy.data.node_groups.get(NODE_GROUP)
     if group is not None:
@@ -339,9 +406,6 @@ def plants_node_group() -> Any:
     interface = group.interface
     interface.new_socket("Geometry", in_out="INPUT", socket_type="NodeSocketGeometry")
     interface.new_socket("Proxies", in_out="INPUT", socket_type="NodeSocketCollection")
-    variants = interface.new_socket("Variants", in_out="INPUT", socket_type="NodeSocketInt")
-    variants.default_value, variants.min_value = 1, 1
-    interface.new_socket("Seed", in_out="INPUT", socket_type="NodeSocketInt")
     interface.new_socket("Geometry", in_out="OUTPUT", socket_type="NodeSocketGeometry")
 
     nodes, links = group.nodes, group.links
@@ -353,11 +417,9 @@ def plants_node_group() -> Any:
     _socket(proxies.inputs, "Reset Children").default_value = True
     instancer = nodes.new("GeometryNodeInstanceOnPoints")
     _socket(instancer.inputs, "Pick Instance").default_value = True
-    pick = nodes.new("FunctionNodeRandomValue")
+    pick = nodes.new("GeometryNodeInputNamedAttribute")
     pick.data_type = "INT"
-    last_variant = nodes.new("ShaderNodeMath")
-    last_variant.operation = "SUBTRACT"
-    last_variant.inputs[1].default_value = 1.0
+    _socket(pick.inputs, "Name").default_value = "variant"
     yaw = nodes.new("GeometryNodeInputNamedAttribute")
     yaw.data_type = "FLOAT"
     _socket(yaw.inputs, "Name").default_value = "yaw"
@@ -370,10 +432,7 @@ def plants_node_group() -> Any:
     links.new(_socket(group_in.outputs, "Geometry"), _socket(instancer.inputs, "Points"))
     links.new(_socket(group_in.outputs, "Proxies"), _socket(proxies.inputs, "Collection"))
     links.new(_socket(proxies.outputs, "Instances"), _socket(instancer.inputs, "Instance"))
-    links.new(_socket(group_in.outputs, "Variants"), last_variant.inputs[0])
-    links.new(last_variant.outputs[0], _socket(pick.inputs, "Max", "INT"))
-    links.new(_socket(group_in.outputs, "Seed"), _socket(pick.inputs, "Seed"))
-    links.new(_socket(pick.outputs, "Value", "INT"), _socket(instancer.inputs, "Instance Index"))
+    links.new(_socket(pick.outputs, "Attribute"), _socket(instancer.inputs, "Instance Index"))
     links.new(_socket(yaw.outputs, "Attribute"), _socket(euler.inputs, "Z"))
     links.new(euler.outputs[0], rotation.inputs[0])
     links.new(rotation.outputs[0], _socket(instancer.inputs, "Rotation"))
@@ -416,6 +475,9 @@ def build_plants(
     for index, name in enumerate(PLANT_ATTRIBUTES, start=3):
         attribute = mesh.attributes.new(name, "FLOAT", "POINT")
         attribute.data.foreach_set("value", _float_buffer(plant[index] for plant in plants))
+    variants = len(proxies.objects)
+    chosen = mesh.attributes.new("variant", "INT", "POINT")
+    chosen.data.foreach_set("value", [plant_variant(i, variants) for i in range(count)])
     mesh.update()
     del plants
     timings["points"] = timings.get("points", 0.0) + time.perf_counter() - placed
@@ -424,11 +486,7 @@ def build_plants(
     modifier = obj.modifiers.new("agrirecipe_plants", "NODES")
     group = plants_node_group()
     modifier.node_group = group
-    values = {
-        "Proxies": proxies,
-        "Variants": int(field["proxy"]["variants"]),
-        "Seed": int(field["params"]["seed"]) % 2_147_483_647,
-    }
+    values = {"Proxies": proxies}
     for item in group.interface.items_tree:
         if getattr(item, "in_out", None) == "INPUT" and item.name in values:
             modifier[item.identifier] = values[item.name]
@@ -436,6 +494,7 @@ def build_plants(
         obj[f"agrirecipe_{key}"] = field[key]
     obj["agrirecipe_field_id"] = field["id"]
     obj["agrirecipe_plant_count"] = count
+    obj["agrirecipe_plants"] = "meshes" if proxies.get("agrirecipe_meshes") else "proxies"
     return obj, count
 
 
@@ -667,6 +726,8 @@ def command_line_settings(settings: dict[str, Any], argv: Sequence[str]) -> dict
     parser.add_argument("--resolution", metavar="WxH", help="e.g. 1920x1080")
     parser.add_argument("--samples", type=int, help="render samples")
     parser.add_argument("--engine", choices=sorted(ENGINES), help="render engine")
+    parser.add_argument("--plants", choices=PLANT_MODES, help="plant meshes or proxies")
+    parser.add_argument("--assets", metavar="DIR", help="the folder holding assets/")
     parsed = parser.parse_args(args)
     updated = dict(settings)
     if parsed.render:
@@ -680,6 +741,10 @@ def command_line_settings(settings: dict[str, Any], argv: Sequence[str]) -> dict
         updated["samples"] = parsed.samples
     if parsed.engine:
         updated["engine"] = parsed.engine
+    if parsed.plants:
+        updated["plants"] = parsed.plants
+    if parsed.assets:
+        updated["assets_root"] = parsed.assets
     return updated
 
 
@@ -725,7 +790,13 @@ def build_scene(
         collection = bpy.data.collections.new(field["id"])
         root.children.link(collection)
         proxy_started = time.perf_counter()
-        proxies = build_proxies(field, proxy_root)
+        proxies = None
+        if settings.get("plants", "meshes") == "meshes":
+            proxies = build_meshes(field, proxy_root, assets_root(settings))
+            if proxies is not None:
+                proxies["agrirecipe_meshes"] = True
+        if proxies is None:
+            proxies = build_proxies(field, proxy_root)
         timings["proxies"] += time.perf_counter() - proxy_started
         _, counts[field["id"]] = build_plants(field, place_field, collection, proxies, timings)
         if verbose:

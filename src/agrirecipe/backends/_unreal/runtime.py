@@ -20,11 +20,27 @@
 import json
 import math
 from collections.abc import Callable, Iterable
+from pathlib import Path
 from typing import Any
 
 import unreal
 
 PlantSource = Callable[[dict[str, Any]], Iterable[tuple[float, float, float, float, float, float]]]
+# Knuth's multiplicative hash: agrirecipe.plants.plant_variant, the same formula.
+PLANT_VARIANT_HASH = 0x9E3779B1
+
+
+def plant_variant(index: int, variants: int) -> int:
+    """The shape variant of a field's ``index``-th plant (``plants.csv``'s ``variant``)."""
+    return (((index * PLANT_VARIANT_HASH) & 0xFFFFFFFF) >> 16) % variants
+
+
+def assets_root(configured: "str | None") -> str:
+    """The folder holding ``assets/``: the setting, else this script's folder, else the cwd."""
+    if configured:
+        return configured
+    script = globals().get("__file__")
+    return str(Path(script).resolve().parent if script else Path.cwd())
 
 
 def build_scene(scene: dict[str, Any], plants: PlantSource) -> dict[str, Any]:
@@ -84,13 +100,22 @@ def build_field(
     Returns ``(instances placed, cancelled)``.
     """
     task.enter_progress_frame(1.0, field["progress_setup"])
+    # A user's own asset pack wins; then the plant library's meshes written beside
+    # this script (imported once into the project); then an engine basic shape.
     mesh = load_project_mesh(field["asset_path"], meshes)
+    variant_meshes = [mesh]
     placeholder_canopy_m = None
-    if mesh is None:
-        # Without the asset pack a user still gets a visible, correctly laid-out
-        # scene: an engine basic shape sized like the plant, tinted like its foliage.
+    mesh_scale = [1.0, 1.0, 1.0]
+    if mesh is None and field["plant_meshes"] is not None:
+        imported = import_plant_meshes(field["plant_meshes"], engine["assets_root"], meshes)
+        if imported is not None:
+            variant_meshes = imported
+            mesh_scale = field["plant_meshes"]["scale"]
+    if variant_meshes[0] is None:
+        # Without any mesh a user still gets a visible, correctly laid-out scene:
+        # an engine basic shape sized like the plant, tinted like its foliage.
         unreal.log_warning(field["log_missing_asset"])
-        mesh = load_engine_asset(field["fallback_mesh"], meshes)
+        variant_meshes = [load_engine_asset(field["fallback_mesh"], meshes)]
         placeholder_canopy_m = float(field["canopy_width_m"])
 
     actor = spawn(
@@ -101,49 +126,115 @@ def build_field(
         field["label"],
         field["folder"],
     )
-    component = add_instanced_mesh_component(subobjects, actor)
-    # A plain Actor has no root until the component above becomes it; only now
-    # does moving the actor stick. Instances are then given in world space.
+    # One instanced-mesh component per shape variant; the first becomes the root.
+    components = []
+    for variant_mesh in variant_meshes:
+        component = add_instanced_mesh_component(subobjects, actor)
+        component.set_collision_enabled(unreal.CollisionEnabled.NO_COLLISION)
+        if variant_mesh is not None:
+            component.set_static_mesh(variant_mesh)
+        if placeholder_canopy_m is not None:
+            tint(component, engine, field["foliage_rgb"], meshes)
+        components.append(component)
+    # A plain Actor has no root until a component becomes it; only now does moving
+    # the actor stick. Instances are then given in world space.
     actor.set_actor_location(to_vector(field["location_cm"]), False, True)
-    component.set_collision_enabled(unreal.CollisionEnabled.NO_COLLISION)
-    if mesh is not None:
-        component.set_static_mesh(mesh)
-    if placeholder_canopy_m is not None:
-        tint(component, engine, field["foliage_rgb"], meshes)
 
+    variants = len(components)
     placed = 0
     cancelled = False
-    chunk: list[Any] = []
+    chunks: list[list[Any]] = [[] for _ in components]
+    pending = 0
     chunk_size = int(engine["chunk_size"])
-    for plant in plants(field["kernel"]):
-        chunk.append(plant_transform(plant, placeholder_canopy_m))
-        if len(chunk) >= chunk_size:
+    for index, plant in enumerate(plants(field["kernel"])):
+        transform = plant_transform(plant, placeholder_canopy_m, mesh_scale)
+        chunks[plant_variant(index, variants)].append(transform)
+        pending += 1
+        if pending >= chunk_size:
             if task.should_cancel():
                 cancelled = True
                 break
-            task.enter_progress_frame(float(len(chunk)), field["progress_plants"])
-            component.add_instances(chunk, False, world_space=True)
-            placed += len(chunk)
-            chunk = []
-    if chunk and not cancelled:
-        task.enter_progress_frame(float(len(chunk)), field["progress_plants"])
-        component.add_instances(chunk, False, world_space=True)
-        placed += len(chunk)
+            placed += flush_instances(task, components, chunks, field["progress_plants"])
+            pending = 0
+    if pending and not cancelled:
+        placed += flush_instances(task, components, chunks, field["progress_plants"])
     if not cancelled:
         task.enter_progress_frame(1.0, field["progress_ground"])
         build_ground(editor_actors, engine, field["ground"], field["folder"], meshes)
     return placed, cancelled
 
 
+def flush_instances(
+    task: unreal.ScopedSlowTask, components: list[Any], chunks: list[list[Any]], progress: str
+) -> int:
+    """Add each variant's pending transforms to its component; return how many were added."""
+    added = sum(len(chunk) for chunk in chunks)
+    task.enter_progress_frame(float(added), progress)
+    for variant, chunk in enumerate(chunks):
+        if chunk:
+            component = unreal.InstancedStaticMeshComponent.cast(components[variant])
+            component.add_instances(chunk, False, world_space=True)
+            del chunk[:]
+    return added
+
+
+def import_plant_meshes(
+    plan: dict[str, Any], root: "str | None", meshes: dict[str, Any]
+) -> "list[Any] | None":
+    """The static meshes of a field's shape variants, imported from ``assets/`` if needed.
+
+    Each ``.glb`` is imported once (AssetImportTask; glTF's metres and Y up become
+    centimetres and Z up) into the catalogue's content folder and reused on the
+    next run. Returns None, with a warning, when a file is missing or fails.
+    """
+    folder = assets_root(root)
+    loaded = []
+    for relative, name in zip(plan["files"], plan["names"]):  # noqa: B905 - Python 3.9
+        object_path = f"{plan['destination_path']}/{name}.{name}"
+        if object_path not in meshes:
+            meshes[object_path] = load_project_mesh(object_path, meshes) or import_glb(
+                str(Path(folder).joinpath(*relative.split("/"))), plan["destination_path"], name
+            )
+        if meshes[object_path] is None:
+            return None
+        loaded.append(meshes[object_path])
+    return loaded
+
+
+def import_glb(filename: str, destination_path: str, name: str) -> Any:
+    """Import one glTF binary as a static mesh; None (with a warning) when it fails."""
+    if not Path(filename).is_file():
+        return None  # the field's fallback warning says where the meshes are expected
+    task = unreal.AssetImportTask()
+    task.set_editor_property("filename", filename)
+    task.set_editor_property("destination_path", destination_path)
+    task.set_editor_property("destination_name", name)
+    task.set_editor_property("automated", True)
+    task.set_editor_property("replace_existing", True)
+    task.set_editor_property("save", True)
+    unreal.AssetToolsHelpers.get_asset_tools().import_asset_tasks([task])
+    for path in task.get_editor_property("imported_object_paths"):
+        asset = unreal.EditorAssetLibrary.load_asset(path)
+        if isinstance(asset, unreal.StaticMesh):
+            unreal.log(f"agrirecipe: imported {filename} as {path}")
+            return asset
+    unreal.log_warning(f"agrirecipe: {filename} did not import as a static mesh")
+    return None
+
+
 def plant_transform(
-    plant: tuple[float, float, float, float, float, float], placeholder_canopy_m: "float | None"
+    plant: tuple[float, float, float, float, float, float],
+    placeholder_canopy_m: "float | None",
+    mesh_scale: "list[float] | None" = None,
 ) -> unreal.Transform:
     """The world transform (cm, left-handed) of one kernel plant."""
     x, y, z, yaw_rad, scale, height_m = plant
     rotation = unreal.Rotator(roll=0.0, pitch=0.0, yaw=-math.degrees(yaw_rad))
     if placeholder_canopy_m is None:
+        # Meshes (the plant library's, imported in centimetres, or the user's own).
         location = unreal.Vector(x * 100.0, -y * 100.0, z * 100.0)
-        size = unreal.Vector(scale, scale, scale)
+        sx, sy, sz = mesh_scale or (1.0, 1.0, 1.0)
+        size = unreal.Vector(scale * sx, scale * sy, scale * sz)
     else:
         # Basic shapes are 1 m at scale 1 and centred on their pivot.
         width_m = placeholder_canopy_m * scale
@@ -289,9 +380,14 @@ def save_current_level() -> bool:
     return bool(unreal.get_editor_subsystem(unreal.LevelEditorSubsystem).save_current_level())
 
 
-def run(scene_json: str, plants: PlantSource) -> dict[str, Any]:
-    """Parse the scene description, build it, and save the level when it asks to."""
+def run(scene_json: str, plants: PlantSource, assets: "str | None" = None) -> dict[str, Any]:
+    """Parse the scene description, build it, and save the level when it asks to.
+
+    ``assets`` is the folder holding the plant library's ``assets/`` (None: the
+    folder of this script).
+    """
     scene = json.loads(scene_json)
+    scene["engine"]["assets_root"] = assets
     summary = build_scene(scene, plants)
     saving = scene["scene"]["save_level"] and not summary["cancelled"]
     if saving and not save_current_level():
