@@ -107,7 +107,10 @@ def read_relations(
             # "...; west of the peppers an onion plot": the field after the object
             pairs = (link.data.get("value", "next_to"), fronted[0], (fronted[1],))
         else:
-            pairs = _relation_mentions(link, before, after, pronoun=pronoun)
+            # "pears on the north block, bananas ...": a trailer right after a field
+            # places that field ("..., and to the north, pears" places the one after).
+            attached = position > 0 and bool(clauses[position - 1].mentions)
+            pairs = _relation_mentions(link, before, after, pronoun=pronoun, attached=attached)
         if pairs is None:
             warnings.append(f"ignored {link.raw!r}: it needs a field on each side")
             continue
@@ -322,7 +325,12 @@ def _surrounded(
 
 
 def _relation_mentions(
-    link: Item, before: Sequence[Mention], after: Sequence[Mention], *, pronoun: bool
+    link: Item,
+    before: Sequence[Mention],
+    after: Sequence[Mention],
+    *,
+    pronoun: bool,
+    attached: bool = False,
 ) -> tuple[Any, Mention, tuple[Mention, ...]] | None:
     kind = link.data.get("value", "between") if link.role != "between" else "between"
     if pronoun and not after and len(before) >= 2:
@@ -362,6 +370,8 @@ def _relation_mentions(
     if link.role == "trailer":
         if len(before) >= 2 and before[-1].clause == before[-2].clause:
             return kind, before[-1], (before[-2],)
+        if before and after and attached:
+            return kind, before[-1], (after[0],)
         if before and after:
             return kind, after[0], (before[-1],)
         if len(before) >= 2:

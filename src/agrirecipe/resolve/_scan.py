@@ -69,7 +69,38 @@ def assign_roles(items: Sequence[Item]) -> None:
         if item.role == "relation" and _attributive(item, previous, following):
             item.role = "filler"  # "three adjacent fields": the fields in a row
             item.data["adjacent"] = True
+        if (
+            item.role == "separator"
+            and item.norm in _POINTING
+            and previous is not None
+            and previous.role in ("relation", "between")
+        ):
+            item.role = "filler"  # "north of that, pears": the pronoun, not "that" joining
+        if (
+            item.role == "plot"
+            and previous is not None
+            and previous.role == "trailer"
+            and _placement_plot(item, following)
+        ):
+            # "pears on the north block": where the pears are, not another field
+            item.role = "filler"
+            item.data["placement"] = True
         previous = item
+
+
+# Words that point back to a field when they follow a relation word ("north of that").
+_POINTING = frozenset({"that", "this", "which"})
+
+
+def _placement_plot(item: Item, following: Item | None) -> bool:
+    """A singular plot noun of any crop with no crop or "of" after it ("the north block,")."""
+    plot = item.data.get("value") or {}
+    return (
+        not plot.get("plural")
+        and not plot.get("options")
+        and not plot.get("category")
+        and (following is None or not following.has("crop", "category", "variety", "of"))
+    )
 
 
 def _attributive(item: Item, previous: Item | None, following: Item | None) -> bool:

@@ -1,0 +1,66 @@
+"""Farms and photographs described the way people write them (issue 8, blind sets g1 farm
+and g1 photo): fields placed relative to each other with pointing words, scenery that
+happens to be a plant, descriptions of the plants already named."""
+
+from __future__ import annotations
+
+import pytest
+
+from agrirecipe import UnknownCropError, generate
+from agrirecipe.recipe import SceneRecipe
+
+
+def recipe(prompt: str) -> SceneRecipe:
+    return generate(prompt, resolver="hybrid").recipe
+
+
+def crop_of(scene: SceneRecipe, field_id: str) -> str:
+    return next(f.crop for f in scene.fields if f.id == field_id)
+
+
+def relations(scene: SceneRecipe) -> set[tuple[str, str, tuple[str, ...]]]:
+    return {
+        (r.kind, crop_of(scene, r.subject), tuple(crop_of(scene, o) for o in r.objects))
+        for r in scene.relations
+    }
+
+
+def test_that_after_a_relation_word_points_back() -> None:
+    scene = recipe(
+        "Behind the greenhouse there's a patch of cherry tomatoes, and north of that a row "
+        "of Bing cherry trees."
+    )
+    assert relations(scene) == {("north_of", "Cherry", ("Tomato",))}
+    assert relations(recipe("apples, and north of that pears")) == {
+        ("north_of", "Pear", ("Apple",))
+    }
+
+
+def test_a_direction_with_a_plot_noun_places_the_field_before_it() -> None:
+    scene = recipe(
+        "Williams pears on the north block, Cavendish bananas in the big tunnel to the "
+        "south of them."
+    )
+    assert [f.crop for f in scene.fields] == ["Pear", "Banana"]
+    assert relations(scene) == {
+        ("north_of", "Pear", ("Banana",)),
+        ("south_of", "Banana", ("Pear",)),
+    }
+
+
+def test_grass_in_the_scenery_is_not_an_unknown_crop() -> None:
+    scene = recipe(
+        "Frosty January morning, hoarfrost on the bare branches of the cherry trees, the "
+        "grass white underneath and the farmhouse chimney smoking at the back."
+    )
+    assert [(f.crop, f.season) for f in scene.fields] == [("Cherry", "Winter")]
+    for asked in ("a grass field next to wheat", "grass and wheat"):
+        with pytest.raises(UnknownCropError, match="grass"):
+            recipe(asked)
+
+
+def test_a_variety_name_before_a_plot_noun_names_the_field() -> None:
+    (field,) = recipe("Russet field from the pivot road, plants in full flower").fields
+    assert (field.crop, field.variety) == ("Potato", "Russet Burbank")
+    (golden,) = recipe("a golden field of wheat").fields  # a colour, with its crop
+    assert golden.crop == "Wheat"
