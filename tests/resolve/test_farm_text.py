@@ -64,3 +64,42 @@ def test_a_variety_name_before_a_plot_noun_names_the_field() -> None:
     assert (field.crop, field.variety) == ("Potato", "Russet Burbank")
     (golden,) = recipe("a golden field of wheat").fields  # a colour, with its crop
     assert golden.crop == "Wheat"
+
+
+def test_a_leading_direction_orders_the_list_after_it() -> None:
+    scene = recipe(
+        "Along the south fence, going west to east: San Marzano tomatoes first, then the "
+        "Jalapenos, then a patch of California Wonder peppers."
+    )
+    assert [f.variety for f in scene.fields] == ["San Marzano", "Jalapeno", "California Wonder"]
+    ids = [f.id for f in scene.fields]
+    assert {(r.kind, r.subject, r.objects) for r in scene.relations} == {
+        ("west_of", ids[0], (ids[1],)),
+        ("west_of", ids[1], (ids[2],)),
+    }
+
+
+def test_a_mixed_number_before_a_unit() -> None:
+    scene = recipe("one and a half hectares of Conference pears and 2 and a quarter acres of wheat")
+    areas = [round(f.geometry.size_m[0] * f.geometry.size_m[1]) for f in scene.fields]
+    assert areas == [15000, round(2.25 * 4046.8564224)]
+
+
+def test_fields_on_opposite_sides_of_a_landmark() -> None:
+    scene = recipe(
+        "East of the yard there's 2 ha of Gala apples and west of the yard we have one and a "
+        "half hectares of Conference pears."
+    )
+    assert relations(scene) == {("east_of", "Apple", ("Pear",))}
+    # one field placed by a building alone is placed by scenery: no relation from it
+    lone = recipe("north of the barn an apple orchard, and wheat next to it")
+    assert relations(lone) == {("next_to", "Wheat", ("Apple",))}
+
+
+def test_a_verb_before_a_plot_noun_is_not_an_unknown_crop() -> None:
+    scene = recipe(
+        "From the farmhouse down to the river it goes vineyard, then a hawthorn hedge, then "
+        "salad greens, then a strip of corn by the water."
+    )
+    assert [f.crop for f in scene.fields][::2] == ["Grape", "Maize"]
+    assert scene.fields[1].crop in ("Lettuce", "Cabbage")

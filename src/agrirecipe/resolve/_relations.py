@@ -37,11 +37,17 @@ def read_relations(
         assert link is not None
         kind = link.data["value"]
         relations.extend(_pair(kind, subject, (centre,), members, link, trace))
+    landmarks: list[tuple[str, str, Mention, Item]] = []
     for position, clause in enumerate(clauses):
         link = clause.link
         if link is None or link.role not in ("relation", "between", "trailer"):
             continue
         if position in placed:
+            continue
+        landmark = _landmark(clause)
+        if landmark is not None and clause.mentions:
+            # "east of the yard there's 2 ha of apples": placed by the yard
+            landmarks.append((str(link.data.get("value")), landmark, clause.mentions[0], link))
             continue
         if (
             link.role == "relation"
@@ -116,10 +122,52 @@ def read_relations(
             continue
         kind, subject, objects = pairs
         relations.extend(_pair(kind, subject, objects, members, link, trace))
+    relations += _across_landmarks(landmarks, members, trace)
     unique: dict[tuple[object, ...], RelationIntent] = {}
     for relation in relations:  # "in a line, in this order": one row
         unique.setdefault((relation.kind, relation.subject, relation.objects), relation)
     return list(unique.values())
+
+
+_ARTICLES = frozenset({"the", "a", "an", "our", "my", "their", "its"})
+
+
+def _landmark(clause: Clause) -> str | None:
+    """The scenery a relation's object is ("east of the yard ..."), or None."""
+    for item in clause.items:
+        if item.norm in _ARTICLES:
+            continue
+        if (item.role == "filler" and "scenery" in item.data) or item.role == "non_agricultural":
+            return item.norm
+        return None
+    return None
+
+
+def _across_landmarks(
+    landmarks: Sequence[tuple[str, str, Mention, Item]],
+    members: dict[int, list[int]],
+    trace: list[TraceStep],
+) -> list[RelationIntent]:
+    """Fields on opposite sides of one landmark: "east of the yard apples, west of the
+    yard pears" puts the apples east of the pears. Others are placed by scenery only."""
+    relations: list[RelationIntent] = []
+    paired: set[int] = set()
+    for first, (kind, landmark, mention, link) in enumerate(landmarks):
+        for second in range(first + 1, len(landmarks)):
+            other_kind, other_landmark, other, _ = landmarks[second]
+            if other_landmark == landmark and _OPPOSITE.get(kind) == other_kind:
+                relations.extend(_pair(kind, mention, (other,), members, link, trace))
+                paired.update((first, second))
+    for index, (_, landmark, _, link) in enumerate(landmarks):
+        if index not in paired:
+            trace.append(
+                TraceStep(
+                    stage="decompose",
+                    subject=f"{link.raw} the {landmark}",
+                    detail="relative to scenery: not used",
+                )
+            )
+    return relations
 
 
 #: "from west to east": each field of the row lies on this side of the next one.
@@ -172,12 +220,10 @@ def _directed_row(
 ) -> list[RelationIntent]:
     """'three strips from west to east: wheat, potatoes, maize', 'A, B and C from north
     to south': the fields in the order named, each on one side of the next."""
-    group = list(reversed(coordinated(clauses, position)))
-    fields: list[int] = []
-    for mention in group:
-        for index in members.get(id(mention), []):
-            if index not in fields:
-                fields.append(index)
+    fields = _fields_of(list(reversed(coordinated(clauses, position))), members)
+    if len(fields) < 2:
+        # "going west to east: tomatoes first, then the jalapenos, then peppers"
+        fields = _fields_of(following_list(clauses, position), members)
     if len(fields) < 2:
         warnings.append(f"ignored {link.raw!r}: it needs two or more fields before it")
         return []
@@ -193,6 +239,15 @@ def _directed_row(
         RelationIntent(kind=kind, subject=a, objects=(b,), text=link.raw)
         for a, b in itertools.pairwise(fields)
     ]
+
+
+def _fields_of(group: Sequence[Mention], members: dict[int, list[int]]) -> list[int]:
+    fields: list[int] = []
+    for mention in group:
+        for index in members.get(id(mention), []):
+            if index not in fields:
+                fields.append(index)
+    return fields
 
 
 def _listed_middle(
@@ -489,6 +544,23 @@ def coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:
         if id(mention) not in seen:  # a field named again stands twice
             seen.add(id(mention))
             group.append(mention)
+    return group
+
+
+def following_list(clauses: Sequence[Clause], position: int) -> list[Mention]:
+    """The mentions listed right after clause ``position`` (a heading such as "west to
+    east:"), in order: the first after it, then each joined to it by a comma, "and" or
+    "then", up to a full stop or any other link."""
+    group: list[Mention] = []
+    for index in range(position + 1, len(clauses)):
+        clause = clauses[index]
+        if group and not listing(clause.link):
+            break
+        if not group and clause.link is not None and clause.link.norm not in (":", ","):
+            if clause.mentions or clause.link.role not in ("separator", "conjunction"):
+                break
+        if clause.mentions and all(clause.mentions[-1] is not m for m in group):
+            group.append(clause.mentions[-1])
     return group
 
 

@@ -70,6 +70,13 @@ def assign_roles(items: Sequence[Item]) -> None:
             item.role = "filler"  # "three adjacent fields": the fields in a row
             item.data["adjacent"] = True
         if (
+            item.role in ("length_unit", "area_unit")
+            and item.has("scenery")
+            and (previous is None or previous.role not in ("number", "fraction", "quantity"))
+        ):
+            item.role = "filler"  # "east of the yard": the farmyard, not three feet
+            item.data["scenery"] = item.senses_of("scenery")[0].value
+        if (
             item.role == "separator"
             and item.norm in _POINTING
             and previous is not None
@@ -189,6 +196,36 @@ def _unit(item: Item, kind: str) -> float | None:
     return float(senses[0].value) if senses else None
 
 
+def _mixed_numbers(items: list[Item]) -> list[Item]:
+    """ "one and a half hectares", "2 and a quarter acres": one number before a unit."""
+    out: list[Item] = []
+    index = 0
+    while index < len(items):
+        item = items[index]
+        window = items[index : index + 4]
+        if (
+            len(window) == 4
+            and item.role == "number"
+            and window[1].norm == "and"
+            and window[2].role == "fraction"
+            and window[3].has("area_unit", "length_unit")
+        ):
+            whole, part = _amount(item), _amount(window[2])
+            if whole is not None and part is not None and part < 1:
+                merged = Item(
+                    tokens=(*item.tokens, *window[1].tokens, *window[2].tokens),
+                    senses=(Sense("number", whole + part),),
+                    role="number",
+                    data={"value": whole + part},
+                )
+                out.append(merged)
+                index += 3
+                continue
+        out.append(item)
+        index += 1
+    return out
+
+
 def read_sizes(items: list[Item]) -> list[Item]:
     """Replace number-unit patterns with one item of role ``"size"`` (``data["size"]``).
 
@@ -196,6 +233,7 @@ def read_sizes(items: list[Item]) -> list[Item]:
     "5000 m2"), ``<n> [unit] by|x <n> [unit]`` ("50 by 100 m", "50x100m"),
     and ``<n> <unit> wide/long`` pairs ("40 m wide and 80 m long").
     """
+    items = _mixed_numbers(items)
     out: list[Item] = []
     index = 0
     pending_side: dict[str, float] = {}
