@@ -556,9 +556,13 @@ def following_list(clauses: Sequence[Clause], position: int) -> list[Mention]:
         clause = clauses[index]
         if group and not listing(clause.link):
             break
-        if not group and clause.link is not None and clause.link.norm not in (":", ","):
-            if clause.mentions or clause.link.role not in ("separator", "conjunction"):
-                break
+        if (
+            not group
+            and clause.link is not None
+            and clause.link.norm not in (":", ",")
+            and (clause.mentions or clause.link.role not in ("separator", "conjunction"))
+        ):
+            break
         if clause.mentions and all(clause.mentions[-1] is not m for m in group):
             group.append(clause.mentions[-1])
     return group
