@@ -103,3 +103,73 @@ def test_a_verb_before_a_plot_noun_is_not_an_unknown_crop() -> None:
     )
     assert [f.crop for f in scene.fields][::2] == ["Grape", "Maize"]
     assert scene.fields[1].crop in ("Lettuce", "Cabbage")
+
+
+def test_descriptions_of_the_plants_are_not_fields() -> None:
+    banana = recipe(
+        "A banana plantation after the wet season - the leaves are covered in dark "
+        "brown-black streaks, looks like Sigatoka, and a few plants have fallen over. "
+        "Workers in hats carrying bunches to a trailer."
+    )
+    assert [(f.crop, f.health) for f in banana.fields] == [("Banana", "Ill")]
+    tall = recipe(
+        "Ladyfinger bananas with the bunches hanging and the purple flower bells still on "
+        "the end, plants about three metres tall, a ute on the dirt track."
+    )
+    assert [(f.variety, f.stage) for f in tall.fields] == [("Lady Finger", "Reproductive")]
+    fruit = recipe(
+        "apple trees heavy with red fruit that's colouring up, and the tomatoes in front of "
+        "the house with the last fruit ripening."
+    )
+    assert [(f.crop, f.stage) for f in fruit.fields] == [
+        ("Apple", "Maturation"),
+        ("Tomato", "Maturation"),
+    ]
+    # a counted or listed field of plants is still a field
+    assert [f.crop for f in recipe("an apple orchard and some pear trees").fields] == [
+        "Apple",
+        "Pear",
+    ]
+
+
+def test_a_field_named_again_behind_scenery_is_the_same_field() -> None:
+    scene = recipe(
+        "Agria potatoes on 75 cm ridges beside a field of Red Baron onions. A sprayer is "
+        "working in the potatoes and there's a water tower on the horizon."
+    )
+    assert [f.crop for f in scene.fields] == ["Potato", "Onion"]
+    assert scene.fields[0].agronomy.row_spacing_m == pytest.approx(0.75)
+
+
+def test_what_a_field_says_of_itself_wins_over_all() -> None:
+    scene = recipe(
+        "Savoy cabbages in the front of the shot, their outer leaves with V-shaped yellow "
+        "lesions along the edges, and right next to them a field of Stuttgarter Riesen "
+        "onions, all healthy."
+    )
+    assert [(f.crop, f.health) for f in scene.fields] == [("Cabbage", "Ill"), ("Onion", "Healthy")]
+    # "all over the ridges" is not "all fields"
+    two = recipe(
+        "spuds with white flowers all over the ridges, and a wheat field gone completely "
+        "straw-coloured with the heads drooping"
+    )
+    assert [(f.crop, f.stage) for f in two.fields] == [
+        ("Potato", "Reproductive"),
+        ("Wheat", "Maturation"),
+    ]
+
+
+@pytest.mark.parametrize(
+    ("prompt", "health"),
+    [
+        (
+            "this lettuce: angular yellow patches on the outer leaves and white fluff underneath",
+            "Ill",
+        ),
+        ("a capsicum plot, leaves dotted with dark spots and scabby patches on the fruit", "Ill"),
+        ("tomato plants with dark water-soaked blotches on the leaves", "Ill"),
+    ],
+)
+def test_signs_of_disease_read_as_ill(prompt: str, health: str) -> None:
+    (field,) = recipe(prompt).fields
+    assert field.health == health

@@ -141,7 +141,13 @@ class FieldReading:
             for item in scene_items:
                 if item.role not in ("season", "month", "all"):
                     for member in fields:
-                        member.items.append(item)
+                        # "cabbages with lesions, and onions, all healthy": what a field
+                        # says of itself wins over what is said of all
+                        said = item.role in ("health", "stage") and any(
+                            own.role == item.role for own in member.items
+                        )
+                        if not said:
+                            member.items.append(item)
             for member in fields:
                 own = values_of(member.items, ("season", "month"), hemisphere)
                 if own and seasons and own[0] != seasons[0]:

@@ -68,7 +68,7 @@ from agrirecipe.resolve._lexicon import (
     vocabulary,
 )
 from agrirecipe.resolve._relations import coordinated, listing, read_relations
-from agrirecipe.resolve._scan import assign_roles, read_latitude, read_sizes
+from agrirecipe.resolve._scan import assign_roles, read_heights, read_latitude, read_sizes
 from agrirecipe.resolve._structure import (
     apply_corrections,
     apply_each_side,
@@ -156,7 +156,7 @@ class PromptReader(FieldReading):
         assign_roles(items)
         _purpose_diseases(items)
         prompt_latitude, latitude_text, items = read_latitude(text, items)
-        items = read_sizes(items)
+        items = read_sizes(read_heights(items))
         self._reject_scenery(items)
         self._reject_other_crops(items)
         builder = MentionBuilder(self.crop_categories)

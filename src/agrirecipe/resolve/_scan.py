@@ -16,7 +16,7 @@ from agrirecipe._errors import PromptError
 from agrirecipe.resolve._intent import SizeIntent
 from agrirecipe.resolve._lexicon import Item, Sense, Token, number_value, vocabulary
 
-__all__ = ["assign_roles", "read_latitude", "read_sizes"]
+__all__ = ["assign_roles", "read_heights", "read_latitude", "read_sizes"]
 
 # Sense kinds in the order they win when a phrase has several (a crop name beats
 # its use as a colour; "one" is a number unless decomposition sees a reference).
@@ -92,6 +92,14 @@ def assign_roles(items: Sequence[Item]) -> None:
             # "pears on the north block": where the pears are, not another field
             item.role = "filler"
             item.data["placement"] = True
+        if (
+            previous is not None
+            and previous.role == "number"
+            and previous.norm in ("a", "an")
+            and item.role in ("filler", "non_agricultural")
+            and ("scenery" in item.data or item.role == "non_agricultural")
+        ):
+            previous.role = "filler"  # "a sprayer is working in the potatoes": no count
         previous = item
 
 
@@ -222,6 +230,37 @@ def _mixed_numbers(items: list[Item]) -> list[Item]:
                 index += 3
                 continue
         out.append(item)
+        index += 1
+    return out
+
+
+_TALL = frozenset({"tall", "high", "in height", "high and", "tall and"})
+
+
+def read_heights(items: list[Item]) -> list[Item]:
+    """ "plants about three metres tall", "trees 4 m high": how tall the plants are, a
+    description of the field's plants (never a count or a size)."""
+    out: list[Item] = []
+    index = 0
+    while index < len(items):
+        window = items[index : index + 3]
+        if (
+            len(window) == 3
+            and window[0].role == "number"
+            and window[1].has("length_unit")
+            and window[2].norm in _TALL
+        ):
+            amount, unit = _amount(window[0]), _unit(window[1], "length_unit")
+            merged = Item(
+                tokens=tuple(t for i in window for t in i.tokens),
+                senses=(),
+                role="filler",
+                data={"described": "height", "height_m": (amount or 0.0) * (unit or 1.0)},
+            )
+            out.append(merged)
+            index += 3
+            continue
+        out.append(items[index])
         index += 1
     return out
 

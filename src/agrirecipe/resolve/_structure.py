@@ -641,6 +641,8 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
     """
     words = _descriptive_words()
     dissolved: list[str] = []
+    for clause in clauses:
+        dissolved.extend(_dissolve_described_after_of(clause, words))
     for position, clause in enumerate(clauses):
         if len(clause.mentions) != 1:
             continue
@@ -665,19 +667,26 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
         fraction = definite and any(i.role == "fraction" for i in mention.items)
         own_size = any(i.role in ("size", "geometry") for i in mention.items)
         described = any(
-            i.role in ("stage", "health", "cue", "season", "month") or "cue" in i.data
+            i.role in ("stage", "health", "cue", "season", "month")
+            or "cue" in i.data
+            or "described" in i.data  # "plants about three metres tall"
             for i in mention.items
         )
+        # "a few plants have fallen over": a verb says what the plants do or look like
+        predicate = _predicate(clause, mention)
         # "one plant has wilted leaves": one plant described, not a field of one
         one_described = mention.count == 1 and described
         if (
             not all(h.norm in words for h in mention.heads)
-            or (mention.count is not None and not (definite or fraction or one_described))
-            or (mention.quantity is not None and not definite)  # "a lot of the fruit"
+            or (
+                mention.count is not None
+                and not (definite or fraction or one_described or predicate)
+            )
+            or (mention.quantity is not None and not (definite or predicate))  # "a lot of"
             or mention.other
             or own_size
-            or (listed and not definite)
-            or not (described or definite or fraction or mention.distinct)
+            or (listed and not (definite or predicate))
+            or not (described or definite or fraction or mention.distinct or predicate)
         ):
             continue
         if mention.distinct:
@@ -690,6 +699,42 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
         clause.mentions = []
         dissolved.append(mention.text)
     return dissolved
+
+
+def _dissolve_described_after_of(clause: Clause, words: frozenset[str]) -> list[str]:
+    """ "the tomatoes in front of the house with the last fruit ripening": plant words
+    after "with" describe the field just named in the same clause."""
+    dissolved: list[str] = []
+    for index in range(len(clause.mentions) - 1, 0, -1):
+        mention, owner = clause.mentions[index], clause.mentions[index - 1]
+        if (
+            not owner.items
+            or owner.items[-1].role != "of"
+            or not all(h.norm in words for h in mention.heads)
+            or mention.count is not None
+            or mention.quantity is not None
+            or mention.other
+            or any(i.role in ("size", "geometry") for i in mention.items)
+        ):
+            continue
+        for head in mention.heads:
+            head.role = "filler"
+        owner.items.extend(mention.items)
+        del clause.mentions[index]
+        dissolved.append(mention.text)
+    return dissolved
+
+
+def _predicate(clause: Clause, mention: Mention) -> bool:
+    """Whether a describing verb follows the mention's head in its clause."""
+    head = max(h.end for h in mention.heads)
+    verbs = _describing_verbs()
+    return any(i.start >= head and i.norm in verbs for i in clause.items)
+
+
+@functools.lru_cache(maxsize=1)
+def _describing_verbs() -> frozenset[str]:
+    return frozenset(str(word) for word in vocabulary()["describing_verbs"])
 
 
 @functools.lru_cache(maxsize=1)
