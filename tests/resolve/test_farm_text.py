@@ -173,3 +173,27 @@ def test_what_a_field_says_of_itself_wins_over_all() -> None:
 def test_signs_of_disease_read_as_ill(prompt: str, health: str) -> None:
     (field,) = recipe(prompt).fields
     assert field.health == health
+
+
+def test_two_fields_next_to_each_other() -> None:
+    scene = recipe(
+        "comice pears and bartlett pears next to each other, the bartletts r sick w/ fire blight"
+    )
+    assert [(f.variety, f.health) for f in scene.fields] == [
+        ("Doyenne du Comice", "Healthy"),
+        ("Williams", "Ill"),
+    ]
+    ids = [f.id for f in scene.fields]
+    assert {(r.kind, frozenset((r.subject, *r.objects))) for r in scene.relations} == {
+        ("next_to", frozenset(ids))
+    }
+
+
+def test_casual_names_of_crops_and_filler_words() -> None:
+    toms = recipe("roma tomatoes & jalapenos side by side, summer, the toms have blight rly bad")
+    assert [(f.crop, f.health) for f in toms.fields] == [("Tomato", "Ill"), ("Pepper", "Healthy")]
+    vibes = recipe(
+        "savoy cabbage, january king cabbage + some chantenay carrots, 3 plots, all in nov, "
+        "frosty morning vibes"
+    )
+    assert [f.crop for f in vibes.fields] == ["Cabbage", "Cabbage", "Carrot"]

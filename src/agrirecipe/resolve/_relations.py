@@ -92,6 +92,10 @@ def read_relations(
                         _pair("between", group[1], (group[2], group[0]), members, link, trace)
                     )
                 continue
+            if len(group) == 2:
+                # "comice and bartlett pears next to each other": the two side by side
+                relations.extend(_pair("next_to", group[0], (group[1],), members, link, trace))
+                continue
             fields = members.get(id(group[0]), []) if len(group) == 1 else []
             if len(fields) >= 2:
                 # "two different fruits side by side": the fields of one mention in a row.
