@@ -197,3 +197,41 @@ def test_casual_names_of_crops_and_filler_words() -> None:
         "frosty morning vibes"
     )
     assert [f.crop for f in vibes.fields] == ["Cabbage", "Cabbage", "Carrot"]
+
+
+def test_numbered_plots_are_labels_not_fields() -> None:
+    scene = recipe(
+        "Plot 1: Elsanta strawberries, 6 beds, two rows per bed, beds on 1.5 m centres. Plot "
+        "2: Romaine lettuce next to it, just planted. Plot 3: Red Baron onions, right next to "
+        "the lettuce."
+    )
+    assert [f.crop for f in scene.fields] == ["Strawberry", "Lettuce", "Onion"]
+    assert scene.fields[0].agronomy.rows_per_bed == 2
+    assert relations(scene) == {
+        ("next_to", "Lettuce", ("Strawberry",)),
+        ("next_to", "Onion", ("Lettuce",)),
+    }
+
+
+def test_a_capitalised_variety_name_in_a_list_is_its_crop() -> None:
+    scene = recipe("west to east: Lollo, then Imperator carrots, then Stuttgarter Riesen onions")
+    assert [(f.crop, f.variety) for f in scene.fields][0] == ("Lettuce", "Lollo Rosso")
+
+
+def test_a_field_named_twice_is_one_object_of_a_pronoun() -> None:
+    scene = recipe(
+        "In the valley grove we've got Valencia oranges on the lower terraces and blood "
+        "oranges (Moro) to the north of them, everything in flower in March."
+    )
+    assert [f.variety for f in scene.fields] == ["Valencia", "Moro"]
+    ids = [f.id for f in scene.fields]
+    assert [(r.kind, r.subject, r.objects) for r in scene.relations] == [
+        ("north_of", ids[1], (ids[0],))
+    ]
+
+
+def test_crops_counted_plant_by_plant_and_nothing_sick() -> None:
+    (field,) = recipe("Past the pond is the Fontane field, 75 cm ridges, spuds every 33 cm").fields
+    assert field.agronomy.in_row_spacing_m == pytest.approx(0.33)
+    scene = recipe("crisphead lettuce and Cayenne chillies, each in its own bed, nothing sick")
+    assert {f.health for f in scene.fields} == {"Healthy"}

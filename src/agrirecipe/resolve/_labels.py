@@ -34,8 +34,8 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
     """``text`` with field labels dropped and references to them spelled out.
 
     ``tag`` reads a phrase into lexicon items. Returns the new text and one note per
-    label resolved ("Block A = Jonagored apples"). Text without a referenced label is
-    returned unchanged.
+    label ("Block A = Jonagored apples"). Text with fewer than two labels that name
+    crops is returned unchanged.
     """
     definitions = list(_DEFINITION.finditer(text))
     if len(definitions) < 2:
@@ -66,10 +66,10 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
         )
         template = "\\g<before>the " + phrase.replace("\\", "\\\\")
         replaced, count = pattern.subn(template, out)
-        if count:
-            out = replaced
-            notes.append(f"{label} = {phrase}")
-    return (out, notes) if notes else (text, [])
+        out = replaced
+        # a label never referenced is still a name, not another field ("Plot 2: ...")
+        notes.append(f"{label} = {phrase}" + ("" if count else " (a label only)"))
+    return out, notes
 
 
 def _crop_phrase(following: str, tag: Callable[[str], Sequence[Item]]) -> str:

@@ -63,7 +63,8 @@ def read_relations(
                 )
             )
             continue
-        before = [m for c in clauses[:position] for m in c.named]
+        # each field once, where last named ("blood oranges (Moro)" names one twice)
+        before = _last_named([m for c in clauses[:position] for m in c.named])
         # a pronoun's clause ("north of it") names no field of its own after the word
         after = [
             m for c in clauses[position:] for m in (c.named if c is not clause else c.mentions)
@@ -134,6 +135,15 @@ def read_relations(
 
 
 _ARTICLES = frozenset({"the", "a", "an", "our", "my", "their", "its"})
+
+
+def _last_named(mentions: Sequence[Mention]) -> list[Mention]:
+    """Each mention once, ordered by where it was last named."""
+    order: dict[int, Mention] = {}
+    for mention in mentions:
+        order.pop(id(mention), None)
+        order[id(mention)] = mention
+    return list(order.values())
 
 
 def _landmark(clause: Clause) -> str | None:

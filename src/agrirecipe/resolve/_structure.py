@@ -15,6 +15,7 @@ from __future__ import annotations
 import functools
 import itertools
 from collections.abc import Sequence
+from typing import Any
 
 from agrirecipe._errors import PromptError
 from agrirecipe.resolve._decompose import Clause, Mention, MentionBuilder
@@ -68,17 +69,29 @@ def promote_weak_varieties(clauses: Sequence[Clause], builder: MentionBuilder) -
             senses = [s for s in weak[0].senses_of("variety") if s.crop in crops]
             if not senses:
                 continue
-            item = weak[0]
-            item.role = "head"
-            mention = Mention(clause=clause.index)
-            mention.items = [i for i in clause.loose if i is not item]
-            mention.heads.append(item)
-            mention.items.append(item)
-            mention.interpretations = [(str(senses[0].crop), str(senses[0].value), False)]
+            mention = _promote(clause, weak[0], senses[0])
             if neighbour is (following.mentions[0] if following and following.mentions else None):
                 mention.plot = neighbour.plot
-            clause.mentions, clause.loose = [mention], []
             break
+        else:
+            crops = {s.crop for s in weak[0].senses_of("variety") if s.crop}
+            in_list = clause.link is not None and (listing(clause.link) or clause.link.norm == ":")
+            if len(crops) == 1 and weak[0].tokens[0].capitalised and in_list:
+                # "west to east: Lollo, then Imperator carrots": a capitalised name in a
+                # list of fields is its variety even when no field beside it is its crop
+                _promote(clause, weak[0], weak[0].senses_of("variety")[0])
+
+
+def _promote(clause: Clause, item: Item, sense: Any) -> Mention:
+    """Make a weak variety name the head of its clause's one mention."""
+    item.role = "head"
+    mention = Mention(clause=clause.index)
+    mention.items = [i for i in clause.loose if i is not item]
+    mention.heads.append(item)
+    mention.items.append(item)
+    mention.interpretations = [(str(sense.crop), str(sense.value), False)]
+    clause.mentions, clause.loose = [mention], []
+    return mention
 
 
 def apply_plural_counts(clauses: Sequence[Clause], plural_count: int) -> None:
