@@ -215,7 +215,8 @@ def test_numbered_plots_are_labels_not_fields() -> None:
 
 def test_a_capitalised_variety_name_in_a_list_is_its_crop() -> None:
     scene = recipe("west to east: Lollo, then Imperator carrots, then Stuttgarter Riesen onions")
-    assert [(f.crop, f.variety) for f in scene.fields][0] == ("Lettuce", "Lollo Rosso")
+    first = scene.fields[0]
+    assert (first.crop, first.variety) == ("Lettuce", "Lollo Rosso")
 
 
 def test_a_field_named_twice_is_one_object_of_a_pronoun() -> None:
