@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import pytest
 
-from agrirecipe import generate
+from agrirecipe import PromptError, generate
 from agrirecipe.recipe import SceneRecipe
 
 
@@ -319,3 +319,42 @@ def test_a_field_named_by_its_compass_position() -> None:
         ("Fontane", "Healthy"),
     ]
     assert ("east_of", "Potato", ("Potato",)) in relations(scene)
+
+
+def test_a_grid_named_as_rows_by_plants() -> None:
+    tomatoes, _ = recipe(
+        "a 0.5 ha block of tomatoes at 1.5 m x 0.5 m (row x plant) and a 0.5 ha block of "
+        "peppers, twin rows on 1.5 m beds with 45 cm in-row spacing"
+    ).fields
+    assert tomatoes.crop == "Tomato"
+    assert (tomatoes.agronomy.row_spacing_m, tomatoes.agronomy.in_row_spacing_m) == (1.5, 0.5)
+    (oranges,) = recipe(
+        "a high-density blood orange block (3.7 m x 1.2 m, rows x trees), 12 rows of 90 m"
+    ).fields
+    assert (oranges.agronomy.row_spacing_m, oranges.agronomy.in_row_spacing_m) == (3.7, 1.2)
+
+
+def test_metres_between_rows_and_between_trees() -> None:
+    (field,) = recipe(
+        "200 Valencia orange trees at 7 m between rows and 4 m between trees, rows NE-SW"
+    ).fields
+    assert (field.agronomy.row_spacing_m, field.agronomy.in_row_spacing_m) == (7.0, 4.0)
+
+
+def test_a_crop_joined_to_a_robot_task_names_the_task() -> None:
+    scene = recipe(
+        "Apple-counting scene, two blocks: 6 rows of Fuji and, east of them, 6 rows of Granny "
+        "Smith; all rows 3.5 m apart and 100 m long"
+    )
+    assert [f.variety for f in scene.fields] == ["Fuji", "Granny Smith"]
+    assert [f.crop for f in recipe("an apple test plot").fields] == ["Apple"]
+
+
+def test_a_plural_without_a_number_takes_the_whole_list() -> None:
+    scene = recipe(
+        "Fruit-detection camera plots: Jalapeño, Padrón and California Wonder peppers, 4 beds "
+        "each, twin rows on 1.5 m beds, 45 cm in the row."
+    )
+    assert [f.variety for f in scene.fields] == ["Jalapeno", "Padron", "California Wonder"]
+    with pytest.raises(PromptError, match="announces 2"):
+        recipe("two plots: wheat, maize and potatoes")

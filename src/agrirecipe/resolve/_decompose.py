@@ -64,6 +64,8 @@ class Mention:
     category: str | None = None
     plot: dict[str, Any] | None = None
     count: int | None = None
+    #: The count is only a plural's default ("plots"): a longer list after it wins.
+    implied_count: bool = False
     #: A vague amount ("several", "lots of"): a count only of fields, not of plants.
     quantity: int | None = None
     distinct: bool = False

@@ -154,7 +154,7 @@ class PromptReader(FieldReading):
         items, steps = self.unknown_words(items, self.lexicon)
         self.trace.extend(steps)
         assign_roles(items)
-        _purpose_diseases(items)
+        _purpose_diseases(items, text)
         prompt_latitude, latitude_text, items = read_latitude(text, items)
         items = read_sizes(read_heights(items))
         self._reject_scenery(items)
@@ -579,16 +579,17 @@ _ALL_PLANTS = frozenset({"plants", "trees", "vines", "crops", "bushes"})
 _PURPOSES = frozenset({"robots", "purposes"})
 
 
-def _purpose_diseases(items: Sequence[Item]) -> None:
+def _purpose_diseases(items: Sequence[Item], text: str) -> None:
     """'Late-blight detection dataset', 'a blight-spotting drone': a disease named as what
-    a dataset or robot is for says nothing about the plants' health (scenery words)."""
+    a dataset or robot is for says nothing about the plants' health (scenery words).
+    'Apple-counting scene', 'fruit-detection plots': a crop joined by a hyphen to what a
+    robot does names the task, not a field."""
     for item, following in itertools.pairwise(items):
-        if (
-            item.role == "health"
-            and following.role == "filler"
-            and following.data.get("scenery") in _PURPOSES
-            and following.start - item.end <= 1  # "blight-spotting", "blight detection"
-        ):
+        purpose = following.role == "filler" and following.data.get("scenery") in _PURPOSES
+        if not purpose:
+            continue
+        gap = text[item.end : following.start]
+        if (item.role == "health" and len(gap) <= 1) or (item.role == "head" and gap == "-"):
             item.role = "filler"
             item.data["scenery"] = "purposes"
 

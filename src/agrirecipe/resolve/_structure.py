@@ -140,6 +140,7 @@ def apply_plural_counts(clauses: Sequence[Clause], plural_count: int) -> None:
             if any(not any(h.role == "plot" for h in n.heads) for n in neighbours):
                 continue
             mention.count = plural_count
+            mention.implied_count = True
 
 
 def apply_corrections(clauses: Sequence[Clause]) -> list[str]:
@@ -299,6 +300,15 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
                 _names_varieties_of(sub, parent) and (enumerating or link.role == "separator")
             )
             room = (parent.count or 1) - len(parent.refinements)
+            if (
+                parent.implied_count
+                and lists_members
+                and clause.mentions
+                and (sub.count or 1) > room
+            ):
+                # "camera plots: Jalapeño, Padrón and California Wonder": as many as listed
+                parent.count = len(parent.refinements) + (sub.count or 1)
+                room = sub.count or 1
             # "five fields: 2 of maize and 3 of wheat": a listed member may be counted
             listable = lists_members and bool(clause.mentions)
             listed = listable and 1 <= (sub.count or 1) <= room
