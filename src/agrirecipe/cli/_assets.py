@@ -1,5 +1,5 @@
-"""``agrirecipe assets``: list the asset catalogue, parse an asset path, or build the
-plant meshes of the catalogue (issue 9)."""
+"""``agrirecipe assets``: list the asset catalogue, parse an asset path, build the plant
+meshes of the catalogue, or render their contact sheet (issue 9)."""
 
 from __future__ import annotations
 
@@ -15,18 +15,20 @@ def register(subparsers: Any) -> None:
     """Add the ``assets`` sub-command."""
     parser = subparsers.add_parser(
         "assets",
-        help="list catalogue asset paths, parse one, or build the plant meshes",
+        help="list catalogue asset paths, parse one, build the plant meshes, or render a sheet",
         description="List the asset catalogue (optionally some crops'), parse an Unreal object "
         "path back into its attributes, or build the plant library: a glTF binary mesh "
         "(.glb) per catalogue asset and shape variant with a manifest.json, in the "
-        "hierarchy's folder layout ('agrirecipe assets build -o plants/').",
+        "hierarchy's folder layout ('agrirecipe assets build -o plants/'), or render a "
+        "contact sheet of every crop at each stage, season and health "
+        "('agrirecipe assets sheet -o sheet.png').",
     )
     parser.add_argument(
         "action",
         nargs="?",
-        choices=("list", "build"),
+        choices=("list", "build", "sheet"),
         default="list",
-        help="list (default) or build",
+        help="list (default), build or sheet",
     )
     parser.add_argument(
         "--crop", action="append", help="only this crop's assets (repeat for several)"
@@ -35,7 +37,13 @@ def register(subparsers: Any) -> None:
     parser.add_argument("--hierarchy", type=Path, help="a custom hierarchy.yaml")
     parser.add_argument("--knowledge", type=Path, help="a custom crops/ folder (build)")
     parser.add_argument("--content-root", help="Unreal content folder (default /Game/Agriculture)")
-    parser.add_argument("-o", "--output", type=Path, help="library folder to write (build)")
+    parser.add_argument(
+        "-o", "--output", type=Path, help="library folder (build) or PNG (sheet) to write"
+    )
+    parser.add_argument("--variety", help="the variety a sheet shows (default: each crop's first)")
+    parser.add_argument(
+        "--cell", type=int, default=150, help="pixels per plant on the sheet (default 150)"
+    )
     parser.add_argument(
         "--variants", type=int, default=3, help="shape variants per asset, 1-16 (default 3)"
     )
@@ -56,6 +64,8 @@ def run(args: argparse.Namespace) -> int:
     hierarchy = load_hierarchy(args.hierarchy, content_root=args.content_root)
     if args.action == "build":
         return _build(args, hierarchy)
+    if args.action == "sheet":
+        return _sheet(args, hierarchy)
     if args.parse:
         key = hierarchy.parse_asset_path(args.parse)
         for name in ("category", "crop", "variety", "stage", "season", "health"):
@@ -104,4 +114,25 @@ def _build(args: argparse.Namespace, hierarchy: Any) -> int:
         f"{args.variants} variants, {size / 1e6:.1f} MB) and manifest.json to {args.output} "
         f"in {time.perf_counter() - started:.1f} s"
     )
+    return 0
+
+
+def _sheet(args: argparse.Namespace, hierarchy: Any) -> int:
+    from agrirecipe._errors import ConfigurationError
+    from agrirecipe.knowledge import load_knowledge_base
+    from agrirecipe.plants import contact_sheet
+
+    if args.output is None:
+        raise ConfigurationError(
+            "assets sheet needs a PNG to write", stage="plants", hint="add -o sheet.png"
+        )
+    started = time.perf_counter()
+    path = contact_sheet(
+        args.output,
+        knowledge=load_knowledge_base(args.knowledge, hierarchy),
+        crops=args.crop,
+        variety=args.variety,
+        cell_px=args.cell,
+    )
+    print(f"wrote {path} in {time.perf_counter() - started:.1f} s")
     return 0

@@ -58,6 +58,19 @@ def register(subparsers: Any) -> None:
         "OpenGL, only quick for small scenes without a GPU; eevee: slow on CPU",
     )
     parser.add_argument("--no-denoise", action="store_true", help="turn Cycles denoising off")
+    parser.add_argument(
+        "--view",
+        choices=("overview", "ground"),
+        default="overview",
+        help="overview: every field from above at an angle (default); ground: a robot's eye "
+        "at the start of the first field, looking along its rows",
+    )
+    parser.add_argument(
+        "--plants",
+        choices=("meshes", "proxies"),
+        default="meshes",
+        help="meshes: the plant library's (default); proxies: simple shapes, faster",
+    )
     parser.add_argument("--save-blend", type=Path, help="also save the built scene as a .blend")
     parser.add_argument("--save-script", type=Path, help="also write the blender_build.py used")
     parser.add_argument(
@@ -114,6 +127,8 @@ def run(args: argparse.Namespace) -> int:
         samples=args.samples,
         engine=args.engine,
         denoise=not args.no_denoise,
+        plants=args.plants,
+        view=args.view,
     )
     scene = _scene(args)
     recipe = scene.recipe
@@ -135,6 +150,8 @@ def run(args: argparse.Namespace) -> int:
         samples=settings.samples,
         engine=settings.engine,
         denoise=settings.denoise,
+        plants=settings.plants,
+        view=settings.view,
         isolated=True,
         timeout_s=args.timeout,
         save_blend=args.save_blend,

@@ -25,6 +25,7 @@ from agrirecipe.plants._scene import (
     write_scene_assets,
 )
 from agrirecipe.plants._shapes import ARCHETYPES, PlantSpec
+from agrirecipe.plants._sheet import contact_sheet
 
 __all__ = [
     "ARCHETYPES",
@@ -38,6 +39,7 @@ __all__ = [
     "Primitive",
     "asset_file_name",
     "build_library",
+    "contact_sheet",
     "field_assets",
     "glb_bytes",
     "plant_mesh",

@@ -248,3 +248,14 @@ def test_a_missing_mesh_file_falls_back_to_proxies(tmp_path: Path) -> None:
     assert described["properties"]["agrirecipe_plants"] == "proxies"
     assert "is missing; drawing proxies" in built["log"]
     assert described["instances"]["count"] == layout_scene(recipe).plant_count
+
+
+def test_ground_view_camera_looks_along_the_rows(tmp_path: Path) -> None:
+    recipe = single_field_recipe("Maize", size_m=(12.0, 20.0))
+    built = build_in_bpy(recipe, tmp_path, ["--plants", "proxies", "--view", "ground"])
+    camera = built["camera"]
+    forward = np.array(camera["forward"])
+    # field rotation 0: the rows run north (+Y); the camera looks along them, a little down
+    assert forward[1] > 0.99 and abs(forward[0]) < 1e-6 and -0.2 < forward[2] < 0.0
+    x, y, z = camera["location"]
+    assert 0.0 < x < 12.0 and 0.0 <= y < 1.0 and z == pytest.approx(1.4)

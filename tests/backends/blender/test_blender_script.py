@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import ast
 import io
+import math
 import tokenize
 from importlib import resources
 from pathlib import Path
@@ -174,3 +175,26 @@ def test_backend_is_registered_and_writes_its_script(tmp_path: Path) -> None:
 def test_scene_write_includes_the_blender_script(tmp_path: Path) -> None:
     written = Scene(single_field_recipe()).write(tmp_path, backends=["blender"])
     assert {p.name for p in written} == {"recipe.json", SCRIPT_NAME}
+
+
+@pytest.mark.parametrize("rotation", [0.0, 30.0, 90.0])
+def test_ground_view_stands_between_the_first_rows_looking_along_them(rotation: float) -> None:
+    from agrirecipe import generate
+    from agrirecipe.backends.blender import ground_view
+    from agrirecipe.layout import field_parameters
+
+    recipe = generate("10 rows of maize, 80 m long, 76 cm apart", resolver="hybrid").recipe
+    params = dict(field_parameters(recipe)[0], rotation_deg=rotation)
+    view = ground_view(params, tallest_m=2.5)
+    x, y, z = view["location_m"]
+    assert view["bearing_deg"] == pytest.approx((-rotation) % 360.0)
+    assert z == pytest.approx(max(1.4, 0.6 * 2.5))
+    # back in field-local metres: half a row spacing past the first row, before the plants
+    turn = math.radians(rotation)
+    dx, dy = x - params["origin_m"][0], y - params["origin_m"][1]
+    local_x = dx * math.cos(turn) + dy * math.sin(turn)
+    local_y = -dx * math.sin(turn) + dy * math.cos(turn)
+    spec = recipe.fields[0]
+    first_row = (spec.geometry.size_m[0] - 9 * 0.76) / 2.0
+    assert local_x == pytest.approx(first_row + 0.38, abs=1e-6)
+    assert -1e-6 <= local_y < spec.geometry.headland_m + 0.01

@@ -651,6 +651,28 @@ def build_camera(scene_data: dict[str, Any], scene: Any, root: Any, aspect: floa
     return camera
 
 
+#: Where the render camera stands: above the whole scene, or in the first field's rows.
+CAMERA_VIEWS = ("overview", "ground")
+# How far a robot's camera looks down, in degrees.
+_GROUND_PITCH_DEG = -6.0
+
+
+def build_ground_camera(field: dict[str, Any], scene: Any, root: Any) -> Any:
+    """A robot's-eye camera at the start of the first field, between its first two rows,
+    looking along them (``field["ground_view"]``: location and compass bearing)."""
+    view = field["ground_view"]
+    data = bpy.data.cameras.new("agrirecipe_camera")
+    data.lens = 24.0
+    data.clip_start = 0.05
+    data.clip_end = 2000.0
+    camera = bpy.data.objects.new("agrirecipe_camera", data)
+    camera.location = tuple(view["location_m"])
+    camera.rotation_euler = look_rotation(float(view["bearing_deg"]), _GROUND_PITCH_DEG)
+    root.objects.link(camera)
+    scene.camera = camera
+    return camera
+
+
 def build_world(scene_data: dict[str, Any], scene: Any) -> None:
     """A plain sky colour lighting the scene from every side."""
     world = bpy.data.worlds.new("agrirecipe_sky")
@@ -727,6 +749,7 @@ def command_line_settings(settings: dict[str, Any], argv: Sequence[str]) -> dict
     parser.add_argument("--samples", type=int, help="render samples")
     parser.add_argument("--engine", choices=sorted(ENGINES), help="render engine")
     parser.add_argument("--plants", choices=PLANT_MODES, help="plant meshes or proxies")
+    parser.add_argument("--view", choices=CAMERA_VIEWS, help="overview or ground camera")
     parser.add_argument("--assets", metavar="DIR", help="the folder holding assets/")
     parsed = parser.parse_args(args)
     updated = dict(settings)
@@ -743,6 +766,8 @@ def command_line_settings(settings: dict[str, Any], argv: Sequence[str]) -> dict
         updated["engine"] = parsed.engine
     if parsed.plants:
         updated["plants"] = parsed.plants
+    if parsed.view:
+        updated["view"] = parsed.view
     if parsed.assets:
         updated["assets_root"] = parsed.assets
     return updated
@@ -805,7 +830,10 @@ def build_scene(
     build_sun(scene_data, root)
     configure_render(scene, settings)
     width, height = scene.render.resolution_x, scene.render.resolution_y
-    build_camera(scene_data, scene, root, width / height)
+    if settings.get("view", "overview") == "ground" and scene_data["fields"]:
+        build_ground_camera(scene_data["fields"][0], scene, root)
+    else:
+        build_camera(scene_data, scene, root, width / height)
     build_world(scene_data, scene)
     seconds = time.perf_counter() - started
     timings["rest"] = seconds - sum(timings.values())
