@@ -10,6 +10,7 @@ import pytest
 from agrirecipe import ConfigurationError, Scene, load_recipe
 from agrirecipe._scene import DEFAULT_BACKENDS
 from agrirecipe.backends import get_backend
+from agrirecipe.backends.usd import BINARY_ABOVE
 
 EXAMPLE = (
     Path(__file__).resolve().parents[1]
@@ -29,7 +30,16 @@ def test_write_produces_the_recipe_and_the_ground_truth_outputs(
 ) -> None:
     written = scene.write(tmp_path / "out", backends=["usd", "annotations"])
     names = [p.name for p in written]
-    assert names == ["recipe.json", "scene.usda", "plants.csv", "fields.geojson", "preview.png"]
+    # a scene of more than BINARY_ABOVE plants keeps its per-plant arrays in binary beside
+    assert scene.layout.plant_count > BINARY_ABOVE
+    assert names == [
+        "recipe.json",
+        "scene.usda",
+        "scene_plants.usdc",
+        "plants.csv",
+        "fields.geojson",
+        "preview.png",
+    ]
     for path in written:
         assert path.parent == tmp_path / "out" and path.stat().st_size > 0
     assert load_recipe(tmp_path / "out" / "recipe.json") == scene.recipe
@@ -49,7 +59,7 @@ def test_same_recipe_and_seed_give_byte_identical_files(scene: Scene, tmp_path: 
 
 def test_default_write_runs_every_default_backend(scene: Scene, tmp_path: Path) -> None:
     written = {p.name for p in scene.write(tmp_path)}
-    expected = {"recipe.json"}
+    expected = {"recipe.json", "scene_plants.usdc"}  # the example is a large scene
     for name in DEFAULT_BACKENDS:
         expected |= set(get_backend(name).outputs)
     assert written == expected

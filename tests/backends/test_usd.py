@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from agrirecipe import BackendError, Scene
+from agrirecipe import BackendError, ConfigurationError, Scene
 from agrirecipe.backends import get_backend
 from agrirecipe.backends.usd import proxy_mesh, yaw_quaternions
 
@@ -177,9 +177,11 @@ def test_stage_is_byte_identical_when_written_again(
 ) -> None:
     scene, folder = written
     again = get_backend("usd").write(Scene(scene.recipe), tmp_path)
-    assert again == [tmp_path / "scene.usda"]
-    assert (tmp_path / "scene.usda").read_bytes() == (folder / "scene.usda").read_bytes()
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["assets", "scene.usda"]
+    names = sorted(p.name for p in again)
+    assert names[0] == "scene.usda"
+    for path in again:
+        assert path.read_bytes() == (folder / path.name).read_bytes()
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["assets", *names]
     meshes = sorted(p.relative_to(tmp_path) for p in (tmp_path / "assets").rglob("*.usdc"))
     assert len(meshes) == 3 * len({spec.asset_path for spec in scene.recipe.fields})
     for relative in meshes:  # the meshes too are byte-identical
@@ -251,3 +253,35 @@ def test_in_memory_stage_can_be_extended_before_saving(written: tuple[Scene, Pat
     UsdGeom.Camera.Define(stage, "/World/Camera")  # a user's addition
     assert stage.GetPrimAtPath("/World/Camera").IsA(UsdGeom.Camera)
     assert 'def Camera "Camera"' in stage.GetRootLayer().ExportToString()
+
+
+def test_large_scenes_keep_their_plants_in_a_binary_sublayer(
+    written: tuple[Scene, Path], tmp_path: Path
+) -> None:
+    from agrirecipe.backends.usd import PLANTS_LAYER_NAME, UsdBackend
+
+    scene, _ = written
+    text = tmp_path / "text"
+    UsdBackend(binary_above=None).write(scene, text)
+    small = tmp_path / "small"
+    UsdBackend(binary_above=0).write(scene, small)
+    assert not (text / PLANTS_LAYER_NAME).exists()
+    assert (small / PLANTS_LAYER_NAME).is_file()
+    assert (small / "scene.usda").stat().st_size < (text / "scene.usda").stat().st_size
+    root = (small / "scene.usda").read_text(encoding="utf-8")
+    assert f"@./{PLANTS_LAYER_NAME}@" in root and "anon:" not in root
+    # both compose to the same instances
+    time = Usd.TimeCode.Default()
+    for path in (text, small):
+        stage = Usd.Stage.Open(str(path / "scene.usda"))
+        for spec in scene.recipe.fields:
+            instancer = UsdGeom.PointInstancer(
+                stage.GetPrimAtPath(f"/World/Fields/{spec.id}/Plants")
+            )
+            count = len(instancer.ComputeInstanceTransformsAtTime(time, time))
+            assert count == scene.layout.field(spec.id).plant_count
+    # writing a small scene over a large one leaves no stale binary layer behind
+    UsdBackend(binary_above=None).write(scene, small)
+    assert not (small / PLANTS_LAYER_NAME).exists()
+    with pytest.raises(ConfigurationError):
+        UsdBackend(binary_above=-1)

@@ -40,8 +40,8 @@ from typing import TYPE_CHECKING, Any, ClassVar
 import numpy as np
 
 from agrirecipe import __version__
-from agrirecipe._errors import BackendError
-from agrirecipe._files import atomic_path
+from agrirecipe._errors import BackendError, ConfigurationError
+from agrirecipe._files import atomic_path, write_atomic
 from agrirecipe.backends._base import Backend
 
 if TYPE_CHECKING:
@@ -50,10 +50,23 @@ if TYPE_CHECKING:
     from agrirecipe.plants import FieldAsset
     from agrirecipe.recipe import FieldSpec, GrowthForm, SceneRecipe
 
-__all__ = ["STAGE_NAME", "UsdBackend", "proxy_mesh", "yaw_quaternions"]
+__all__ = [
+    "BINARY_ABOVE",
+    "PLANTS_LAYER_NAME",
+    "STAGE_NAME",
+    "UsdBackend",
+    "proxy_mesh",
+    "yaw_quaternions",
+]
 
 #: The file :meth:`UsdBackend.write` creates.
 STAGE_NAME = "scene.usda"
+#: Beside it, for scenes above ``UsdBackend.binary_above`` plants: the instancers'
+#: per-plant arrays as binary crate, a sublayer of ``scene.usda``.
+PLANTS_LAYER_NAME = "scene_plants.usdc"
+#: Plants above which the per-plant arrays go to the binary sublayer (text would be
+#: about 95 bytes per plant: 95 MB per million plants).
+BINARY_ABOVE = 100_000
 
 # What a prototype (one asset) says about itself, from the field's attributes.
 _ASSET_ATTRIBUTES = (
@@ -149,38 +162,73 @@ def proxy_mesh(
 
 
 class UsdBackend(Backend):
-    """Writes ``scene.usda``: metres, Z up, one ``UsdGeom.PointInstancer`` per field."""
+    """Writes ``scene.usda``: metres, Z up, one ``UsdGeom.PointInstancer`` per field.
+
+    Above ``binary_above`` plants (default :data:`BINARY_ABOVE`) the per-plant arrays
+    (positions, orientations, scales, prototype indices) go to a binary sublayer,
+    ``scene_plants.usdc``, so ``scene.usda`` stays a small readable file and the
+    stage opens fast; ``binary_above=None`` keeps everything in the text file.
+    """
 
     name: ClassVar[str] = "usd"
     outputs: ClassVar[tuple[str, ...]] = (STAGE_NAME,)
 
+    def __init__(self, *, binary_above: int | None = BINARY_ABOVE) -> None:
+        if binary_above is not None and (
+            isinstance(binary_above, bool) or not isinstance(binary_above, int) or binary_above < 0
+        ):
+            raise ConfigurationError(
+                f"binary_above must be a number of plants or None, got {binary_above!r}",
+                stage="compile",
+            )
+        self.binary_above = binary_above
+
     def write(self, scene: Scene, directory: Path) -> list[Path]:
-        """Export the stage atomically to ``directory/scene.usda``, its meshes to ``assets/``."""
+        """Export the stage atomically to ``directory/scene.usda``, its meshes to ``assets/``
+        (and, for large scenes, the plants' arrays to ``scene_plants.usdc``)."""
         from agrirecipe.plants import write_scene_assets
 
         tf = _import_pxr()
         target = Path(directory) / STAGE_NAME
+        binary = Path(directory) / PLANTS_LAYER_NAME
         try:
             write_scene_assets(scene.recipe, directory, knowledge=scene.knowledge, usd=True)
-            stage = _build_stage(scene)
-            with atomic_path(target, suffix=".usda") as temporary:
-                if not stage.GetRootLayer().Export(str(temporary)):
-                    raise BackendError(
-                        f"pxr could not export the stage to {str(target)!r}", stage="compile"
-                    )
+            stage, plants_layer = _build_stage(scene, self._binary(scene))
+            root = stage.GetRootLayer()
+            if plants_layer is None:
+                with atomic_path(target, suffix=".usda") as temporary:
+                    if not root.Export(str(temporary)):
+                        raise BackendError(
+                            f"pxr could not export the stage to {str(target)!r}", stage="compile"
+                        )
+                binary.unlink(missing_ok=True)  # a smaller scene written over a larger one
+                return [target]
+            with atomic_path(binary, suffix=".usdc") as temporary:
+                if not plants_layer.Export(str(temporary)):
+                    raise BackendError(f"pxr could not export {str(binary)!r}", stage="compile")
+            # The root names its sublayer by the in-memory layer's identifier: written to
+            # disk, it names the file beside it.
+            text = root.ExportToString().replace(
+                f"@{plants_layer.identifier}@", f"@./{PLANTS_LAYER_NAME}@"
+            )
+            write_atomic(target, text)
+            return [target, binary]
         except (tf.ErrorException, OSError) as exc:
             raise BackendError(
                 f"OpenUSD failed while writing {str(target)!r}: {exc}",
                 stage="compile",
                 hint="check the output folder is writable",
             ) from exc
-        return [target]
+
+    def _binary(self, scene: Scene) -> bool:
+        return self.binary_above is not None and scene.layout.plant_count > self.binary_above
 
     def stage(self, scene: Scene) -> Any:
-        """The scene as an in-memory ``Usd.Stage`` (for callers who add to it before saving)."""
+        """The scene as an in-memory ``Usd.Stage`` (for callers who add to it before saving;
+        the plants' arrays are in the root layer)."""
         tf = _import_pxr()
         try:
-            return _build_stage(scene)
+            return _build_stage(scene, False)[0]
         except tf.ErrorException as exc:
             raise BackendError(
                 f"OpenUSD failed building the stage: {exc}", stage="compile"
@@ -201,7 +249,8 @@ def _import_pxr() -> Any:
         ) from exc
 
 
-def _build_stage(scene: Scene) -> Any:
+def _build_stage(scene: Scene, binary: bool) -> tuple[Any, Any]:
+    """The stage, and the in-memory binary layer its per-plant arrays went to (or None)."""
     from pxr import Kind, Sdf, Usd, UsdGeom
 
     from agrirecipe.plants import field_assets
@@ -231,14 +280,22 @@ def _build_stage(scene: Scene) -> Any:
     _add_surroundings(stage, recipe)
     UsdGeom.Scope.Define(stage, "/World/Fields")
     assets = field_assets(recipe, knowledge=scene.knowledge)
+    plants_layer = None
+    if binary:
+        plants_layer = Sdf.Layer.CreateAnonymous(PLANTS_LAYER_NAME)
+        layer.subLayerPaths.append(plants_layer.identifier)
     for plants in scene.layout.fields:
         spec = plants.spec
         field_path = Sdf.Path("/World/Fields").AppendChild(spec.id)
         field_prim = UsdGeom.Xform.Define(stage, field_path).GetPrim()
         _set_attributes(field_prim, plants.attributes())
         _add_ground(stage, field_path.AppendChild("Ground"), spec)
-        _add_instancer(stage, field_path.AppendChild("Plants"), plants, assets[spec.id])
-    return stage
+        instancer = _add_instancer(stage, field_path.AppendChild("Plants"), plants, assets[spec.id])
+        if plants_layer is not None:
+            stage.SetEditTarget(Usd.EditTarget(plants_layer))
+        _add_plant_arrays(instancer, plants)
+        stage.SetEditTarget(Usd.EditTarget(layer))
+    return stage, plants_layer
 
 
 def _set_attributes(prim: Any, values: Mapping[str, str | int | float | list[str]]) -> None:
@@ -321,10 +378,9 @@ def _add_surroundings(stage: Any, recipe: SceneRecipe) -> None:
     )
 
 
-def _add_instancer(stage: Any, path: Any, plants: FieldPlants, asset: FieldAsset | None) -> None:
-    from pxr import Gf, Tf, UsdGeom, Vt
-
-    from agrirecipe.plants import plant_variants
+def _add_instancer(stage: Any, path: Any, plants: FieldPlants, asset: FieldAsset | None) -> Any:
+    """The field's instancer with its prototypes and extent (the per-plant arrays follow)."""
+    from pxr import Gf, Tf, UsdGeom
 
     spec = plants.spec
     agronomy = spec.agronomy
@@ -359,12 +415,6 @@ def _add_instancer(stage: Any, path: Any, plants: FieldPlants, asset: FieldAsset
 
     instancer.CreatePrototypesRel().SetTargets(prototype_paths)
     count = plants.plant_count
-    indices = plant_variants(count, len(prototype_paths))
-    instancer.CreateProtoIndicesAttr(Vt.IntArray.FromNumpy(indices))
-    instancer.CreatePositionsAttr(Vt.Vec3fArray.FromNumpy(plants.xyz.astype(np.float32)))
-    instancer.CreateOrientationsAttr(Vt.QuathArray.FromNumpy(yaw_quaternions(plants.yaw_rad)))
-    scales = np.repeat(plants.scale.astype(np.float32)[:, None], 3, axis=1)
-    instancer.CreateScalesAttr(Vt.Vec3fArray.FromNumpy(scales))
     # Extent: every instance fits in a cylinder of the canopy radius, scaled (meshes
     # reach at most 5 % beyond the canopy the knowledge base gives).
     reach = 1.05 * agronomy.canopy_width_m / 2.0 * float(plants.scale.max()) if count else 0.0
@@ -377,6 +427,23 @@ def _add_instancer(stage: Any, path: Any, plants: FieldPlants, asset: FieldAsset
             Gf.Vec3f(float(high[0]), float(high[1]), top),
         ]
     )
+    return instancer
+
+
+def _add_plant_arrays(instancer: Any, plants: FieldPlants) -> None:
+    """Instance i: plants.csv's i-th plant of the field, showing its variant's prototype."""
+    from pxr import Vt
+
+    from agrirecipe.plants import plant_variants
+
+    prototypes = len(instancer.GetPrototypesRel().GetTargets())
+    indices = plant_variants(plants.plant_count, prototypes)
+    instancer.CreateProtoIndicesAttr().Set(Vt.IntArray.FromNumpy(indices))
+    instancer.CreatePositionsAttr().Set(Vt.Vec3fArray.FromNumpy(plants.xyz.astype(np.float32)))
+    orientations = Vt.QuathArray.FromNumpy(yaw_quaternions(plants.yaw_rad))
+    instancer.CreateOrientationsAttr().Set(orientations)
+    scales = np.repeat(plants.scale.astype(np.float32)[:, None], 3, axis=1)
+    instancer.CreateScalesAttr().Set(Vt.Vec3fArray.FromNumpy(scales))
 
 
 def _describe_prototype(

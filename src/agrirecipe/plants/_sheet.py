@@ -106,7 +106,8 @@ for item in job["cells"]:
 columns, rows = job["columns"], job["rows"]
 camera_data = bpy.data.cameras.new("sheet")
 camera_data.type = "ORTHO"
-camera_data.ortho_scale = max(columns, rows * job["width_px"] / job["height_px"]) * cell
+# the orthographic scale spans the image's longer side; the cells are square
+camera_data.ortho_scale = max(columns, rows) * cell
 camera = bpy.data.objects.new("sheet", camera_data)
 scene.collection.objects.link(camera)
 camera.location = ((columns - 1) * cell / 2.0, -50.0, -(rows - 1) * cell / 2.0)
