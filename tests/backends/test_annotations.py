@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 from PIL import Image
 
-from agrirecipe import Scene
+from agrirecipe import BackendError, ConfigurationError, Scene
 from agrirecipe.backends import get_backend
 from agrirecipe.backends.annotations import (
     CSV_COLUMNS,
@@ -115,3 +115,62 @@ def test_preview_of_a_rotated_field_and_many_fields(tmp_path: Path) -> None:
     (colour,) = field_colours(1)
     assert np.all(pixels == colour, axis=2).sum() > 100
     assert len(set(field_colours(64))) == 64
+
+
+def test_parquet_holds_the_csv_columns(scene: Scene, tmp_path: Path) -> None:
+    pq = pytest.importorskip("pyarrow.parquet")
+    from agrirecipe.backends.annotations import AnnotationsBackend
+
+    written = AnnotationsBackend(ground_truth="both").write(scene, tmp_path)
+    assert [p.name for p in written[:2]] == ["plants.csv", "plants.parquet"]
+    table = pq.read_table(tmp_path / "plants.parquet")
+    assert table.column_names == list(CSV_COLUMNS)
+    with (tmp_path / "plants.csv").open(newline="", encoding="utf-8") as stream:
+        rows = list(csv.DictReader(stream))
+    assert table.num_rows == len(rows) == scene.layout.plant_count
+    columns = table.to_pydict()
+    for name in ("field_id", "crop", "variety", "stage", "season", "health"):
+        assert columns[name] == [row[name] for row in rows]
+    for name, tolerance in (("x_m", 5.1e-5), ("y_m", 5.1e-5), ("yaw_deg", 6e-4), ("scale", 6e-6)):
+        expected = np.array([float(row[name]) for row in rows])
+        np.testing.assert_allclose(columns[name], expected, atol=tolerance)
+    assert columns["variant"] == [int(row["variant"]) for row in rows]
+    # Parquet is the smaller file; asking for CSV alone removes a stale Parquet table
+    assert (tmp_path / "plants.parquet").stat().st_size < (tmp_path / "plants.csv").stat().st_size
+    AnnotationsBackend(ground_truth="csv").write(scene, tmp_path)
+    assert not (tmp_path / "plants.parquet").exists()
+
+
+def test_auto_ground_truth_switches_to_parquet_above_a_million_plants(
+    scene: Scene, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    pytest.importorskip("pyarrow")
+    import agrirecipe.backends.annotations as annotations
+
+    names = [p.name for p in annotations.AnnotationsBackend().write(scene, tmp_path)]
+    assert "plants.csv" in names and "plants.parquet" not in names  # a small scene
+    monkeypatch.setattr(annotations, "PARQUET_ABOVE", scene.layout.plant_count - 1)
+    names = [p.name for p in annotations.AnnotationsBackend().write(scene, tmp_path)]
+    assert "plants.parquet" in names and not (tmp_path / "plants.csv").exists()
+    with pytest.raises(ConfigurationError, match="ground truth"):
+        annotations.AnnotationsBackend(ground_truth="xml")  # type: ignore[arg-type]
+
+
+def test_parquet_without_pyarrow_says_how_to_install(
+    scene: Scene, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    import builtins
+
+    from agrirecipe.backends.annotations import write_plants_parquet
+
+    real = builtins.__import__
+
+    def refuse(name: str, *args: object, **kwargs: object) -> object:
+        if name.startswith("pyarrow"):
+            raise ImportError("No module named 'pyarrow'")
+        return real(name, *args, **kwargs)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(builtins, "__import__", refuse)
+    with pytest.raises(BackendError, match="pyarrow"):
+        write_plants_parquet(scene.layout, tmp_path / "plants.parquet")
+    assert not list(tmp_path.iterdir())
