@@ -117,9 +117,9 @@ def test_prototypes_reference_the_plant_meshes_and_name_the_asset(
             assert prototype.GetAttribute("agrirecipe:variety").Get() == spec.variety
             assert prototype.GetAttribute("agrirecipe:variant").Get() == variant
             assert prototype.GetAssetInfo()["name"] == stem
-            # The reference resolves: the mesh file is beside the stage and composes in.
-            (reference,) = prototype.GetMetadata("references").GetAddedOrExplicitItems()
-            assert (folder / reference.assetPath).is_file()
+            # The payload resolves: the mesh file is beside the stage and composes in.
+            (payload,) = prototype.GetMetadata("payload").GetAddedOrExplicitItems()
+            assert (folder / payload.assetPath).is_file()
             meshes = [p for p in Usd.PrimRange(prototype) if p.IsA(UsdGeom.Mesh)]
             assert meshes, f"{target} holds no mesh"
             bound = UsdGeom.Imageable(prototype).ComputeLocalBound(

@@ -2,8 +2,9 @@
 
 The stage opens in usdview, Isaac Sim, Omniverse and Unreal's USD importer
 without our asset pack: each field's prototypes reference the plant library's
-meshes for its asset (one prototype per shape variant, ``assets/.../SM_..._v<N>.usdc``
-written beside the stage, see :mod:`agrirecipe.plants`), and name the Unreal
+meshes for its asset (one prototype per shape variant, a payload of
+``assets/.../SM_..._v<N>.usdc`` written beside the stage, see
+:mod:`agrirecipe.plants`), and name the Unreal
 asset they stand for. A field whose crop the knowledge base cannot draw gets a
 simple proxy mesh sized like the plant (canopy width x height at this stage)
 and coloured like its foliage instead. Layout::
@@ -14,7 +15,7 @@ and coloured like its foliage instead. Layout::
         Fields/<field id>        Xform with the field's attributes (agrirecipe:*)
             Ground               soil quad over the field rectangle, z = 0
             Plants               PointInstancer: positions, orientations, scales, protoIndices
-                Prototypes/<SM_..._vN>  one shape variant: references @./assets/...usdc@,
+                Prototypes/<SM_..._vN>  one shape variant: payload @./assets/...usdc@,
                                  assetInfo, agrirecipe:asset_path, crop attributes
                                  (or <SM_...> with a Proxy mesh child)
 
@@ -256,7 +257,10 @@ def _build_stage(scene: Scene, binary: bool) -> tuple[Any, Any]:
     from agrirecipe.plants import field_assets
 
     recipe = scene.recipe
-    stage = Usd.Stage.CreateInMemory()
+    # The plant meshes are payloads, resolved against the folder the stage is written
+    # to: the in-memory stage leaves them unloaded (it has no folder), every reader of
+    # scene.usda loads them.
+    stage = Usd.Stage.CreateInMemory(STAGE_NAME, load=Usd.Stage.LoadNone)
     UsdGeom.SetStageUpAxis(stage, UsdGeom.Tokens.z)
     UsdGeom.SetStageMetersPerUnit(stage, UsdGeom.LinearUnits.meters)
     layer = stage.GetRootLayer()
@@ -402,7 +406,7 @@ def _add_instancer(stage: Any, path: Any, plants: FieldPlants, asset: FieldAsset
             prototype_path = prototypes.GetPath().AppendChild(f"{asset_name}_v{variant}")
             xform = UsdGeom.Xform.Define(stage, prototype_path)
             prototype = xform.GetPrim()
-            prototype.GetReferences().AddReference(f"./{asset.usd_file(variant)}")
+            prototype.GetPayloads().AddPayload(f"./{asset.usd_file(variant)}")
             if asset.scale != (1.0, 1.0, 1.0):
                 xform.AddScaleOp().Set(Gf.Vec3f(*asset.scale))
             _describe_prototype(
