@@ -358,3 +358,31 @@ def test_a_plural_without_a_number_takes_the_whole_list() -> None:
     assert [f.variety for f in scene.fields] == ["Jalapeno", "Padron", "California Wonder"]
     with pytest.raises(PromptError, match="announces 2"):
         recipe("two plots: wheat, maize and potatoes")
+
+
+def test_measures_said_of_each_or_both_go_to_every_field() -> None:
+    pears = recipe(
+        "a Doyenné du Comice block next to a Durondeau block for the orchard sprayer test; "
+        "both 10 rows at 3.8 m, a tree every 1.2 m, rows running NW-SE"
+    )
+    assert {
+        (f.row_count, f.agronomy.in_row_spacing_m, round(f.row_bearing_deg)) for f in pears.fields
+    } == {(10, 1.2, 135)}
+    tomatoes = recipe(
+        "Beefsteak tomatoes with late blight and healthy San Marzano south of them, 8 rows "
+        "each at 1.5 m, 60 cm in-row."
+    )
+    assert [
+        (f.variety, f.health, f.row_count, f.agronomy.in_row_spacing_m) for f in tomatoes.fields
+    ] == [
+        ("Beefsteak", "Ill", 8, 0.6),
+        ("San Marzano", "Healthy", 8, 0.6),
+    ]
+    vines = recipe(
+        "Vineyard-robot benchmark in September: a Pinot Noir block south of a Chardonnay "
+        "block, each 20 rows x 100 m, 2.2 m row spacing, 1 m vine spacing, grapes at harvest."
+    )
+    assert [f.variety for f in vines.fields] == ["Pinot Noir", "Chardonnay"]
+    assert {
+        (f.row_count, f.agronomy.row_spacing_m, f.agronomy.in_row_spacing_m) for f in vines.fields
+    } == {(20, 2.2, 1.0)}

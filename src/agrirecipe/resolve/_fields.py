@@ -128,7 +128,8 @@ class FieldReading:
     ) -> Season | None:
         if not scene_items:
             return None
-        says_all = any(i.role == "all" for i in scene_items)
+        # a measure only reaches the scene when it was said of every field ("each")
+        says_all = any(i.role in ("all", "geometry") for i in scene_items)
         seasons = values_of(scene_items, ("season", "month"), hemisphere)
         if len(set(seasons)) > 1:
             raise PromptError(

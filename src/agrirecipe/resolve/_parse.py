@@ -493,15 +493,15 @@ class PromptReader(FieldReading):
             # Rows and spacings describe one plot: the nearest field named ("each" shares them).
             geometry = [i for i in others if i.role == "geometry"]
             others = [i for i in others if i.role != "geometry"]
-            if (
-                geometry
-                and position
-                and any(i.role == "all" for i in clauses[position - 1].loose)
-                and clause.link is not None
-                and listing(clause.link)
+            if geometry and (
+                _shared_by_all(clauses, position)
+                # "8 rows each at 1.5 m": "each" inside the measure itself
+                or any(t.norm in ("each", "both") for i in geometry for t in i.tokens)
             ):
                 # "A, B and C, each 20 x 30 m, rows at 90°": still about each of them
                 scene.extend(geometry)
+                if not any(i.role == "all" for i in scene):
+                    scene.extend(i for i in clause.items if i.role == "all")
                 geometry = []
             for target in targets:
                 # "ripe wheat and maize, still green": words shared by a list go to the
@@ -579,17 +579,43 @@ _ALL_PLANTS = frozenset({"plants", "trees", "vines", "crops", "bushes"})
 _PURPOSES = frozenset({"robots", "purposes"})
 
 
+def _shared_by_all(clauses: Sequence[Clause], position: int) -> bool:
+    """Whether a measure clause continues a run of measures that began with "each" or
+    "both" ("both 10 rows at 3.8 m, a tree every 1.2 m, rows running NW-SE")."""
+    index = position
+    while index > 0:
+        clause = clauses[index]
+        if clause.link is None or not listing(clause.link):
+            return False
+        previous = clauses[index - 1]
+        if previous.mentions:
+            return False
+        if any(i.role == "all" for i in previous.loose) or any(
+            t.norm in ("each", "both")
+            for i in previous.loose
+            if i.role == "geometry"
+            for t in i.tokens
+        ):
+            return True
+        index -= 1
+    return False
+
+
 def _purpose_diseases(items: Sequence[Item], text: str) -> None:
     """'Late-blight detection dataset', 'a blight-spotting drone': a disease named as what
     a dataset or robot is for says nothing about the plants' health (scenery words).
     'Apple-counting scene', 'fruit-detection plots': a crop joined by a hyphen to what a
     robot does names the task, not a field."""
     for item, following in itertools.pairwise(items):
-        purpose = following.role == "filler" and following.data.get("scenery") in _PURPOSES
+        group = following.data.get("scenery") or next(
+            (sense.value for sense in following.senses_of("scenery")), None
+        )
+        purpose = following.role in ("filler", "non_agricultural") and group in _PURPOSES
         if not purpose:
             continue
         gap = text[item.end : following.start]
-        if (item.role == "health" and len(gap) <= 1) or (item.role == "head" and gap == "-"):
+        named = item.role in ("head", "plot")  # "Apple-counting", "Vineyard-robot"
+        if (item.role == "health" and len(gap) <= 1) or (named and gap == "-"):
             item.role = "filler"
             item.data["scenery"] = "purposes"
 
