@@ -160,14 +160,30 @@ def test_a_field_without_a_plant_mesh_gets_a_proxy(
         assert set(instancer.GetProtoIndicesAttr().Get()) == {0}
 
 
-def test_every_field_has_a_ground_plane(written: tuple[Scene, Path]) -> None:
+def test_every_field_has_its_soil_under_its_plants(written: tuple[Scene, Path]) -> None:
     scene, folder = written
     stage = Usd.Stage.Open(str(folder / "scene.usda"))
     for spec in scene.recipe.fields:
         ground = UsdGeom.Mesh(stage.GetPrimAtPath(f"/World/Fields/{spec.id}/Ground"))
         points = np.array(ground.GetPointsAttr().Get())
-        assert np.allclose(points[:, :2], spec.geometry.corners_m(), atol=1e-4)
-        assert np.allclose(points[:, 2], 0.0)
+        # it covers the field rectangle exactly (in the field's own frame)
+        turn = math.radians(spec.geometry.rotation_deg)
+        dx = points[:, 0] - spec.geometry.origin_m[0]
+        dy = points[:, 1] - spec.geometry.origin_m[1]
+        across = dx * math.cos(turn) + dy * math.sin(turn)
+        along = -dx * math.sin(turn) + dy * math.cos(turn)
+        width, length = spec.geometry.size_m
+        assert across.min() == pytest.approx(0.0, abs=1e-3)
+        assert across.max() == pytest.approx(width, abs=1e-3)
+        assert along.min() == pytest.approx(0.0, abs=1e-3)
+        assert along.max() == pytest.approx(length, abs=1e-3)
+        # nothing rises above the plants' feet: crests and bed tops at z = 0, furrows below
+        assert points[:, 2].max() == pytest.approx(0.0, abs=1e-6)
+        pattern = spec.agronomy.planting_pattern
+        if pattern in ("ridges", "double_rows_on_beds"):
+            assert points[:, 2].min() < -0.1, spec.id
+        else:
+            assert np.allclose(points[:, 2], 0.0)
         field = stage.GetPrimAtPath(f"/World/Fields/{spec.id}")
         assert field.GetAttribute("agrirecipe:health").Get() == spec.health
 

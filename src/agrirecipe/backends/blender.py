@@ -192,7 +192,7 @@ def scene_description(
     inlined kernel); its size grows with the number of fields, not plants.
     """
     from agrirecipe import __version__
-    from agrirecipe.layout import field_parameters
+    from agrirecipe.layout import field_parameters, ground_colours, ground_spec
     from agrirecipe.layout._kernel import KERNEL_MIN_SCALE, KERNEL_VERSION
     from agrirecipe.plants import field_assets
 
@@ -218,6 +218,7 @@ def scene_description(
                 "max_plant_height_m": round(tallest, 6),
                 "params": params,
                 "ground_view": ground_view(params, tallest),
+                "ground": ground_spec(spec, params),
                 "proxy": proxy_plan(spec, style),
                 "assets": None
                 if (asset := assets[spec.id]) is None
@@ -232,6 +233,7 @@ def scene_description(
             "latitude_deg": recipe.environment.latitude_deg,
             "sun": recipe.environment.sun.model_dump(),
         },
+        "ground_colours": {k: list(v) for k, v in ground_colours().items()},
         "style": {
             "colours": {"soil": colours.soil, "ground": colours.ground, "sky": colours.sky},
             "camera": style.camera.model_dump(),
@@ -286,6 +288,15 @@ def _python_literal(data: Any) -> str:
     if ast.literal_eval(text) != data:  # pragma: no cover - a bug, never user input
         raise BackendError("the scene description did not survive quoting", stage="compile")
     return text
+
+
+def _without_header(source: str) -> str:
+    """A module's source without its docstring (the script keeps one at its top)."""
+    tree = ast.parse(source)
+    first = tree.body[0] if tree.body else None
+    if isinstance(first, ast.Expr) and isinstance(first.value, ast.Constant):
+        return "\n".join(source.splitlines()[first.end_lineno :]).lstrip("\n")
+    return source
 
 
 def _builder_source() -> str:
@@ -380,7 +391,7 @@ def blender_script(
     (default: the folder the script is run from).
     """
     from agrirecipe import __version__
-    from agrirecipe.layout import kernel_source
+    from agrirecipe.layout import ground_source, kernel_source
 
     recipe = _recipe_of(scene)
     settings = settings or RenderSettings()
@@ -401,6 +412,8 @@ def blender_script(
         ),
         "\n\n# --- placement kernel: agrirecipe.layout, inlined verbatim ---\n",
         kernel_source().rstrip(),
+        "\n\n\n# --- soil surface: agrirecipe.layout._ground, inlined verbatim ---\n",
+        _without_header(ground_source()).rstrip(),
         "\n\n\n# --- the scene: kernel parameters and proxy plans per field (data only) ---\n",
         "SCENE = " + _python_literal(description),
         "\n\n\n# --- builder: agrirecipe.backends._blender.scene_builder, inlined verbatim ---\n",

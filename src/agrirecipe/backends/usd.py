@@ -13,7 +13,9 @@ and coloured like its foliage instead. Layout::
         Sun                      DistantLight from the recipe's sun
         Surroundings             grass plane under the whole farm (z slightly below 0)
         Fields/<field id>        Xform with the field's attributes (agrirecipe:*)
-            Ground               soil quad over the field rectangle, z = 0
+            Ground               the soil: a quad at z = 0, or ridges / raised beds whose
+                                 crests are at z = 0 (the plants' height), furrows below
+            Mulch, Track         plastic mulch on the beds, headland tracks (when present)
             Plants               PointInstancer: positions, orientations, scales, protoIndices
                 Prototypes/<SM_..._vN>  one shape variant: payload @./assets/...usdc@,
                                  assetInfo, agrirecipe:asset_path, crop attributes
@@ -254,6 +256,7 @@ def _build_stage(scene: Scene, binary: bool) -> tuple[Any, Any]:
     """The stage, and the in-memory binary layer its per-plant arrays went to (or None)."""
     from pxr import Kind, Sdf, Usd, UsdGeom
 
+    from agrirecipe.layout import field_parameters
     from agrirecipe.plants import field_assets
 
     recipe = scene.recipe
@@ -276,12 +279,13 @@ def _build_stage(scene: Scene, binary: bool) -> tuple[Any, Any]:
             "latitude_deg": recipe.environment.latitude_deg,
         }
     }
+    parameters = {str(p["id"]): p for p in field_parameters(recipe)}
     world = UsdGeom.Xform.Define(stage, "/World")
     stage.SetDefaultPrim(world.GetPrim())
     Usd.ModelAPI(world.GetPrim()).SetKind(Kind.Tokens.assembly)
 
     _add_sun(stage, recipe)
-    _add_surroundings(stage, recipe)
+    _add_surroundings(stage, recipe, parameters)
     UsdGeom.Scope.Define(stage, "/World/Fields")
     assets = field_assets(recipe, knowledge=scene.knowledge)
     plants_layer = None
@@ -293,7 +297,7 @@ def _build_stage(scene: Scene, binary: bool) -> tuple[Any, Any]:
         field_path = Sdf.Path("/World/Fields").AppendChild(spec.id)
         field_prim = UsdGeom.Xform.Define(stage, field_path).GetPrim()
         _set_attributes(field_prim, plants.attributes())
-        _add_ground(stage, field_path.AppendChild("Ground"), spec)
+        _add_ground(stage, field_path, spec, parameters[spec.id])
         instancer = _add_instancer(stage, field_path.AppendChild("Plants"), plants, assets[spec.id])
         if plants_layer is not None:
             stage.SetEditTarget(Usd.EditTarget(plants_layer))
@@ -363,11 +367,40 @@ def _quad(
     mesh.CreateExtentAttr(UsdGeom.Boundable.ComputeExtentFromPlugins(mesh, Usd.TimeCode.Default()))
 
 
-def _add_ground(stage: Any, path: Any, spec: FieldSpec) -> None:
-    _quad(stage, path, list(spec.geometry.corners_m()), 0.0, _SOIL_RGB)
+def _add_ground(stage: Any, field_path: Any, spec: FieldSpec, params: dict[str, Any]) -> None:
+    """The field's soil (``Ground``: ridges, beds or a flat quad), ``Mulch`` and ``Track``."""
+    from pxr import Gf, Usd, UsdGeom, Vt
+
+    from agrirecipe.layout import field_ground, ground_colours
+
+    colours = ground_colours()
+    names = {"soil": "Ground", "mulch": "Mulch", "track": "Track"}
+    for part in field_ground(spec, params):
+        mesh = UsdGeom.Mesh.Define(stage, field_path.AppendChild(names[part["part"]]))
+        points = np.asarray(part["points"], dtype=np.float32).reshape(-1, 3)
+        triangles = np.asarray(part["triangles"], dtype=np.int32)
+        mesh.CreatePointsAttr(Vt.Vec3fArray.FromNumpy(points))
+        mesh.CreateFaceVertexCountsAttr(Vt.IntArray.FromNumpy(np.full(len(triangles) // 3, 3)))
+        mesh.CreateFaceVertexIndicesAttr(Vt.IntArray.FromNumpy(triangles))
+        mesh.CreateSubdivisionSchemeAttr(UsdGeom.Tokens.none)
+        mesh.CreateDoubleSidedAttr(True)
+        mesh.CreateDisplayColorAttr([Gf.Vec3f(*colours[part["part"]])])
+        mesh.CreateExtentAttr(
+            UsdGeom.Boundable.ComputeExtentFromPlugins(mesh, Usd.TimeCode.Default())
+        )
 
 
-def _add_surroundings(stage: Any, recipe: SceneRecipe) -> None:
+def _add_surroundings(
+    stage: Any, recipe: SceneRecipe, parameters: Mapping[str, dict[str, Any]]
+) -> None:
+    from agrirecipe.layout import ground_spec
+    from agrirecipe.layout._ground import ground_base_depth
+
+    # below every field's furrows (a field with ridges or beds has banks down to it)
+    depth = max(
+        [0.02]
+        + [ground_base_depth(ground_spec(spec, parameters[spec.id])) for spec in recipe.fields]
+    )
     corners = [corner for spec in recipe.fields for corner in spec.geometry.corners_m()]
     xs, ys = [x for x, _ in corners], [y for _, y in corners]
     margin = 0.1 * max(max(xs) - min(xs), max(ys) - min(ys)) + 10.0
@@ -377,7 +410,7 @@ def _add_surroundings(stage: Any, recipe: SceneRecipe) -> None:
         stage,
         "/World/Surroundings",
         [(x0, y0), (x1, y0), (x1, y1), (x0, y1)],
-        -0.02,
+        -depth,
         _GRASS_RGB,
     )
 

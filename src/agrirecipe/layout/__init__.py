@@ -27,6 +27,7 @@ from agrirecipe.layout._layout import (
     place_field_array,
 )
 from agrirecipe.layout._packing import DEFAULT_GAP_M, FieldRequest, describe_relation, pack_fields
+from agrirecipe.layout._surface import field_ground, ground_colours, ground_source, ground_spec
 
 __all__ = [
     "DEFAULT_GAP_M",
@@ -37,8 +38,12 @@ __all__ = [
     "Layout",
     "PlacementTerms",
     "describe_relation",
+    "field_ground",
     "field_parameters",
     "field_seed",
+    "ground_colours",
+    "ground_source",
+    "ground_spec",
     "iter_field_plants",
     "kernel_source",
     "layout_scene",

@@ -81,7 +81,15 @@ def test_objects_are_named_by_field_and_carry_the_recipe(
 ) -> None:
     for spec in recipe.fields:
         described = built["fields"][spec.id]
-        assert described["objects"] == [spec.id, f"{spec.id}_soil"]
+        objects = described["objects"]
+        assert spec.id in objects
+        assert set(objects) - {spec.id, f"{spec.id}_soil"} <= {
+            f"{spec.id}_mulch",
+            f"{spec.id}_track",
+        }
+        assert f"{spec.id}_soil" in objects
+        # plastic mulch only where the crop is grown on it
+        assert (f"{spec.id}_mulch" in objects) == (spec.crop in ("Strawberry", "Tomato"))
         assert described["modifiers"] == [["NODES", "agrirecipe_plants"]]
         assert {"yaw", "scale", "height_m"} <= set(described["point_attributes"])
         properties = described["properties"]
@@ -91,9 +99,16 @@ def test_objects_are_named_by_field_and_carry_the_recipe(
             spec.crop,
             spec.stage,
         )
-        np.testing.assert_allclose(
-            np.array(described["soil_corners"])[:, :2], spec.geometry.corners_m(), atol=1e-4
-        )
+        # the soil covers the field rectangle, its crests and bed tops at the plants' z = 0
+        soil = np.array(described["soil_corners"])
+        turn = math.radians(spec.geometry.rotation_deg)
+        dx, dy = soil[:, 0] - spec.geometry.origin_m[0], soil[:, 1] - spec.geometry.origin_m[1]
+        across = dx * math.cos(turn) + dy * math.sin(turn)
+        along = -dx * math.sin(turn) + dy * math.cos(turn)
+        width, length = spec.geometry.size_m
+        np.testing.assert_allclose([across.min(), across.max()], [0.0, width], atol=1e-4)
+        np.testing.assert_allclose([along.min(), along.max()], [0.0, length], atol=1e-4)
+        assert soil[:, 2].max() == pytest.approx(0.0, abs=1e-6)
     assert {"agrirecipe_ground", "agrirecipe_sun", "agrirecipe_camera"} <= set(built["objects"])
 
 

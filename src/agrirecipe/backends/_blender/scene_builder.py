@@ -611,14 +611,47 @@ def scene_bounds(fields: Sequence[dict[str, Any]]) -> tuple[float, float, float,
     return min(xs), min(ys), max(xs), max(ys), top
 
 
+def _surface_object(name: str, part: dict[str, Any], material: Any) -> Any:
+    """A mesh object of one surface part (flat lists of points and triangle indices)."""
+    import array
+
+    triangles = part["triangles"]
+    mesh = bpy.data.meshes.new(name)
+    mesh.vertices.add(len(part["points"]) // 3)
+    mesh.vertices.foreach_set("co", array.array("f", part["points"]))
+    mesh.loops.add(len(triangles))
+    mesh.loops.foreach_set("vertex_index", array.array("i", triangles))
+    mesh.polygons.add(len(triangles) // 3)
+    mesh.polygons.foreach_set("loop_start", array.array("i", range(0, len(triangles), 3)))
+    mesh.materials.append(material)
+    mesh.update(calc_edges=True)
+    return bpy.data.objects.new(name, mesh)
+
+
 def build_ground(scene_data: dict[str, Any], root: Any) -> None:
-    """A soil quad under every field and a larger grass and earth base under the scene."""
+    """The soil of every field (ridges, beds, mulch and tracks where its pattern has
+    them, else a flat quad) and a larger grass and earth base under the scene."""
     colours = scene_data["style"]["colours"]
     soil = make_material("agrirecipe_soil", colours["soil"])
+    # agrirecipe.layout._ground, inlined into the script after the kernel
+    surface = globals().get("ground_parts")
+    materials = {"soil": soil}
+    for part, rgb in scene_data.get("ground_colours", {}).items():
+        if part != "soil":
+            materials[part] = make_material(f"agrirecipe_{part}", rgb)
     for field in scene_data["fields"]:
-        ground = _quad(f"{field['id']}_soil", field["corners_m"], 0.0, soil)
-        ground["agrirecipe_field_id"] = field["id"]
-        bpy.data.collections[field["id"]].objects.link(ground)
+        if surface is None or "ground" not in field:
+            parts: list[dict[str, Any]] = [{"part": "soil", "points": None}]
+        else:
+            parts = surface(field["params"], field["ground"])
+        for part in parts:
+            name = f"{field['id']}_{part['part']}"
+            if part["points"] is None:
+                ground = _quad(name, field["corners_m"], 0.0, soil)
+            else:
+                ground = _surface_object(name, part, materials[part["part"]])
+            ground["agrirecipe_field_id"] = field["id"]
+            bpy.data.collections[field["id"]].objects.link(ground)
     min_x, min_y, max_x, max_y, _ = scene_bounds(scene_data["fields"])
     margin = max(10.0, 0.15 * max(max_x - min_x, max_y - min_y))
     corners = (
@@ -627,9 +660,18 @@ def build_ground(scene_data: dict[str, Any], root: Any) -> None:
         (max_x + margin, max_y + margin),
         (min_x - margin, max_y + margin),
     )
-    # A few centimetres below the fields so the soil never fights with it for a pixel.
+    # A few centimetres below the fields so the soil never fights with it for a pixel,
+    # and below every field's furrows (the fields' banks reach down to it).
+    depth = max(
+        [0.03]
+        + [
+            float(field["ground"]["depth_m"]) + 0.03
+            for field in scene_data["fields"]
+            if field.get("ground", {}).get("relief", "flat") != "flat"
+        ]
+    )
     base = _quad(
-        "agrirecipe_ground", corners, -0.03, make_material("agrirecipe_ground", colours["ground"])
+        "agrirecipe_ground", corners, -depth, make_material("agrirecipe_ground", colours["ground"])
     )
     root.objects.link(base)
 
