@@ -236,3 +236,51 @@ def test_crops_counted_plant_by_plant_and_nothing_sick() -> None:
     assert field.agronomy.in_row_spacing_m == pytest.approx(0.33)
     scene = recipe("crisphead lettuce and Cayenne chillies, each in its own bed, nothing sick")
     assert {f.health for f in scene.fields} == {"Healthy"}
+
+
+def test_top_and_bottom_fields_with_one_between() -> None:
+    scene = recipe(
+        "top field is Russet potatos, bottom field Danvers carrots, and the onoins (Sturon) "
+        "sit in between them"
+    )
+    assert [f.crop for f in scene.fields] == ["Potato", "Carrot", "Onion"]
+    found = relations(scene)
+    assert ("between", "Onion", ("Potato", "Carrot")) in found
+    assert ("north_of", "Potato", ("Onion",)) in found
+
+
+def test_a_label_defined_with_is_and_named_later_in_its_sentence() -> None:
+    scene = recipe(
+        "Block A is Cabernet, rows 2.5 m apart with a vine every 1.6 m. Block B, just south "
+        "of A, is Pinot Noir on the same spacing."
+    )
+    assert [f.variety for f in scene.fields] == ["Cabernet Sauvignon", "Pinot Noir"]
+    ids = [f.id for f in scene.fields]
+    assert [(r.kind, r.subject, r.objects) for r in scene.relations] == [
+        ("south_of", ids[1], (ids[0],))
+    ]
+    assert scene.fields[1].agronomy.in_row_spacing_m == 1.6  # "the same spacing"
+
+
+def test_next_door_and_ripening_fruit() -> None:
+    scene = recipe(
+        "My neighbour's tomato plants are wilting with dark water-soaked blotches on the "
+        "leaves, while our peppers next door look perfectly fine."
+    )
+    assert [(f.crop, f.health) for f in scene.fields] == [("Tomato", "Ill"), ("Pepper", "Healthy")]
+    assert relations(scene) == {("next_to", "Pepper", ("Tomato",))}
+    (bananas,) = recipe("Big Mike bananas, the bunches fat and yellowing, ready to be cut").fields
+    assert (bananas.stage, bananas.health) == ("Maturation", "Healthy")
+    (vines,) = recipe("a vineyard, the leaves yellowing").fields
+    assert vines.health == "Ill"
+
+
+def test_and_goes_on_describing_the_field_just_described() -> None:
+    scene = recipe(
+        "a grove of blood oranges south of a banana patch, the oranges colouring up, the "
+        "bananas still small and just planted."
+    )
+    assert [(f.crop, f.stage) for f in scene.fields] == [
+        ("Orange", "Maturation"),
+        ("Banana", "Vegetative"),
+    ]

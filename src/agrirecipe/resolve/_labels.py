@@ -22,7 +22,9 @@ __all__ = ["place_leading_directions", "resolve_labels"]
 
 _NOUNS = r"(?:block|plot|field|parcel|area|section|strip|zone|bay|compartment|trial plot)"
 # "Block A:", "plot 2 -", "Field B," : a label that introduces what follows it.
-_DEFINITION = re.compile(rf"\b(?i:{_NOUNS})\s+(?P<label>[A-H]|\d{{1,2}})\b\s*(?P<mark>[:,(\-–—])")
+_DEFINITION = re.compile(
+    rf"\b(?i:{_NOUNS})\s+(?P<label>[A-H]|\d{{1,2}})\b\s*(?P<mark>[:,(\-–—]|(?i:is|has)\b)"
+)
 # What a reference to a label follows: a relation word, or the label's noun.
 _BEFORE_REFERENCE = r"(?:of|to|from|beside|besides|by|and|than|next to|alongside|between)"
 
@@ -53,7 +55,7 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
     out = text
     for match in reversed(definitions):
         mark = match.group("mark")
-        keep = "" if mark in ":-–—" else mark
+        keep = "" if mark in ":-–—" or mark.isalpha() else mark
         out = out[: match.start()] + keep + out[match.end() :]
     for label, phrase in names.items():
         noun = rf"(?i:{_NOUNS})\s+"
@@ -73,18 +75,22 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
 
 
 def _crop_phrase(following: str, tag: Callable[[str], Sequence[Item]]) -> str:
-    """The crop words of the phrase after a label, up to its first comma or stop."""
-    clause = re.split(r"[,.;]", following, maxsplit=1)[0]
-    if not tokenize(clause):
-        return ""
-    words = [item.raw for item in tag(clause) if item.has(*_NAMING)]
-    return " ".join(words)
+    """The crop words after a label: of its first phrase, or of the first phrase of its
+    sentence that names a crop ("Block B, just south of A, is Pinot Noir")."""
+    sentence = re.split(r"[.;]", following, maxsplit=1)[0]
+    for clause in sentence.split(","):
+        if not tokenize(clause):
+            continue
+        words = [item.raw for item in tag(clause) if item.has(*_NAMING)]
+        if words:
+            return " ".join(words)
+    return ""
 
 
 # "the east plot is Bintje with late blight, ...": a field named by its compass position
 _LEADING = re.compile(
     r"(?<!in )(?<!on )(?<!of )(?<!at )(?<!to )"
-    r"\b(?i:the)\s+(?P<side>(?i:north|south|east|west))(?i:ern)?\s+"
+    r"(?:\b(?i:the)\s+|(?:^|(?<=[,;.:]\s)))(?P<side>(?i:north|south|east|west|top|bottom|upper|lower))(?i:ern)?\s+"
     r"(?i:plot|block|field|one|part|half|strip|parcel|section)\s*"
     r"(?:(?i:is|are|has|holds|gets|grows|has got)\s+|[:\-–—]\s*)?"
     r"(?P<rest>(?!(?i:of|to|and|with|in|on|at|is|are)\b)[^\s,;.:()][^,;.:()]*)"
@@ -94,5 +100,19 @@ _LEADING = re.compile(
 def place_leading_directions(text: str) -> str:
     """``text`` with "the east plot is X" written "X in the eastern block"."""
     return _LEADING.sub(
-        lambda m: f"{m.group('rest').rstrip()} in the {m.group('side').lower()}ern block", text
+        lambda m: f"{m.group('rest').rstrip()} in the {_SIDES[m.group('side').lower()]}ern block",
+        text,
     )
+
+
+# "the top field", "the bottom plot": north and south, as zones read them
+_SIDES = {
+    "north": "north",
+    "south": "south",
+    "east": "east",
+    "west": "west",
+    "top": "north",
+    "upper": "north",
+    "bottom": "south",
+    "lower": "south",
+}

@@ -487,6 +487,9 @@ class PromptReader(FieldReading):
                     shared_by_list = True
                 else:
                     targets = [member or refined.refinements[-1]]
+            elif _continues_a_description(clauses, position):
+                # "the oranges colouring up, the bananas still small and just planted"
+                targets = [clauses[position - 1].mentions[-1]]
             else:
                 targets = coordinated(clauses, position)
                 targets = _past_a_reference(clauses, position, targets)
@@ -577,6 +580,22 @@ _ALL_PLANTS = frozenset({"plants", "trees", "vines", "crops", "bushes"})
 
 #: Scenery groups whose words name what a request is for ("a blight detection dataset").
 _PURPOSES = frozenset({"robots", "purposes"})
+
+
+def _continues_a_description(clauses: Sequence[Clause], position: int) -> bool:
+    """'..., the bananas still small and just planted': words joined by "and" to a
+    sentence about a field named before ("the bananas ...") go on describing it."""
+    previous = clauses[position - 1] if position else None
+    link = clauses[position].link
+    return (
+        previous is not None
+        and link is not None
+        and link.role == "conjunction"
+        and bool(previous.mentions)
+        and bool(previous.items)
+        and previous.items[0].norm in ("the", "their", "its", "those", "these")
+        and previous.mentions[-1].heads[-1].end < previous.items[-1].end  # words after it
+    )
 
 
 def _shared_by_all(clauses: Sequence[Clause], position: int) -> bool:

@@ -101,6 +101,46 @@ def assign_roles(items: Sequence[Item]) -> None:
         ):
             previous.role = "filler"  # "a sprayer is working in the potatoes": no count
         previous = item
+    _ripening_fruit(items)
+
+
+# Colour changes that are a disease's sign on leaves but ripening on the fruit.
+_COLOURING = frozenset({"yellowing", "browning", "reddening", "colouring", "coloring"})
+_FRUIT_WORDS = frozenset(
+    {
+        "bunch",
+        "bunches",
+        "fruit",
+        "fruits",
+        "berries",
+        "grapes",
+        "apples",
+        "ears",
+        "heads",
+        "pods",
+        "cobs",
+        "hands",
+        "fingers",
+        "bananas",
+        "tomatoes",
+        "oranges",
+        "pears",
+    }
+)
+_LEAF_WORDS = frozenset({"leaf", "leaves", "foliage", "canopy", "tops", "haulm"})
+
+
+def _ripening_fruit(items: Sequence[Item]) -> None:
+    """'the bunches fat and yellowing': the fruit ripening, not a sick plant."""
+    from agrirecipe.resolve._cues import Cue
+
+    for index, item in enumerate(items):
+        if item.role != "health" or item.norm not in _COLOURING:
+            continue
+        window = [i.norm for i in items[max(0, index - 4) : index]]
+        if any(w in _FRUIT_WORDS for w in window) and not any(w in _LEAF_WORDS for w in window):
+            item.role = "cue"
+            item.data["cue"] = Cue("stage", "Maturation")
 
 
 # Words that point back to a field when they follow a relation word ("north of that").
