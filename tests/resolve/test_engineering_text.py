@@ -386,3 +386,39 @@ def test_measures_said_of_each_or_both_go_to_every_field() -> None:
     assert {
         (f.row_count, f.agronomy.row_spacing_m, f.agronomy.in_row_spacing_m) for f in vines.fields
     } == {(20, 2.2, 1.0)}
+
+
+@pytest.mark.parametrize(
+    ("prompt", "expected"),
+    [
+        # a planting grid after "at", with or without "each"
+        ("Dwarf Cavendish bananas at 2 x 2 m", {"row_spacing_m": 2.0, "in_row_spacing_m": 2.0}),
+        ("150 orange trees each at 6 m x 3 m", {"row_spacing_m": 6.0, "in_row_spacing_m": 3.0}),
+        # beds and rows with their length
+        (
+            "Red Baron onions on 1.8 m beds, 6 rows per bed, 20 beds of 100 m",
+            {"row_length_m": 100.0},
+        ),
+        ("a Cabernet block, 8 ft rows, 40 rows each 300 ft", {"row_length_m": 91.44}),
+        ("Boston lettuce, 10 beds, 1.6 m centre to centre, 4 rows per bed", {"row_spacing_m": 1.6}),
+        ("Fontane potatoes (30 rows, 0.9 m)", {"row_spacing_m": 0.9}),
+        (
+            "Russet potatoes, 30 rows on 36 in spacing, seed pieces every 12 in",
+            {"in_row_spacing_m": 0.3048},
+        ),
+    ],
+)
+def test_more_ways_of_saying_the_grid(prompt: str, expected: dict[str, float]) -> None:
+    field = recipe(prompt).fields[0]
+    values = {
+        "row_spacing_m": field.agronomy.row_spacing_m,
+        "in_row_spacing_m": field.agronomy.in_row_spacing_m,
+        "row_length_m": field.row_length_m,
+    }
+    for key, value in expected.items():
+        assert values[key] == pytest.approx(value, rel=0.01), key
+
+
+def test_zero_spacing_between_rows_is_impossible() -> None:
+    with pytest.raises(PromptError, match="positive"):
+        recipe("12 rows of cabbage, 50 m long, with zero spacing between the rows")
