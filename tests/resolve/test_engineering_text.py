@@ -422,3 +422,12 @@ def test_more_ways_of_saying_the_grid(prompt: str, expected: dict[str, float]) -
 def test_zero_spacing_between_rows_is_impossible() -> None:
     with pytest.raises(PromptError, match="positive"):
         recipe("12 rows of cabbage, 50 m long, with zero spacing between the rows")
+
+
+def test_a_number_with_a_unit_never_counts_fields() -> None:
+    scene = recipe(
+        "a cherry orchard and a pear orchard side by side, 8 rows of 60 m each; row spacing "
+        "4.5 m in the cherries and 3.5 m in the pears."
+    )
+    assert [f.crop for f in scene.fields] == ["Cherry", "Pear"]
+    assert scene.fields[0].agronomy.row_spacing_m == 4.5

@@ -157,6 +157,7 @@ class PromptReader(FieldReading):
         _purpose_diseases(items, text)
         prompt_latitude, latitude_text, items = read_latitude(text, items)
         items = read_sizes(read_heights(items))
+        _measures_are_not_counts(items)
         self._reject_scenery(items)
         self._reject_other_crops(items)
         builder = MentionBuilder(self.crop_categories)
@@ -596,6 +597,15 @@ def _continues_a_description(clauses: Sequence[Clause], position: int) -> bool:
         and previous.items[0].norm in ("the", "their", "its", "those", "these")
         and previous.mentions[-1].heads[-1].end < previous.items[-1].end  # words after it
     )
+
+
+def _measures_are_not_counts(items: Sequence[Item]) -> None:
+    """ "3.5 m in the pears": a number with a length unit is a measure, never a count of
+    fields (what no size or geometry pattern read stays a filler)."""
+    for item, following in itertools.pairwise(items):
+        if item.role == "number" and following.role == "length_unit":
+            item.role = "filler"
+            item.data["measure"] = True
 
 
 def _shared_by_all(clauses: Sequence[Clause], position: int) -> bool:
