@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import pytest
 
-from agrirecipe import UnknownCropError, generate
+from agrirecipe import PromptError, UnknownCropError, generate
 from agrirecipe.recipe import SceneRecipe
 
 
@@ -284,3 +284,28 @@ def test_and_goes_on_describing_the_field_just_described() -> None:
         ("Orange", "Maturation"),
         ("Banana", "Vegetative"),
     ]
+
+
+def test_fields_one_after_another_with_then() -> None:
+    scene = recipe(
+        "From the farmhouse down to the river it goes vineyard, then a hawthorn hedge, then "
+        "salad greens, then a strip of corn by the water."
+    )
+    vines, greens, corn = (f.id for f in scene.fields)
+    found = {(r.kind, r.subject, r.objects) for r in scene.relations}
+    assert ("between", greens, (vines, corn)) in found
+    tour = recipe(
+        "Going round clockwise from the gate you pass the Albion strawberries under their "
+        "tunnels, then the Riesling vineyard, and right after it the Chardonnay."
+    )
+    straw, riesling, chardonnay = (f.id for f in tour.fields)
+    pairs = {frozenset((r.subject, *r.objects)) for r in tour.relations if r.kind == "next_to"}
+    assert pairs == {frozenset((straw, riesling)), frozenset((riesling, chardonnay))}
+
+
+def test_a_farmyard_of_scenery_is_not_a_farm_of_fields() -> None:
+    with pytest.raises(PromptError):
+        recipe(
+            "Calibration flight for the drone's RGB and thermal cameras over the farmyard: two "
+            "tractors, a feed silo, the gravel track and targets laid out by the shed."
+        )

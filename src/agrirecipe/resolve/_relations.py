@@ -128,6 +128,8 @@ def read_relations(
         kind, subject, objects = pairs
         relations.extend(_pair(kind, subject, objects, members, link, trace))
     relations += _across_landmarks(landmarks, members, trace)
+    related = {frozenset((r.subject, *r.objects)) for r in relations if len(r.objects) == 1}
+    relations += _then_chain(clauses, members, related, trace)
     unique: dict[tuple[object, ...], RelationIntent] = {}
     for relation in relations:  # "in a line, in this order": one row
         unique.setdefault((relation.kind, relation.subject, relation.objects), relation)
@@ -135,6 +137,48 @@ def read_relations(
 
 
 _ARTICLES = frozenset({"the", "a", "an", "our", "my", "their", "its"})
+
+
+def _then_chain(
+    clauses: Sequence[Clause],
+    members: dict[int, list[int]],
+    related: set[frozenset[int]],
+    trace: list[TraceStep],
+) -> list[RelationIntent]:
+    """'it goes vineyard, then a hedge, then salad greens, then corn', 'you pass the
+    strawberries, then the Riesling vineyard': fields named one after another with
+    "then" lie one beside the next (the middle one of three between the others),
+    unless the text already placed them ("west to east: ..., then ...")."""
+    chain: list[Mention] = []
+    for position, clause in enumerate(clauses):
+        link = clause.link
+        if not clause.mentions:
+            continue
+        mention = clause.mentions[0]
+        follows = (link is not None and link.norm == "then") or (
+            position > 0
+            and clauses[position - 1].link is not None
+            and clauses[position - 1].link.norm == "then"  # type: ignore[union-attr]
+            and not clauses[position - 1].items
+        )
+        if follows and chain:
+            if all(mention is not m for m in chain):
+                chain.append(mention)
+        elif not chain or len(chain) < 2:
+            chain = [clause.mentions[-1]]
+    fields = [m for m in chain if len(members.get(id(m), [])) == 1]
+    indices = [members[id(m)][0] for m in fields]
+    if len(fields) < 2 or any(frozenset(pair) in related for pair in itertools.pairwise(indices)):
+        return []
+    link_item = next(c.link for c in clauses if c.link is not None and c.link.norm == "then")
+    relations: list[RelationIntent] = []
+    for first, second in itertools.pairwise(fields):
+        relations.extend(_pair("next_to", second, (first,), members, link_item, trace))
+    if len(fields) == 3:
+        relations.extend(
+            _pair("between", fields[1], (fields[0], fields[2]), members, link_item, trace)
+        )
+    return relations
 
 
 def _last_named(mentions: Sequence[Mention]) -> list[Mention]:
