@@ -33,11 +33,14 @@ class Scene:
         *,
         explanation: Explanation | None = None,
         knowledge: KnowledgeBase | None = None,
+        changes: Sequence[str] = (),
     ) -> None:
         self.recipe = recipe
         self.explanation = explanation
         #: The knowledge base the plant meshes are drawn from (None: the shipped one).
         self.knowledge = knowledge
+        #: What :meth:`edit` changed to make this scene from the one before (one line each).
+        self.changes = tuple(changes)
 
     @classmethod
     def from_file(
@@ -58,6 +61,22 @@ class Scene:
         from agrirecipe.layout import layout_scene
 
         return layout_scene(self.recipe)
+
+    def edit(self, instruction: str, *, resolver: ResolverName = "auto") -> Scene:
+        """A new scene with one change said in words ("make the pears ill", "remove the
+        carrots", "add a wheat field south of the orchard", "rows 50 cm apart").
+
+        Fields the instruction does not touch keep their ids, attributes, geometry and
+        every plant position; ``changes`` of the result lists what changed. Raises
+        :class:`~agrirecipe.PromptError` for an instruction that names nothing in the
+        scene or is ambiguous, with the scene's fields in its hint.
+        """
+        from agrirecipe.edit import edit_recipe
+
+        result = edit_recipe(
+            self.recipe, instruction, knowledge=self.knowledge, resolver=resolver
+        )
+        return Scene(result.recipe, knowledge=self.knowledge, changes=result.changes)
 
     def script(self, backend: str) -> str:
         """The generated script of a script backend (``"unreal"`` or ``"blender"``)."""

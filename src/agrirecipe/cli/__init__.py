@@ -17,7 +17,7 @@ from agrirecipe._errors import AgrirecipeError
 
 __all__ = ["build_parser", "main"]
 
-_COMMAND_MODULES = ("generate", "validate", "schema", "render", "eval", "assets")
+_COMMAND_MODULES = ("generate", "validate", "schema", "render", "eval", "assets", "build", "edit")
 
 
 def build_parser() -> argparse.ArgumentParser:

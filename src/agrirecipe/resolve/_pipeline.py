@@ -633,9 +633,7 @@ def _enrich(
     noun = field.noun
     if noun is None or (field.generic and noun not in _KIND_NOUNS):
         # "four fields" that became an apple crop are orchards.
-        noun = vocabulary()["crop_plot_nouns"].get(crop) or _NOUN_BY_FORM.get(
-            knowledge.crop_file(crop).growth_form, "field"
-        )
+        noun = plot_noun(crop, knowledge)
     return _Plan(
         intent=field,
         crop=crop,
@@ -662,6 +660,14 @@ def _enrich(
         ),
         warnings=tuple(rows.warnings) if rows is not None else (),
     )
+
+
+def plot_noun(crop: str, knowledge: KnowledgeBase) -> str:
+    """What a plot of ``crop`` is called: "orchard", "vineyard", "plantation", "field"."""
+    noun: str = vocabulary()["crop_plot_nouns"].get(crop) or _NOUN_BY_FORM.get(
+        knowledge.crop_file(crop).growth_form, "field"
+    )
+    return noun
 
 
 def _slug(text: str) -> str:
