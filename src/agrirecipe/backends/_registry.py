@@ -17,6 +17,7 @@ _BUILTIN: dict[str, str] = {
     "blender": "agrirecipe.backends.blender:BlenderBackend",
     "usd": "agrirecipe.backends.usd:UsdBackend",
     "annotations": "agrirecipe.backends.annotations:AnnotationsBackend",
+    "gazebo": "agrirecipe.backends.gazebo:GazeboBackend",
 }
 _REGISTERED: dict[str, BackendFactory] = {}
 

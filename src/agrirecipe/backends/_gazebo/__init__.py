@@ -1,0 +1,1 @@
+"""The Gazebo backend's parts: merged plant meshes, SDF elements, ground truth."""
