@@ -309,3 +309,64 @@ def test_a_farmyard_of_scenery_is_not_a_farm_of_fields() -> None:
             "Calibration flight for the drone's RGB and thermal cameras over the farmyard: two "
             "tractors, a feed silo, the gravel track and targets laid out by the shed."
         )
+
+
+def _relations(scene: SceneRecipe) -> set[tuple[str, str, tuple[str, ...]]]:
+    return {(r.kind, r.subject, r.objects) for r in scene.relations}
+
+
+def test_a_zone_said_before_its_field_belongs_to_that_field() -> None:
+    scene = recipe(
+        "Bottom of the farm: popping corn, 5 acres. Above that: Walla Walla onions, 2 acres. "
+        "At the top: Chantenay carrots, only just coming up."
+    )
+    corn, onions, carrots = (f.id for f in scene.fields)
+    found = _relations(scene)
+    assert ("north_of", onions, (corn,)) in found
+    assert ("north_of", carrots, (onions,)) in found
+    assert ("north_of", corn, (carrots,)) not in found
+
+
+def test_a_field_placed_against_the_top_zone_lies_above_the_bottom_one() -> None:
+    scene = recipe(
+        "Royal Gala along the top hedge, Bartlett pears below them, and down at the bottom "
+        "by the ditch a few rows of Granny."
+    )
+    gala, pears, granny = (f.id for f in scene.fields)
+    found = _relations(scene)
+    assert ("south_of", pears, (gala,)) in found
+    assert ("north_of", pears, (granny,)) in found
+    assert ("north_of", gala, (granny,)) in found
+
+
+def test_between_closes_the_order_of_its_neighbours() -> None:
+    scene = recipe(
+        "top field is Russet potatos, bottom field Danvers carrots, and the onoins (Sturon) "
+        "sit in between them"
+    )
+    potatoes, carrots, onions = (f.id for f in scene.fields)
+    found = _relations(scene)
+    assert ("between", onions, (potatoes, carrots)) in found
+    assert ("north_of", potatoes, (carrots,)) in found
+
+
+def test_a_direction_before_beyond_gives_it_its_side() -> None:
+    scene = recipe(
+        "The orchard is north of the house, it's all Conference pears, and further north "
+        "again, beyond the orchard, there's about 3 ha of winter wheat."
+    )
+    pears, wheat = (f.id for f in scene.fields)
+    assert _relations(scene) == {("north_of", wheat, (pears,))}
+    beyond = recipe("a pear orchard and beyond it a wheat field")
+    assert {r.kind for r in beyond.relations} == {"next_to"}
+
+
+def test_the_middle_of_left_and_right_is_between_them() -> None:
+    scene = recipe(
+        "Three blocks visible from the barn roof: Fuji apples on the left, Kordia cherries in "
+        "the middle between them and the Durondeau pears on the right, all in full blossom"
+    )
+    apples, cherries, pears = (f.id for f in scene.fields)
+    found = _relations(scene)
+    assert ("between", cherries, (apples, pears)) in found
+    assert ("west_of", apples, (cherries,)) in found

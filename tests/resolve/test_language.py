@@ -730,6 +730,7 @@ def test_placements_around_a_field_between_them() -> None:
         ("north_of", "Wheat", ("Strawberry",)),
         ("south_of", "Maize", ("Strawberry",)),
         ("between", "Strawberry", ("Wheat", "Maize")),
+        ("north_of", "Wheat", ("Maize",)),  # implied: the order is closed over "between"
     }
 
 

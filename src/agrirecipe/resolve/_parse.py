@@ -83,7 +83,7 @@ from agrirecipe.resolve._structure import (
     share_leading_attributes,
     share_trailing_attributes,
 )
-from agrirecipe.resolve._zones import find_zones, zone_relations
+from agrirecipe.resolve._zones import complete_orders, find_zones, zone_owners, zone_relations
 
 __all__ = ["NOTHING_FOUND", "NearestCrops", "PromptReader", "UnknownWords"]
 
@@ -207,11 +207,11 @@ class PromptReader(FieldReading):
                 members.setdefault(id(member.sub), []).append(index)
         relations = read_relations(clauses, members, self.trace, self.warnings)
         said = {(r.kind, r.subject, r.objects) for r in relations}
+        owned = zone_owners(items, [f.items for f in fields])
         relations += [
-            r
-            for r in zone_relations([f.items for f in fields])
-            if (r.kind, r.subject, r.objects) not in said
+            r for r in zone_relations(owned) if (r.kind, r.subject, r.objects) not in said
         ]
+        relations += complete_orders(relations, owned)
         scene_season = self._apply_scene_items(scene_items, fields, hemisphere)
         intents = [self._field_intent(f, hemisphere) for f in fields]
         for index in range(1, len(intents)):  # "... & same size of romaine"

@@ -38,11 +38,12 @@ def read_relations(
         kind = link.data["value"]
         relations.extend(_pair(kind, subject, (centre,), members, link, trace))
     landmarks: list[tuple[str, str, Mention, Item]] = []
+    directed = _directed_neighbours(clauses)
     for position, clause in enumerate(clauses):
         link = clause.link
         if link is None or link.role not in ("relation", "between", "trailer"):
             continue
-        if position in placed:
+        if position in placed or position in directed.values():
             continue
         landmark = _landmark(clause)
         if landmark is not None and clause.mentions:
@@ -126,6 +127,8 @@ def read_relations(
             warnings.append(f"ignored {link.raw!r}: it needs a field on each side")
             continue
         kind, subject, objects = pairs
+        if position in directed and kind == "next_to":
+            kind = str(clauses[directed[position]].link.data["value"])  # type: ignore[union-attr]
         relations.extend(_pair(kind, subject, objects, members, link, trace))
     relations += _across_landmarks(landmarks, members, trace)
     related = {frozenset((r.subject, *r.objects)) for r in relations if len(r.objects) == 1}
@@ -137,6 +140,36 @@ def read_relations(
 
 
 _ARTICLES = frozenset({"the", "a", "an", "our", "my", "their", "its"})
+
+
+def _directed_neighbours(clauses: Sequence[Clause]) -> dict[int, int]:
+    """'further north again, beyond the orchard, there's wheat': a direction said on its
+    own just before a 'next to' word gives that word its side. Maps the position of
+    the 'next to' clause to the direction's."""
+    found: dict[int, int] = {}
+    for position, clause in enumerate(clauses):
+        link = clause.link
+        if (
+            link is None
+            or link.role != "trailer"
+            or link.data.get("value") not in _OPPOSITE
+            or clause.mentions
+            or any(i.role != "filler" for i in clause.items)
+        ):
+            continue
+        following = position + 1
+        while (
+            following < len(clauses)
+            and not clauses[following].items
+            and clauses[following].link is not None
+            and clauses[following].link.role == "separator"  # type: ignore[union-attr]
+        ):
+            following += 1
+        if following < len(clauses):
+            nxt = clauses[following].link
+            if nxt is not None and nxt.role == "relation" and nxt.data.get("value") == "next_to":
+                found[following] = position
+    return found
 
 
 def _then_chain(

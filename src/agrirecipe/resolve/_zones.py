@@ -22,7 +22,7 @@ from agrirecipe.recipe import RelationKind
 from agrirecipe.resolve._intent import RelationIntent
 from agrirecipe.resolve._lexicon import DATA_DIR, Item, Token
 
-__all__ = ["ZoneMatch", "find_zones", "zone_relations"]
+__all__ = ["ZoneMatch", "complete_orders", "find_zones", "zone_owners", "zone_relations"]
 
 _AXES = {"north": ("ns", 0), "south": ("ns", 2), "west": ("ew", 0), "east": ("ew", 2)}
 
@@ -103,4 +103,112 @@ def zone_relations(fields: Sequence[Sequence[Item]]) -> list[RelationIntent]:
                 relations.append(
                     RelationIntent(kind=kind, subject=subject, objects=(rows[lower][0],))
                 )
+        if order == [0, 1, 2]:  # "X on the left, Y in the middle, Z on the right"
+            relations.extend(
+                RelationIntent(kind="between", subject=middle, objects=(rows[0][0], rows[2][0]))
+                for middle in rows[1]
+            )
     return relations
+
+
+_HEADS = ("head", "weak_variety", "plot")
+_SENTENCE_ENDS = frozenset({".", "!", "?", ";"})
+
+
+def zone_owners(items: Sequence[Item], fields: Sequence[Sequence[Item]]) -> list[list[Item]]:
+    """Each field's items, a zone said before its field after a break moved to that field.
+
+    "At the top: Chantenay carrots" and "..., and down at the bottom by the ditch a
+    few rows of Granny" put their zone in the clause of the field before; a zone that
+    follows its field's name without a break ("Royal Gala along the top hedge") stays.
+    """
+    owner: dict[int, int] = {}
+    for index, field_items in enumerate(fields):
+        for item in field_items:
+            owner.setdefault(id(item), index)
+    moved = [list(field_items) for field_items in fields]
+    for position, item in enumerate(items):
+        if item.role != "zone" or id(item) not in owner:
+            continue
+        broken = True
+        for before in reversed(items[:position]):
+            if before.role == "separator" and before.norm in _SENTENCE_ENDS:
+                break
+            if before.role in ("separator", "conjunction"):
+                break
+            if before.role in _HEADS:
+                broken = False
+                break
+        if not broken:
+            continue
+        for after in items[position + 1 :]:
+            if after.role == "separator" and after.norm in _SENTENCE_ENDS:
+                break
+            target = owner.get(id(after))
+            if after.role in _HEADS and target is not None:
+                moved = [
+                    [i for i in field_items if i is not item] + ([item] if index == target else [])
+                    for index, field_items in enumerate(moved)
+                ]
+                break
+    return moved
+
+
+def complete_orders(
+    relations: Sequence[RelationIntent], fields: Sequence[Sequence[Item]]
+) -> list[RelationIntent]:
+    """Orders the words imply but do not say, on each axis.
+
+    "the onions in between them" with the potatoes north and the carrots south of
+    the onions puts the potatoes north of the carrots; "Gala along the top, pears
+    below them, at the bottom Granny" puts the pears north of the Granny (a field
+    placed next to the top zone lies above the bottom zone, and vice versa).
+    """
+    edges: dict[str, set[tuple[int, int]]] = {"ns": set(), "ew": set()}
+    for relation in relations:
+        if relation.kind == "between":
+            continue
+        (other,) = relation.objects
+        if relation.kind in ("north_of", "west_of"):
+            pair = (relation.subject, other)
+        elif relation.kind in ("south_of", "east_of"):
+            pair = (other, relation.subject)
+        else:
+            continue
+        edges["ns" if relation.kind in ("north_of", "south_of") else "ew"].add(pair)
+    zones: dict[int, str] = {}
+    for index, items in enumerate(fields):
+        zone = next((str(i.data["zone"]) for i in items if i.role == "zone"), None)
+        if zone is not None:
+            zones[index] = zone
+    added: list[tuple[str, int, int]] = []
+
+    def related(axis: str, a: int, b: int) -> bool:
+        return (a, b) in edges[axis] or (b, a) in edges[axis]
+
+    for relation in relations:
+        if relation.kind != "between":
+            continue
+        middle, (a, b) = relation.subject, relation.objects
+        for axis in ("ns", "ew"):
+            for first, last in ((a, b), (b, a)):
+                path = (first, middle) in edges[axis] and (middle, last) in edges[axis]
+                if path and not related(axis, first, last):
+                    added.append((axis, first, last))
+    for axis, (high, low) in (("ns", ("north", "south")), ("ew", ("west", "east"))):
+        tops = [i for i, z in zones.items() if z == high]
+        bottoms = [i for i, z in zones.items() if z == low]
+        for top in tops:
+            for bottom in bottoms:
+                for middle in range(len(fields)):
+                    if middle in zones:
+                        continue
+                    if (top, middle) in edges[axis] and not related(axis, middle, bottom):
+                        added.append((axis, middle, bottom))
+                    if (middle, bottom) in edges[axis] and not related(axis, top, middle):
+                        added.append((axis, top, middle))
+    kinds: dict[str, RelationKind] = {"ns": "north_of", "ew": "west_of"}
+    return [
+        RelationIntent(kind=kinds[axis], subject=high_index, objects=(low_index,))
+        for axis, high_index, low_index in dict.fromkeys(added)
+    ]
