@@ -431,3 +431,19 @@ def test_a_number_with_a_unit_never_counts_fields() -> None:
     )
     assert [f.crop for f in scene.fields] == ["Cherry", "Pear"]
     assert scene.fields[0].agronomy.row_spacing_m == 4.5
+
+
+def test_member_details_with_bare_row_words_keep_the_listing_going() -> None:
+    scene = generate(
+        "two plots for the drone flight: Bintje potatoes on 20 ridges at 75 cm centres, ridges "
+        "100 m long, and directly east of them a Nantes carrot plot of 10 ridges (75 cm, 2 rows "
+        "per ridge)",
+        resolver="hybrid",
+    ).recipe
+    assert [f.crop for f in scene.fields] == ["Potato", "Carrot"]  # no phantom third plot
+    potatoes, carrots = scene.fields
+    assert [(r.kind, r.subject, r.objects) for r in scene.relations] == [
+        ("east_of", carrots.id, (potatoes.id,))
+    ]
+    assert potatoes.agronomy.row_spacing_m == pytest.approx(0.75)
+    assert carrots.agronomy.rows_per_bed == 2

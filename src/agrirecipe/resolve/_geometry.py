@@ -151,6 +151,13 @@ def _tables() -> _Tables:
     )
 
 
+@functools.cache
+def geometry_nouns() -> frozenset[str]:
+    """The bare words for rows, beds and plants ("ridges", "rows", "trees")."""
+    words = _file()["words"]
+    return frozenset(str(w) for key in ("rows", "beds", "plants") for w in words[key])
+
+
 def find_geometry(tokens: Sequence[Token]) -> list[GeometryMatch]:
     """Every stated geometry value in the prompt, in prompt order, never overlapping.
 

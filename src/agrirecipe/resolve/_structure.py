@@ -234,7 +234,7 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             and clause.link is not None
             and clause.link.norm not in (".", "!", "?")  # a new sentence ends the listing
             and (
-                all(i.role in _MEMBER_DETAIL_ROLES for i in clause.items)
+                all(_member_detail(i) for i in clause.items)
                 # "Riesling north of it, 25 rows at 2 m": placed against the one before
                 or (clause.link.role == "relation" and clause.items[0].norm in _POINTERS)
             )
@@ -380,6 +380,16 @@ _POINTERS = frozenset({"it", "them", "this", "that", "these", "those"})
 
 #: Words that give a listed member's details to every member listed.
 _EACH = frozenset({"each", "all", "both"})
+
+
+def _member_detail(item: Item) -> bool:
+    """A word of a listed member's details: "ridges 100 m long", "(75 cm, 2 rows per ridge)"."""
+    from agrirecipe.resolve._geometry import geometry_nouns
+
+    return item.role in _MEMBER_DETAIL_ROLES or (
+        item.role in ("unknown", "length_unit") and item.norm in (*geometry_nouns(), "cm", "m")
+    )
+
 
 #: Words a listed member's details may hold without naming another field.
 _MEMBER_DETAIL_ROLES = frozenset(
