@@ -447,3 +447,17 @@ def test_member_details_with_bare_row_words_keep_the_listing_going() -> None:
     ]
     assert potatoes.agronomy.row_spacing_m == pytest.approx(0.75)
     assert carrots.agronomy.rows_per_bed == 2
+
+
+def test_a_bare_measure_after_a_sibling_s_spacing_is_the_same_spacing() -> None:
+    scene = generate(
+        "Riesling at 1.8 m row spacing and Spätburgunder at 2.0 m, both 1.0 m between vines "
+        "and 25 rows; the Riesling block lies north of the Spätburgunder.",
+        resolver="hybrid",
+    ).recipe
+    riesling, pinot = scene.fields
+    assert (riesling.variety, pinot.variety) == ("Riesling", "Pinot Noir")
+    assert riesling.agronomy.row_spacing_m == pytest.approx(1.8)
+    assert pinot.agronomy.row_spacing_m == pytest.approx(2.0)
+    assert pinot.agronomy.in_row_spacing_m == pytest.approx(1.0)
+    assert "row_spacing" in pinot.stated

@@ -64,6 +64,7 @@ from agrirecipe.resolve._lexicon import (
     OtherCrop,
     Sense,
     Token,
+    number_value,
     tokenize,
     vocabulary,
 )
@@ -221,6 +222,9 @@ class PromptReader(FieldReading):
                 intents[index] = intents[index].model_copy(update={"size": intents[index - 1].size})
             if any(i.role == "same_spacing" for i in fields[index].items):
                 intents[index] = _same_spacing(intents[index], intents[index - 1])
+            intents[index] = _parallel_spacing(
+                intents[index], intents[index - 1], fields[index].items
+            )
         for index, intent in enumerate(intents):
             self.trace.append(
                 TraceStep(
@@ -668,6 +672,40 @@ def _same_spacing(intent: FieldIntent, before: FieldIntent) -> FieldIntent:
     else:
         rows = RowSpec(**copied, text="same spacing")
     return intent.model_copy(update={"rows": rows})
+
+
+def _parallel_spacing(
+    intent: FieldIntent, before: FieldIntent, items: Sequence[Item]
+) -> FieldIntent:
+    """'Riesling at 1.8 m row spacing and Spätburgunder at 2.0 m': a bare 'at 2.0 m' after
+    a field that said which spacing its 'at' measure was is the same spacing."""
+    lengths = ("row_spacing_m", "in_row_spacing_m", "bed_width_m")
+    own = intent.rows
+    said = [  # what the field before said and this one does not (a shared 'both' is in both)
+        k
+        for k in lengths
+        if before.rows is not None
+        and getattr(before.rows, k) is not None
+        and (own is None or getattr(own, k) is None)
+    ]
+    if len(said) != 1:
+        return intent
+    for first, number, unit in zip(items, items[1:], items[2:], strict=False):
+        if first.norm != "at" or unit.role != "length_unit":
+            continue
+        value = number_value(number.norm)
+        factors = [float(s.value) for s in unit.senses_of("length_unit")]
+        if value is None or value <= 0 or not factors:
+            continue
+        metres = round(value * factors[0], 6)
+        text = f"{first.raw} {number.raw} {unit.raw}"
+        rows = (
+            intent.rows.model_copy(update={said[0]: metres})
+            if intent.rows is not None
+            else RowSpec(**{said[0]: metres}, text=text)
+        )
+        return intent.model_copy(update={"rows": rows})
+    return intent
 
 
 def _past_a_reference(
