@@ -370,3 +370,13 @@ def test_the_middle_of_left_and_right_is_between_them() -> None:
     found = _relations(scene)
     assert ("between", cherries, (apples, pears)) in found
     assert ("west_of", apples, (cherries,)) in found
+
+
+def test_the_others_take_what_is_said_of_them() -> None:
+    scene = recipe(
+        "corn, wheat & carrots, 3 fields, make the corn biggest like 5 ha, the others 1 ha each"
+    )
+    areas = {f.crop: f.geometry.size_m[0] * f.geometry.size_m[1] for f in scene.fields}
+    assert areas["Maize"] == pytest.approx(50_000, rel=0.01)
+    assert areas["Wheat"] == pytest.approx(10_000, rel=0.01)
+    assert areas["Carrot"] == pytest.approx(10_000, rel=0.01)

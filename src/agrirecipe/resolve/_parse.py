@@ -430,6 +430,14 @@ class PromptReader(FieldReading):
             says_all = any(i.role == "all" for i in attributes)
             seasons = [i for i in attributes if i.role in ("season", "month")]
             others = [i for i in attributes if i.role not in ("season", "month", "all")]
+            if _about_the_others(clause):
+                # "make the corn biggest like 5 ha, the others 1 ha each": every field
+                # that does not say the same of itself
+                for mention in mentions:
+                    for sub in (mention, *mention.refinements):
+                        roles = {i.role for i in sub.items}
+                        sub.items.extend(i for i in others if i.role not in roles)
+                continue
             if says_all:
                 scene.extend(attributes)
                 continue
@@ -672,6 +680,17 @@ def _same_spacing(intent: FieldIntent, before: FieldIntent) -> FieldIntent:
     else:
         rows = RowSpec(**copied, text="same spacing")
     return intent.model_copy(update={"rows": rows})
+
+
+def _about_the_others(clause: Clause) -> bool:
+    """A clause that opens with 'the others' / 'the rest' and says something of them."""
+    first = next((i for i in clause.items if i.role != "filler"), None)
+    return (
+        first is not None
+        and first.role == "reference"
+        and first.data.get("value") == "rest"
+        and any(i.role in ATTRIBUTE_ROLES and i.role != "all" for i in clause.loose)
+    )
 
 
 def _parallel_spacing(
