@@ -20,6 +20,15 @@ if [ ${#need_apt[@]} -gt 0 ]; then
     libegl1 libegl-mesa0 libgl1 libgl1-mesa-dri >/dev/null
 fi
 
+# The app's browser tests drive Debian's chromium with Playwright (which cannot
+# download a browser build of its own here).
+if [ ! -x /usr/bin/chromium ]; then
+  SUDO=""; [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends \
+    chromium >/dev/null
+fi
+
 # The SDFormat XSDs (Debian's sdformat-sdf) validate the Gazebo backend's worlds in
 # the tests (issue 13).
 if ! ls /usr/share/sdformat*/1.7/root.xsd >/dev/null 2>&1; then

@@ -17,7 +17,17 @@ from agrirecipe._errors import AgrirecipeError
 
 __all__ = ["build_parser", "main"]
 
-_COMMAND_MODULES = ("generate", "validate", "schema", "render", "eval", "assets", "build", "edit")
+_COMMAND_MODULES = (
+    "generate",
+    "validate",
+    "schema",
+    "render",
+    "eval",
+    "assets",
+    "build",
+    "edit",
+    "app",
+)
 
 
 def build_parser() -> argparse.ArgumentParser:
