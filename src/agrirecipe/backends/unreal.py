@@ -22,8 +22,11 @@ under a cancellable progress dialog (``ScopedSlowTask``):
   cylinder for cereals and vines, sphere for heads and bushes) sized like each
   plant (canopy width x height) and tinted like its foliage, with an
   ``unreal.log_warning`` naming the missing asset;
-- lays a soil-coloured ground plane (the 100 cm ``/Engine/BasicShapes/Plane``
-  scaled to the field) under each field;
+- imports each field's soil surface (ridges, raised beds, plastic mulch, headland
+  track) from ``assets/ground/<field id>.glb`` and places it at the field's origin;
+  a flat field without a track gets a soil-coloured ground plane (the 100 cm
+  ``/Engine/BasicShapes/Plane`` scaled to the field), as does a field whose
+  surface mesh cannot be imported;
 - adds a ``DirectionalLight`` for the sun (plus ``SkyAtmosphere`` and
   ``SkyLight`` unless ``sky=False``).
 
@@ -183,9 +186,10 @@ class UnrealBackend(Backend):
 
     def write(self, scene: Scene, directory: Path) -> list[Path]:
         """Write ``unreal_build.py`` into ``directory`` atomically, its meshes to ``assets/``."""
-        from agrirecipe.plants import write_scene_assets
+        from agrirecipe.plants import write_ground_assets, write_scene_assets
 
         write_scene_assets(scene.recipe, directory, knowledge=scene.knowledge)
+        write_ground_assets(scene.recipe, directory)
         return [write_atomic(Path(directory) / SCRIPT_NAME, self.script(scene))]
 
     def scene_document(
@@ -309,8 +313,29 @@ class UnrealBackend(Backend):
                 "yaw_deg": -geometry.rotation_deg,
                 # The engine plane is 100 cm square: a scale of 1.0 is one metre.
                 "scale": [width_m, length_m, 1.0],
+                # Ridges, beds, mulch and tracks: the field's surface mesh in assets/,
+                # placed at the field's origin (its own frame); the plane if it fails.
+                "mesh": _ground_mesh_plan(spec, kernel_parameters, root),
             },
         }
+
+
+def _ground_mesh_plan(
+    spec: FieldSpec, kernel_parameters: dict[str, Any], root: str
+) -> dict[str, Any] | None:
+    """Where a field's surface mesh is and where it lands (None: a flat field)."""
+    from agrirecipe.plants import ASSETS_FOLDER, ground_file, has_relief
+
+    if not has_relief(spec, kernel_parameters):
+        return None
+    # beside the catalogue's meshes: /Game/Agriculture/Ground/<scene name>
+    content_root = "/".join(spec.asset_path.split("/")[:3])
+    return {
+        "file": f"{ASSETS_FOLDER}/{ground_file(spec.id)}",
+        "destination_path": f"{content_root}/Ground/{root.rsplit('/', 1)[-1]}",
+        "name": f"SM_Ground_{spec.id}",
+        "origin_cm": list(unreal_location_cm(*spec.geometry.origin_m, 0.0)),
+    }
 
 
 def _plant_meshes(spec: FieldSpec, asset: FieldAsset) -> dict[str, Any]:

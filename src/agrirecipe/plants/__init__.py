@@ -7,6 +7,13 @@ from the knowledge base (height, canopy width, foliage, colours) and
 """
 
 from agrirecipe.plants._gltf import glb_bytes, write_glb
+from agrirecipe.plants._ground_asset import (
+    GROUND_FOLDER,
+    ground_file,
+    ground_mesh,
+    has_relief,
+    write_ground_assets,
+)
 from agrirecipe.plants._library import (
     AssetFile,
     asset_file_name,
@@ -30,6 +37,7 @@ from agrirecipe.plants._sheet import contact_sheet
 __all__ = [
     "ARCHETYPES",
     "ASSETS_FOLDER",
+    "GROUND_FOLDER",
     "SCENE_VARIANTS",
     "AssetFile",
     "FieldAsset",
@@ -42,10 +50,14 @@ __all__ = [
     "contact_sheet",
     "field_assets",
     "glb_bytes",
+    "ground_file",
+    "ground_mesh",
+    "has_relief",
     "plant_mesh",
     "plant_spec",
     "plant_variant",
     "plant_variants",
     "write_glb",
+    "write_ground_assets",
     "write_scene_assets",
 ]

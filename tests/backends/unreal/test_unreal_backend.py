@@ -129,6 +129,9 @@ def test_hostile_prompt_and_labels_stay_data() -> None:
 
 
 def test_write_creates_the_script_atomically(tmp_path: Path) -> None:
+    from agrirecipe.layout import field_parameters
+    from agrirecipe.plants import has_relief
+
     scene = Scene(two_field_recipe())
     written = UnrealBackend().write(scene, tmp_path / "out")
     assert written == [tmp_path / "out" / SCRIPT_NAME]
@@ -136,7 +139,12 @@ def test_write_creates_the_script_atomically(tmp_path: Path) -> None:
     # Beside it, only the plant meshes it imports (no temporary file left behind).
     assert sorted(p.name for p in (tmp_path / "out").iterdir()) == ["assets", SCRIPT_NAME]
     meshes = sorted((tmp_path / "out" / "assets").rglob("*.glb"))
-    assert len(meshes) == 3 * len(scene.recipe.fields)
+    ground = [p for p in meshes if p.parent.name == "ground"]
+    assert len(meshes) - len(ground) == 3 * len(scene.recipe.fields)
+    parameters = {str(p["id"]): p for p in field_parameters(scene.recipe)}
+    relief = [s.id for s in scene.recipe.fields if has_relief(s, parameters[s.id])]
+    assert "carrots" in relief  # ridges (and the orchard's headland track)
+    assert sorted(p.stem for p in ground) == sorted(relief)
     assert not [p for p in (tmp_path / "out").rglob(".*")]
 
 

@@ -353,7 +353,7 @@ def test_plant_meshes_are_imported_once_and_instanced_per_variant(tmp_path: Path
     assert recording.warnings() == [] and recording.errors() == []
     with (tmp_path / "plants.csv").open(newline="", encoding="utf-8") as stream:
         rows = list(csv.DictReader(stream))
-    imports = recording.import_tasks
+    imports = [t for t in recording.import_tasks if Path(t["filename"]).parent.name != "ground"]
     assert len(imports) == 3 * len(scene.recipe.fields)  # each variant once, then reused
     for task in imports:
         assert Path(task["filename"]).is_file()
@@ -395,7 +395,11 @@ def test_a_project_asset_wins_over_the_plant_meshes(tmp_path: Path) -> None:
     _, recording = _run(scene, assets_root=tmp_path, project_assets=frozenset({apples.asset_path}))
     apple_actor = _field_actor(recording, apples)
     assert [c._mesh._path for c in apple_actor._components] == [apples.asset_path]
-    imported = {task["filename"] for task in recording.import_tasks}
+    imported = {
+        task["filename"]
+        for task in recording.import_tasks
+        if Path(task["filename"]).parent.name != "ground"
+    }
     assert imported and all("Carrot" in name for name in imported)
     assert len(_field_actor(recording, carrots)._components) == 3
     assert recording.warnings() == []
@@ -409,3 +413,38 @@ def test_a_second_run_reuses_the_imported_meshes(tmp_path: Path) -> None:
     _, second = _run(scene, assets_root=tmp_path, project_assets=imported)
     assert second.import_tasks == []
     assert second.warnings() == []
+
+
+def test_ridged_fields_get_their_surface_mesh_at_the_field_origin(tmp_path: Path) -> None:
+    from agrirecipe.layout import field_parameters
+    from agrirecipe.plants import ground_mesh, has_relief
+
+    scene = _scene()
+    scene.write(tmp_path, backends=["unreal"])
+    _, recording = _run(scene, assets_root=tmp_path)
+    parameters = {str(p["id"]): p for p in field_parameters(scene.recipe)}
+    grounds = {a._label: a for a in recording.actors_of("StaticMeshActor")}
+    ridged = [s for s in scene.recipe.fields if has_relief(s, parameters[s.id])]
+    assert ridged, "the test scene has a ridged field"
+    for spec in scene.recipe.fields:
+        actor = grounds[f"{spec.label} ground"]
+        mesh = actor.static_mesh_component._mesh
+        if spec in ridged:
+            name = f"SM_Ground_{spec.id}"
+            assert mesh._path.startswith("/Game/Agriculture/Ground/")
+            assert mesh._path.endswith(f"/{name}.{name}")
+            x, y = spec.geometry.origin_m
+            location = actor._location
+            assert (location.x, location.y, location.z) == pytest.approx((x * 100, -y * 100, 0))
+            assert actor._scale is None  # imported in centimetres: no scaling
+            task = next(t for t in recording.import_tasks if t["destination_name"] == name)
+            glb = Path(task["filename"])
+            assert glb == tmp_path / "assets" / "ground" / f"{spec.id}.glb"
+            surface = ground_mesh(spec, parameters[spec.id])
+            assert surface.triangle_count > 2  # a track or ridges, not one quad
+            lowest, highest = surface.bounds
+            assert highest[2] == pytest.approx(0.0, abs=0.01)  # crests at the plants' z = 0
+            if spec.agronomy.planting_pattern == "ridges":
+                assert lowest[2] < -0.05  # the carrots' furrows
+        else:
+            assert mesh._path.startswith("/Engine/BasicShapes/Plane")

@@ -160,7 +160,8 @@ def build_field(
         placed += flush_instances(task, components, chunks, field["progress_plants"])
     if not cancelled:
         task.enter_progress_frame(1.0, field["progress_ground"])
-        build_ground(editor_actors, engine, field["ground"], field["folder"], meshes)
+        if not build_ground_mesh(editor_actors, engine, field["ground"], field["folder"], meshes):
+            build_ground(editor_actors, engine, field["ground"], field["folder"], meshes)
     return placed, cancelled
 
 
@@ -299,6 +300,43 @@ def tint(
     instance.set_vector_parameter_value(
         engine["colour_parameter"], unreal.LinearColor(r=rgb[0], g=rgb[1], b=rgb[2], a=1.0)
     )
+
+
+def build_ground_mesh(
+    editor_actors: unreal.EditorActorSubsystem,
+    engine: dict[str, Any],
+    ground: dict[str, Any],
+    folder: str,
+    meshes: dict[str, Any],
+) -> bool:
+    """The field's surface (ridges, beds, mulch, track) from ``assets/ground/``, imported
+    once; False when the field has none or it cannot be imported (the plane is used)."""
+    plan = ground.get("mesh")
+    if plan is None:
+        return False
+    object_path = f"{plan['destination_path']}/{plan['name']}.{plan['name']}"
+    if object_path not in meshes or meshes[object_path] is None:
+        filename = str(Path(assets_root(engine["assets_root"])).joinpath(*plan["file"].split("/")))
+        meshes[object_path] = load_project_mesh(object_path, meshes) or import_glb(
+            filename, plan["destination_path"], plan["name"]
+        )
+    mesh = meshes[object_path]
+    if mesh is None:
+        # the plants' warning already says where assets/ is expected
+        unreal.log(f"agrirecipe: no ground mesh {plan['file']}; a flat plane is used")
+        return False
+    actor = unreal.StaticMeshActor.cast(
+        spawn(
+            editor_actors,
+            unreal.StaticMeshActor,
+            plan["origin_cm"],
+            unreal.Rotator(roll=0.0, pitch=0.0, yaw=float(ground["yaw_deg"])),
+            ground["label"],
+            folder,
+        )
+    )
+    actor.static_mesh_component.set_static_mesh(mesh)
+    return True
 
 
 def build_ground(
