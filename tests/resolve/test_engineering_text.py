@@ -461,3 +461,20 @@ def test_a_bare_measure_after_a_sibling_s_spacing_is_the_same_spacing() -> None:
     assert pinot.agronomy.row_spacing_m == pytest.approx(2.0)
     assert pinot.agronomy.in_row_spacing_m == pytest.approx(1.0)
     assert "row_spacing" in pinot.stated
+
+
+def test_a_list_of_values_for_several_plots_gives_one_to_each() -> None:
+    scene = generate(
+        "seeding-rate trial for the NDVI sensor: three wheat plots of 3 x 12 m at 100, 150 and "
+        "200 plants per m2",
+        resolver="hybrid",
+    ).recipe
+    densities = [
+        round(1 / (f.agronomy.row_spacing_m * f.agronomy.in_row_spacing_m)) for f in scene.fields
+    ]
+    assert densities == [100, 150, 200]
+    assert {f.geometry.size_m for f in scene.fields} == {(3.0, 12.0)}
+    spacings = generate("two maize plots with rows 50 and 75 cm apart", resolver="hybrid").recipe
+    assert [f.agronomy.row_spacing_m for f in spacings.fields] == [0.5, 0.75]
+    one = generate("maize at 80,000 plants/ha", resolver="hybrid").recipe
+    assert len(one.fields) == 1  # a thousands separator is not a list

@@ -68,6 +68,7 @@ from agrirecipe.resolve._lexicon import (
     tokenize,
     vocabulary,
 )
+from agrirecipe.resolve._lists import spread_value_lists
 from agrirecipe.resolve._relations import coordinated, listing, read_relations
 from agrirecipe.resolve._scan import assign_roles, read_heights, read_latitude, read_sizes
 from agrirecipe.resolve._structure import (
@@ -135,7 +136,7 @@ class PromptReader(FieldReading):
                 stage="resolve",
                 hint=f"describe the fields you want, e.g. {_EXAMPLES}",
             )
-        text = expand_casual(prompt)
+        text = spread_value_lists(expand_casual(prompt))
         text, labels = resolve_labels(text, lambda phrase: self.lexicon.tag(tokenize(phrase)))
         text = place_leading_directions(text)
         for note in labels:

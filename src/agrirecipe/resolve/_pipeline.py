@@ -46,6 +46,7 @@ from agrirecipe.resolve._intent import (
     TraceStep,
 )
 from agrirecipe.resolve._lexicon import tokenize, vocabulary
+from agrirecipe.resolve._lists import spread_value_lists
 from agrirecipe.resolve._registry import get_resolver
 
 if TYPE_CHECKING:
@@ -360,7 +361,10 @@ def _validate(intent: SceneIntent, context: ResolveContext) -> None:
     """Catch intents that name what the hierarchy does not hold (any strategy can err)."""
     hierarchy = context.hierarchy
     # "the": references to labelled fields are spelled "the <crop>" ("north of A")
-    prompt_words = _words(intent.prompt) | _words(expand_casual(intent.prompt)) | {"the"}
+    expanded = expand_casual(intent.prompt)
+    prompt_words = (
+        _words(intent.prompt) | _words(expanded) | _words(spread_value_lists(expanded)) | {"the"}
+    )
     for index, field in enumerate(intent.fields):
         path = f"fields[{index}]"
         # Intent validation (the paper's stage): every field is traceable to the words

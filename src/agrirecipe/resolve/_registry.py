@@ -31,6 +31,7 @@ BUILTIN_RESOLVERS: dict[str, str] = {
     "embedding": "agrirecipe.resolve._embedding:EmbeddingResolver",
     "llm": "agrirecipe.resolve.llm:LlmResolver",
     "hybrid": "agrirecipe.resolve._hybrid:HybridResolver",
+    "finetuned": "agrirecipe.finetune._strategy:FinetunedResolver",
 }
 _REGISTERED: dict[str, ResolverFactory] = {}
 # One instance per built-in name and process: instances hold lazily loaded models

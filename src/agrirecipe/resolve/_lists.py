@@ -1,0 +1,59 @@
+"""Value lists said once for several plots: "at 100, 150 and 200 plants per m2".
+
+The units are data (``data/value_lists.yaml``). :func:`spread_value_lists` rewrites
+such a list into one member per value ("..., one at 100 plants per m2, one at 150
+plants per m2 and one at 200 plants per m2"), which the reading of counted plots
+and their members already understands; a list of one value is left alone.
+"""
+
+from __future__ import annotations
+
+import functools
+import re
+from typing import Any
+
+import yaml
+
+from agrirecipe.resolve._lexicon import DATA_DIR
+
+__all__ = ["spread_value_lists"]
+
+_NUMBER = r"\d+(?:[.,]\d+)?"
+
+
+@functools.cache
+def _pattern() -> re.Pattern[str]:
+    data: dict[str, Any] = yaml.safe_load((DATA_DIR / "value_lists.yaml").read_text("utf-8"))
+    leads = "|".join(
+        re.escape(str(w)) for w in sorted(data["leads"], key=lambda w: len(str(w)), reverse=True)
+    )
+    units = "|".join(
+        re.escape(str(u)) for u in sorted(data["units"], key=lambda u: len(str(u)), reverse=True)
+    )
+    return re.compile(
+        rf"\b(?P<lead>{leads})\s+(?P<values>{_NUMBER}(?:\s*,\s*{_NUMBER})*,?\s+(?:and|or|&)\s+"
+        rf"{_NUMBER})\s*(?P<unit>{units})(?![\w²])",
+        re.IGNORECASE,
+    )
+
+
+@functools.cache
+def _leads() -> dict[str, str]:
+    data: dict[str, Any] = yaml.safe_load((DATA_DIR / "value_lists.yaml").read_text("utf-8"))
+    return {str(k).lower(): str(v) for k, v in data["leads"].items()}
+
+
+def spread_value_lists(text: str) -> str:
+    """``text`` with each list of values of one measure spread into one member per value."""
+
+    def spread(match: re.Match[str]) -> str:
+        values = re.findall(_NUMBER, match.group("values"))
+        # "1,000" is one number, not a list: thousands separators stay whole
+        if re.search(r"\d,\d{3}(?!\d)", match.group("values")):
+            return match.group(0)
+        member = _leads()[match.group("lead").lower()]
+        unit = match.group("unit")
+        members = [f"{member} {value} {unit}" for value in values]
+        return ", " + ", ".join(members[:-1]) + " and " + members[-1]
+
+    return _pattern().sub(spread, text)
