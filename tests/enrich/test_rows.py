@@ -114,3 +114,13 @@ def test_a_size_said_with_the_rows_is_the_field(knowledge: KnowledgeBase) -> Non
     assert result.size_m == (36.0, 60.0)
     usable = 36.0 - 2 * result.headland_m
     assert math.floor(usable / 3.0 + 1e-9) + 1 == 12
+
+
+def test_density_and_in_row_spacing_set_the_bed_spacing_of_double_rows(
+    knowledge: KnowledgeBase,
+) -> None:
+    result = plan(knowledge, "Banana", rows_per_bed=2, in_row_spacing_m=2.25, plants_per_ha=1840.0)
+    assert result.rows_per_bed == 2
+    assert result.in_row_spacing_m == pytest.approx(2.25)
+    density = 10_000 * 2 / (result.row_spacing_m * result.in_row_spacing_m)
+    assert density == pytest.approx(1840, rel=1e-3)

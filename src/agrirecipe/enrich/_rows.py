@@ -113,6 +113,17 @@ def plan_rows(
     # Centre distance of beds (several rows each) or of single rows.
     if rows_per_bed > 1:
         bed_width = stated.get("bed_width_m")
+        if (
+            bed_width is None
+            and {"plants_per_ha", "in_row_spacing_m"} <= set(stated)
+            and "row_spacing_m" not in stated
+        ):
+            # "double rows, 2.25 m in-row, 1,840 plants/ha": the beds are as far apart as
+            # that makes
+            bed_width = round(
+                10_000.0 * rows_per_bed / (stated["plants_per_ha"] * stated["in_row_spacing_m"]),
+                4,
+            )
         if bed_width is None and planting.rows_per_bed > 1:
             bed_width = planting.row_spacing_m.value
         if "row_spacing_m" in stated:
@@ -156,7 +167,8 @@ def plan_rows(
                 f"{from_density:.3g} m, not every {in_row:g} m",
                 "state the density or the in-row spacing, not two that disagree",
             )
-        in_row = from_density
+        if in_row is None:  # a stated in-row spacing that agrees is kept as said
+            in_row = from_density
     length_rows = stated.get("row_length_m")
     per_row = stated.get("plants_per_row")
     if in_row is None and per_row is not None and length_rows is not None and per_row > 1:
