@@ -37,6 +37,7 @@ from agrirecipe._errors import (
     PipelineError,
     RecipeValidationError,
     UnknownCropError,
+    UserInputError,
 )
 from agrirecipe.app._history import SceneNotFoundError, UnsafePathError
 from agrirecipe.app._service import AppConfig, AppService
@@ -199,8 +200,11 @@ class _BodyLimit:
                 await too_large(scope, receive, send)
 
 
-class _TooLargeError(Exception):
+class _TooLargeError(UserInputError):
     """Raised inside the body-limit middleware when a chunked body goes over the limit."""
+
+    def __init__(self) -> None:
+        super().__init__("the request body is too large", stage="app")
 
 
 def create_app(config: AppConfig | None = None, service: AppService | None = None) -> FastAPI:
