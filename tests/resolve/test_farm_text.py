@@ -380,3 +380,16 @@ def test_the_others_take_what_is_said_of_them() -> None:
     assert areas["Maize"] == pytest.approx(50_000, rel=0.01)
     assert areas["Wheat"] == pytest.approx(10_000, rel=0.01)
     assert areas["Carrot"] == pytest.approx(10_000, rel=0.01)
+
+
+def test_a_weak_variety_heading_a_list_keeps_its_crop_when_merged() -> None:
+    scene = recipe(
+        "Market garden, west to east: Lollo, then Imperator carrots, then Stuttgarter Riesen "
+        "onions, and a bed of Centenary strawberries at the far eastern end."
+    )
+    assert [(f.crop, f.variety) for f in scene.fields] == [
+        ("Lettuce", "Lollo Rosso"),
+        ("Carrot", "Imperator"),
+        ("Onion", "Stuttgarter"),
+        ("Strawberry", "Malling Centenary"),
+    ]

@@ -150,7 +150,10 @@ def _interpretations(item: Item) -> list[Interpretation]:
         if sense.kind == "crop":
             result.append((str(sense.value), None, False))
         elif sense.kind == "variety" and sense.crop is not None:
-            result.append((sense.crop, str(sense.value), sense.weak))
+            # a weak name promoted to its clause's head ("west to east: Lollo, then ...")
+            # names its variety wherever the field is merged
+            weak = sense.weak and not item.data.get("promoted")
+            result.append((sense.crop, str(sense.value), weak))
     return result
 
 

@@ -85,6 +85,7 @@ def promote_weak_varieties(clauses: Sequence[Clause], builder: MentionBuilder) -
 def _promote(clause: Clause, item: Item, sense: Any) -> Mention:
     """Make a weak variety name the head of its clause's one mention."""
     item.role = "head"
+    item.data["promoted"] = True
     mention = Mention(clause=clause.index)
     mention.items = [i for i in clause.loose if i is not item]
     mention.heads.append(item)
