@@ -27,6 +27,7 @@ _COMMAND_MODULES = (
     "build",
     "edit",
     "app",
+    "dataset",
 )
 
 
