@@ -17,6 +17,9 @@ BENCHMARKS = (
     "bench_unreal_script_size.py",
     "bench_llm_threads.py",
     "bench_long_prompts.py",
+    "bench_gazebo.py",
+    "bench_app.py",
+    "bench_dataset.py",
 )
 
 
