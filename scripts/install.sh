@@ -29,13 +29,13 @@ if [ ! -x /usr/bin/chromium ]; then
     chromium >/dev/null
 fi
 
-# The SDFormat XSDs (Debian's sdformat-sdf) validate the Gazebo backend's worlds in
-# the tests (issue 13).
-if ! ls /usr/share/sdformat*/1.7/root.xsd >/dev/null 2>&1; then
+# The SDFormat XSDs (Debian's sdformat-sdf) and libsdformat itself (the parser gz-sim
+# loads worlds with) check the Gazebo backend's worlds in the tests (issue 13).
+if ! ls /usr/share/sdformat*/1.7/root.xsd >/dev/null 2>&1 || ! pkg-config --exists sdformat12; then
   SUDO=""; [ "$(id -u)" -eq 0 ] || SUDO="sudo"
   $SUDO apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends \
-    sdformat-sdf >/dev/null
+    sdformat-sdf libsdformat-dev pkg-config >/dev/null
 fi
 
 [ -x .venv/bin/python ] || "$PY" -m venv .venv

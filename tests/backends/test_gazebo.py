@@ -425,3 +425,44 @@ def test_proxy_for_a_crop_without_a_mesh() -> None:
 def test_bad_options_are_configuration_errors(options: dict[str, Any]) -> None:
     with pytest.raises(ConfigurationError):
         GazeboBackend(**options)
+
+
+@pytest.fixture(scope="module")
+def sdformat_check(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """libsdformat's own loader as a small program (Debian libsdformat-dev)."""
+    import subprocess
+
+    compiler = shutil.which("g++")
+    flags = subprocess.run(
+        ["pkg-config", "--cflags", "--libs", "sdformat12"], capture_output=True, text=True
+    )
+    if compiler is None or flags.returncode != 0:
+        pytest.skip("libsdformat-dev (sdformat12) or g++ is not installed (scripts/install.sh)")
+    binary = tmp_path_factory.mktemp("sdformat") / "sdformat_check"
+    source = Path(__file__).with_name("sdformat_check.cc")
+    subprocess.run(
+        [compiler, "-std=c++17", "-O1", str(source), "-o", str(binary), *flags.stdout.split()],
+        check=True,
+    )
+    return binary
+
+
+def test_libsdformat_loads_the_world(sdformat_check: Path, written: tuple[Scene, Path]) -> None:
+    import subprocess
+
+    scene, folder = written
+    result = subprocess.run(
+        [str(sdformat_check), str(folder / "gazebo" / "world.sdf")],
+        capture_output=True,
+        text=True,
+    )
+    assert result.returncode == 0, result.stdout + result.stderr
+    lines = result.stdout.splitlines()
+    assert (
+        lines[0] == f"world agrirecipe_farm models {len(scene.recipe.fields) + 1} lights 1 frames 1"
+    )
+    models = {line.split()[1]: line for line in lines if line.startswith("model ")}
+    assert set(models) == {"agrirecipe_ground", *(f.id for f in scene.recipe.fields)}
+    for spec in scene.recipe.fields:
+        visuals = int(models[spec.id].rsplit(" ", 1)[1])
+        assert visuals >= 2  # the soil and at least one plant mesh
