@@ -73,9 +73,7 @@ class Scene:
         """
         from agrirecipe.edit import edit_recipe
 
-        result = edit_recipe(
-            self.recipe, instruction, knowledge=self.knowledge, resolver=resolver
-        )
+        result = edit_recipe(self.recipe, instruction, knowledge=self.knowledge, resolver=resolver)
         return Scene(result.recipe, knowledge=self.knowledge, changes=result.changes)
 
     def script(self, backend: str) -> str:

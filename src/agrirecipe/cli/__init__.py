@@ -28,6 +28,7 @@ _COMMAND_MODULES = (
     "edit",
     "app",
     "dataset",
+    "finetune",
 )
 
 

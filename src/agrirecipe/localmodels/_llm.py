@@ -162,6 +162,7 @@ class LlamaCppModel:
         seed: int = 0,
         block_tokens: int = 32,
         state_cache: bool = True,
+        lora_path: str | Path | None = None,
     ) -> None:
         if block_tokens < 1:
             raise ConfigurationError(
@@ -173,6 +174,7 @@ class LlamaCppModel:
         self.seed = seed
         self.block_tokens = block_tokens
         self.state_cache = state_cache
+        self.lora_path = Path(lora_path) if lora_path is not None else None
         self._llama: Any = None
         self._vocab: Any = None
         self._n_vocab = 0
@@ -201,10 +203,14 @@ class LlamaCppModel:
 
     @property
     def model_id(self) -> str:
-        """File name and size of the GGUF."""
+        """File name and size of the GGUF (and of the LoRA adapter over it, if any)."""
         path = self.path
         size = path.stat().st_size if path.exists() else 0
-        return f"{path.name}-{size}"
+        if self.lora_path is None:
+            return f"{path.name}-{size}"
+        lora = self.lora_path
+        lora_size = lora.stat().st_size if lora.exists() else 0
+        return f"{path.name}-{size}+{lora.name}-{lora_size}"
 
     # --- loading -------------------------------------------------------------
 
@@ -249,6 +255,7 @@ class LlamaCppModel:
                 seed=self.seed,
                 verbose=False,
                 logits_all=False,
+                lora_path=str(self.lora_path) if self.lora_path is not None else None,
             )
         except (ValueError, RuntimeError, OSError) as exc:
             raise ModelError(
