@@ -393,3 +393,50 @@ def test_a_weak_variety_heading_a_list_keeps_its_crop_when_merged() -> None:
         ("Onion", "Stuttgarter"),
         ("Strawberry", "Malling Centenary"),
     ]
+
+
+def test_a_plan_seen_from_above_is_a_viewpoint_not_a_relation() -> None:
+    scene = recipe(
+        "if you look at the farm plan from above: stone fruit along the top edge, root veg in "
+        "the middle strip and grain across the bottom"
+    )
+    top, middle, bottom = (f.id for f in scene.fields)
+    found = _relations(scene)
+    assert ("north_of", top, (middle,)) in found and ("north_of", middle, (bottom,)) in found
+    assert all(r.subject != middle or r.objects != (top,) for r in scene.relations)
+
+
+def test_a_rusty_gate_does_not_make_the_plants_ill() -> None:
+    scene = recipe(
+        "In the picture there's a field of California Wonder peppers with mottled, curled "
+        "leaves and a lot of plants wilting, and next to it beef tomatoes staked up on canes "
+        "that look perfectly healthy. A blue water tank and a rusty gate in the foreground."
+    )
+    assert [(f.crop, f.health) for f in scene.fields] == [("Pepper", "Ill"), ("Tomato", "Healthy")]
+    assert recipe("a rusty wheat field").fields[0].health == "Ill"
+
+
+@pytest.mark.parametrize(
+    ("prompt", "season"),
+    [
+        (
+            "Our farm near Cairns in Queensland, Australia is basically one 3 ha block of "
+            "Grande Naine bananas. It's March and the bunches are ready to cut.",
+            "Fall",
+        ),
+        ("Our vineyard in Chile: Pinot Noir and Chardonnay. It is May.", "Fall"),
+        ("a wheat field; it was June", "Summer"),
+    ],
+)
+def test_it_s_march_names_the_month(prompt: str, season: str) -> None:
+    assert {f.season for f in recipe(prompt).fields} == {season}
+
+
+def test_words_about_the_fruit_do_not_end_a_listing_of_members() -> None:
+    scene = recipe(
+        "Picture of the two apple blocks by the packhouse in October: Granny on the north side, "
+        "fruit bright green and ready to pick, and Fuji to the south of it."
+    )
+    assert [f.variety for f in scene.fields] == ["Granny Smith", "Fuji"]
+    granny, fuji = (f.id for f in scene.fields)
+    assert ("south_of", fuji, (granny,)) in _relations(scene)

@@ -100,6 +100,13 @@ def assign_roles(items: Sequence[Item]) -> None:
             and ("scenery" in item.data or item.role == "non_agricultural")
         ):
             previous.role = "filler"  # "a sprayer is working in the potatoes": no count
+        if (
+            previous is not None
+            and previous.role == "health"
+            and item.role == "filler"
+            and "scenery" in item.data
+        ):
+            previous.role = "filler"  # "a rusty gate": the gate's, not the plants' health
         previous = item
     _ripening_fruit(items)
 

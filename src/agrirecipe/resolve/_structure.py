@@ -367,13 +367,28 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
                 enumerating = listed
                 continue
         placement = link is not None and link.role == "trailer" and not clause.items
-        if not placement:  # "imperator on the north side and danvers ..." goes on listing
+        describing = parent is not None and _describes_plants(clause.mentions)
+        if describing and previous is not None:
+            clause.refined_parent = previous.refined_parent  # the listing goes on after it
+            clause.refinement = previous.refinement
+        if not placement and not describing:
+            # "imperator on the north side and danvers ..." goes on listing
             enumerating = False
         top.extend(clause.mentions)
-        if clause.mentions:
+        if clause.mentions and not describing:
+            # "two apple blocks: Granny ..., fruit bright green ..., and Fuji ...": words
+            # about the fruit or plants do not end the listing of the members
             last = clause.mentions[-1]
             parent = last if (last.count or 1) >= 2 else None
     return top
+
+
+def _describes_plants(mentions: Sequence[Mention]) -> bool:
+    """One uncounted mention named only by a word for plants or their parts ("fruit")."""
+    if len(mentions) != 1 or mentions[0].count is not None:
+        return False
+    heads = mentions[0].heads
+    return bool(heads) and all(h.norm in _descriptive_words() for h in heads)
 
 
 #: Pronouns after a relation word that point back at the member before.
