@@ -440,3 +440,17 @@ def test_words_about_the_fruit_do_not_end_a_listing_of_members() -> None:
     assert [f.variety for f in scene.fields] == ["Granny Smith", "Fuji"]
     granny, fuji = (f.id for f in scene.fields)
     assert ("south_of", fuji, (granny,)) in _relations(scene)
+
+
+@pytest.mark.parametrize(
+    ("prompt", "stage"),
+    [
+        (
+            "we only grow lettuse on the farm, about 0.8 ha, and its starting to bolt",
+            "Reproductive",
+        ),
+        ("in the photo the pasta wheat has full ears turning gold", "Maturation"),
+    ],
+)
+def test_more_visual_cues_of_the_stage(prompt: str, stage: str) -> None:
+    assert recipe(prompt).fields[0].stage == stage
