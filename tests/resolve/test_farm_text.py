@@ -454,3 +454,16 @@ def test_words_about_the_fruit_do_not_end_a_listing_of_members() -> None:
 )
 def test_more_visual_cues_of_the_stage(prompt: str, stage: str) -> None:
     assert recipe(prompt).fields[0].stage == stage
+
+
+def test_a_sized_plot_said_after_its_crop_is_that_crop_s_plot() -> None:
+    scene = recipe(
+        "All we have planted on our allotment farm is chillies, a 15 by 30 m patch, and some "
+        "of the leaves have dark spots."
+    )
+    assert len(scene.fields) == 1
+    chillies = scene.fields[0]
+    assert chillies.crop == "Pepper" and chillies.geometry.size_m == (15.0, 30.0)
+    two = recipe("carrots, a 20 by 40 m field, next to a potato field")
+    assert [(f.crop, f.geometry.size_m) for f in two.fields][0] == ("Carrot", (20.0, 40.0))
+    assert len(two.fields) == 2

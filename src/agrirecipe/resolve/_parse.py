@@ -78,6 +78,7 @@ from agrirecipe.resolve._structure import (
     apply_refinements,
     dissolve_plant_parts,
     drop_negated,
+    merge_appositive_plots,
     merge_coreferences,
     promote_weak_varieties,
     raise_conflicts,
@@ -186,6 +187,7 @@ class PromptReader(FieldReading):
         mentions = apply_refinements(clauses, self.crop_categories)
         mentions = share_counted_fields(mentions)
         mentions = merge_coreferences(clauses, mentions, builder)
+        mentions = merge_appositive_plots(clauses, mentions)
         apply_each_side(clauses)
         scene_items = self._attach_loose(clauses, mentions)
         for mention in mentions:

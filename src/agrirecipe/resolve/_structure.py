@@ -944,3 +944,34 @@ def _is_summary(mention: Mention) -> bool:
         and all(h.role == "plot" for h in mention.heads)
         and (mention.category is None or all(h.data["value"]["narrows"] for h in mention.heads))
     )
+
+
+def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
+    """'chillies, a 15 by 30 m patch, and ...': a plot said right after a crop, between
+    commas and naming no crop of its own, is that crop's plot, not another field."""
+    kept: list[Mention] = []
+    for mention in mentions:
+        clause = clauses[mention.clause] if mention.clause < len(clauses) else None
+        previous = kept[-1] if kept else None
+        if (
+            clause is not None
+            and previous is not None
+            and previous.has_crop
+            and (previous.count or 1) == 1
+            and not mention.has_crop
+            and mention.plot is not None
+            and (mention.count or 1) == 1
+            and not mention.refinements
+            and clause.link is not None
+            and clause.link.norm == ","
+            and previous.clause == mention.clause - 1
+            and all(i.role in ("number", "size", "plot", "filler") for i in clause.items)
+            and any(i.role == "size" for i in clause.items)
+        ):
+            previous.items.extend(i for i in mention.items if i.role == "size")
+            if previous.plot is None:
+                previous.plot = mention.plot
+            clause.mentions = [m for m in clause.mentions if m is not mention]
+            continue
+        kept.append(mention)
+    return kept
