@@ -467,3 +467,16 @@ def test_a_sized_plot_said_after_its_crop_is_that_crop_s_plot() -> None:
     two = recipe("carrots, a 20 by 40 m field, next to a potato field")
     assert [(f.crop, f.geometry.size_m) for f in two.fields][0] == ("Carrot", (20.0, 40.0))
     assert len(two.fields) == 2
+
+
+def test_the_south_one_places_a_member_and_a_pathogen_genus_is_a_disease() -> None:
+    scene = recipe(
+        "Two carrot fields: Chantenay on the south one, and Imperator north of it, which has "
+        "Alternaria on the leaves."
+    )
+    assert [(f.variety, f.health) for f in scene.fields] == [
+        ("Chantenay", "Healthy"),
+        ("Imperator", "Ill"),
+    ]
+    chantenay, imperator = (f.id for f in scene.fields)
+    assert ("north_of", imperator, (chantenay,)) in _relations(scene)
