@@ -480,3 +480,14 @@ def test_the_south_one_places_a_member_and_a_pathogen_genus_is_a_disease() -> No
     ]
     chantenay, imperator = (f.id for f in scene.fields)
     assert ("north_of", imperator, (chantenay,)) in _relations(scene)
+
+
+def test_between_the_two_groves_points_back_at_the_groves() -> None:
+    scene = recipe(
+        "Wide shot from the footpath: Washington Navel on one side, blood oranges on the other, "
+        "and a strip of Jalapeños planted between the two groves. Irrigation pipes everywhere "
+        "and the sierra behind."
+    )
+    assert [f.crop for f in scene.fields] == ["Orange", "Orange", "Pepper"]
+    navel, blood, jalapenos = (f.id for f in scene.fields)
+    assert ("between", jalapenos, (navel, blood)) in _relations(scene)

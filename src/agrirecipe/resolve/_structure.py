@@ -875,6 +875,12 @@ def merge_coreferences(
             run.append(earlier)
         if member is not None:
             run = [member]
+        if summary and is_definite and len(run) != mention.count:
+            # "a strip of Jalapeños between the two groves": the two earlier fields that
+            # are groves, whatever was named in between
+            fitting = [m for m in reversed(kept) if _compatible(builder, m, mention)]
+            if len(fitting) == mention.count:
+                run = fitting
         if summary and len(run) != mention.count:
             kept.append(mention)
             continue
@@ -910,6 +916,10 @@ def merge_coreferences(
             # The field stands where it was named again, so relation words around
             # this clause ("the Gala north of the Fuji") link the right fields.
             clause.mentions[clause.mentions.index(mention)] = run[0]
+        elif summary and is_definite and clause.link is not None and clause.link.role == "between":
+            # "between the two groves": both fields stand there, in the order named
+            at = clause.mentions.index(mention)
+            clause.mentions[at : at + 1] = sorted(run, key=lambda m: m.clause)
         else:
             clause.mentions.remove(mention)
     return kept
