@@ -465,7 +465,8 @@ def test_a_sized_plot_said_after_its_crop_is_that_crop_s_plot() -> None:
     chillies = scene.fields[0]
     assert chillies.crop == "Pepper" and chillies.geometry.size_m == (15.0, 30.0)
     two = recipe("carrots, a 20 by 40 m field, next to a potato field")
-    assert [(f.crop, f.geometry.size_m) for f in two.fields][0] == ("Carrot", (20.0, 40.0))
+    carrots = two.fields[0]
+    assert (carrots.crop, carrots.geometry.size_m) == ("Carrot", (20.0, 40.0))
     assert len(two.fields) == 2
 
 
@@ -491,3 +492,12 @@ def test_between_the_two_groves_points_back_at_the_groves() -> None:
     assert [f.crop for f in scene.fields] == ["Orange", "Orange", "Pepper"]
     navel, blood, jalapenos = (f.id for f in scene.fields)
     assert ("between", jalapenos, (navel, blood)) in _relations(scene)
+
+
+def test_two_fields_with_a_third_between_them_are_not_next_to_each_other() -> None:
+    scene = recipe(
+        "Out by the old well there are San Marzano and beef tomatoes, with a plot of cherry "
+        "tomatoes in between them."
+    )
+    marzano, beef, cherry = (f.id for f in scene.fields)
+    assert _relations(scene) == {("between", cherry, (marzano, beef))}

@@ -133,6 +133,14 @@ def read_relations(
     relations += _across_landmarks(landmarks, members, trace)
     related = {frozenset((r.subject, *r.objects)) for r in relations if len(r.objects) == 1}
     relations += _then_chain(clauses, members, related, trace)
+    # "San Marzano and beef tomatoes, with cherry tomatoes in between them": two fields
+    # with a third between them are not next to each other
+    flanking = {frozenset(r.objects) for r in relations if r.kind == "between"}
+    relations = [
+        r
+        for r in relations
+        if not (r.kind == "next_to" and frozenset((r.subject, *r.objects)) in flanking)
+    ]
     unique: dict[tuple[object, ...], RelationIntent] = {}
     for relation in relations:  # "in a line, in this order": one row
         unique.setdefault((relation.kind, relation.subject, relation.objects), relation)
