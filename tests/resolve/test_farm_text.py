@@ -501,3 +501,14 @@ def test_two_fields_with_a_third_between_them_are_not_next_to_each_other() -> No
     )
     marzano, beef, cherry = (f.id for f in scene.fields)
     assert _relations(scene) == {("between", cherry, (marzano, beef))}
+
+
+def test_plants_that_have_only_just_gone_in_are_young() -> None:
+    scene = recipe(
+        "In May the Sonata strawberries are flowering, and next to them the Albion plants have "
+        "only just gone in."
+    )
+    assert [(f.variety, f.stage) for f in scene.fields] == [
+        ("Sonata", "Reproductive"),
+        ("Albion", "Vegetative"),
+    ]
