@@ -84,7 +84,12 @@ def register(subparsers: Any) -> None:
     )
     run = parser.add_argument_group("execution")
     run.add_argument("--executor", choices=("local", "ray"), default="local", help="default local")
-    run.add_argument("--workers", type=int, default=None, help="local processes (default: cores)")
+    run.add_argument(
+        "--workers",
+        type=int,
+        default=None,
+        help="local processes (default: half the cores; each render uses cores/workers threads)",
+    )
     run.add_argument("--ray-address", default=None, help="an existing Ray cluster (ray://...)")
     run.add_argument("--timeout", type=float, default=None, help="seconds per variant")
     run.add_argument("--seed", type=int, default=0, help="dataset seed (default 0)")
