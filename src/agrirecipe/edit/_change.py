@@ -26,7 +26,6 @@ if TYPE_CHECKING:
 
 __all__ = ["change_fields"]
 
-_AGRONOMY_PLAN = ("row_spacing_m", "in_row_spacing_m", "rows_per_bed", "bed_row_spacing_m")
 # Stated row values that decide the field's size (the others keep it).
 _SIZING = frozenset({"rows", "beds", "row_length_m", "plant_count", "plants_per_row"})
 
@@ -143,9 +142,12 @@ def _changed_field(
         state("health")
     geometry = spec.geometry
     update: dict[str, float | int] | None = None
-    if stated_geometry := set(GEOMETRY_ATTRIBUTES) & set(spec.stated):
-        del stated_geometry
-        update = {name: getattr(spec.agronomy, name) for name in _AGRONOMY_PLAN}
+    if set(GEOMETRY_ATTRIBUTES) & set(spec.stated):  # spacings said before stay as said
+        kept = spec.agronomy
+        update = {
+            name: getattr(kept, name)
+            for name in ("row_spacing_m", "in_row_spacing_m", "rows_per_bed", "bed_row_spacing_m")
+        }
     notes: list[str] = []
     if wish.rows is not None:
         values = wish.rows.stated()
@@ -161,12 +163,7 @@ def _changed_field(
         )
         for name in plan.stated:
             state(name)
-        update = {
-            "row_spacing_m": plan.row_spacing_m,
-            "in_row_spacing_m": plan.in_row_spacing_m,
-            "rows_per_bed": plan.rows_per_bed,
-            "bed_row_spacing_m": plan.bed_row_spacing_m,
-        }
+        update = plan.agronomy_update()
         geometry = geometry.model_copy(
             update={
                 "size_m": plan.size_m,

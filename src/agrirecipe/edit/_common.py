@@ -3,6 +3,7 @@ fields named, and validating the edited recipe."""
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -17,7 +18,14 @@ if TYPE_CHECKING:
     from agrirecipe.knowledge import KnowledgeBase
     from agrirecipe.resolve._intent import FieldIntent, ResolveContext, SceneIntent
 
-__all__ = ["describe", "edit_context", "read_words", "targets_of", "validated"]
+__all__ = [
+    "describe",
+    "edit_context",
+    "read_words",
+    "targets_of",
+    "validated",
+    "warnings_without",
+]
 
 
 def edit_context(
@@ -104,3 +112,9 @@ def describe(field: FieldIntent) -> str:
         name = f"{field.variety} {field.crop}" if field.variety else field.crop
         return f"{name.lower()} {noun}"
     return f"{field.category.lower()} {noun}" if field.category else noun
+
+
+def warnings_without(recipe: SceneRecipe, field_ids: Iterable[str]) -> tuple[str, ...]:
+    """The recipe's warnings but those about the given fields ("<id>: ...")."""
+    prefixes = tuple(f"{field_id}:" for field_id in field_ids)
+    return tuple(w for w in recipe.warnings if not w.startswith(prefixes))

@@ -16,7 +16,13 @@ from typing import TYPE_CHECKING
 
 from agrirecipe._errors import PromptError
 from agrirecipe.edit._change import change_fields
-from agrirecipe.edit._common import edit_context, read_words, targets_of, validated
+from agrirecipe.edit._common import (
+    edit_context,
+    read_words,
+    targets_of,
+    validated,
+    warnings_without,
+)
 from agrirecipe.edit._diff import diff_recipes
 from agrirecipe.edit._grow import add_fields, replace_fields
 from agrirecipe.edit._words import Instruction, fields_list, read_instruction
@@ -121,7 +127,7 @@ def remove_fields(
     relations = tuple(
         r for r in recipe.relations if r.subject not in gone and not gone & set(r.objects)
     )
-    warnings = tuple(w for w in recipe.warnings if not any(w.startswith(f"{i}:") for i in gone))
+    warnings = warnings_without(recipe, gone)
     return validated(
         recipe,
         {"fields": fields, "relations": relations, "warnings": warnings},

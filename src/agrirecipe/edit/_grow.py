@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING, Any
 
 from agrirecipe._errors import PromptError
 from agrirecipe.edit._change import change_fields
-from agrirecipe.edit._common import describe, read_words, targets_of, validated
+from agrirecipe.edit._common import describe, read_words, targets_of, validated, warnings_without
 from agrirecipe.edit._place import place_block
 from agrirecipe.edit._words import Instruction, fields_list, matching_fields, unmatched
 from agrirecipe.enrich import build_field
@@ -123,7 +123,7 @@ def replace_fields(
         )
         for r in recipe.relations
     )
-    warnings = tuple(w for w in recipe.warnings if not any(w.startswith(f"{i}:") for i in renamed))
+    warnings = warnings_without(recipe, renamed)
     return validated(
         recipe, {"fields": fields, "relations": relations, "warnings": warnings}, context
     )

@@ -27,13 +27,13 @@ def _words() -> dict[str, Any]:
     return data
 
 
-def _phrase_pattern(phrases: Sequence[str]) -> re.Pattern[str]:
-    ordered = sorted(phrases, key=len, reverse=True)
-    return re.compile(r"^(?:" + "|".join(re.escape(p) for p in ordered) + r")\b[\s,:]*", re.I)
-
-
 def _alternatives(phrases: Sequence[str]) -> str:
+    """A regex alternation of ``phrases``, longest first."""
     return "|".join(re.escape(p) for p in sorted(phrases, key=len, reverse=True))
+
+
+def _phrase_pattern(phrases: Sequence[str]) -> re.Pattern[str]:
+    return re.compile(rf"^(?:{_alternatives(phrases)})\b[\s,:]*", re.I)
 
 
 @dataclass(frozen=True, slots=True)

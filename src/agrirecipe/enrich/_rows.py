@@ -60,6 +60,15 @@ class RowPlan:
     stated: list[AttributeName] = field(default_factory=list)
     warnings: list[str] = field(default_factory=list)
 
+    def agronomy_update(self) -> dict[str, float | int]:
+        """The agronomy values the plan replaces (``build_field(agronomy_update=...)``)."""
+        return {
+            "row_spacing_m": self.row_spacing_m,
+            "in_row_spacing_m": self.in_row_spacing_m,
+            "rows_per_bed": self.rows_per_bed,
+            "bed_row_spacing_m": self.bed_row_spacing_m,
+        }
+
 
 def _error(label: str, message: str, hint: str) -> PromptError:
     return PromptError(f"{label}: {message}", stage="enrich", hint=hint)

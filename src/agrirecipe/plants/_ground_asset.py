@@ -19,6 +19,7 @@ from agrirecipe._files import write_atomic
 from agrirecipe.plants._gltf import glb_bytes
 from agrirecipe.plants._library import GENERATOR
 from agrirecipe.plants._mesh import Material, PlantMesh, Primitive
+from agrirecipe.plants._scene import unchanged
 from agrirecipe.recipe import FieldSpec, SceneRecipe
 
 __all__ = ["GROUND_FOLDER", "ground_file", "ground_mesh", "has_relief", "write_ground_assets"]
@@ -99,11 +100,7 @@ def write_ground_assets(recipe: SceneRecipe, directory: str | Path) -> list[Path
             extras={"field_id": spec.id, "frame": "field: origin at its south-west corner"},
         )
         target = folder / ground_file(spec.id)
-        try:
-            unchanged = target.read_bytes() == data
-        except OSError:
-            unchanged = False
-        if not unchanged:
+        if not unchanged(target, data):
             write_atomic(target, data)
         written.append(target)
     return written

@@ -46,6 +46,7 @@ __all__ = [
     "field_assets",
     "plant_variant",
     "plant_variants",
+    "unchanged",
     "write_scene_assets",
 ]
 
@@ -145,7 +146,8 @@ def _mesh(knowledge: KnowledgeBase, key: AssetKey, variant: int) -> tuple[PlantM
     return mesh, data
 
 
-def _unchanged(path: Path, data: bytes) -> bool:
+def unchanged(path: Path, data: bytes) -> bool:
+    """Whether ``path`` already holds exactly ``data`` (then it is not rewritten)."""
     try:
         return path.stat().st_size == len(data) and path.read_bytes() == data
     except OSError:
@@ -176,7 +178,7 @@ def write_scene_assets(
         for variant, relative in enumerate(asset.files):
             mesh, data = _mesh(kb, key, variant)
             target = folder / relative
-            if not _unchanged(target, data):
+            if not unchanged(target, data):
                 write_atomic(target, data)
             files.append(target)
             if usd:
@@ -197,7 +199,7 @@ def write_scene_assets(
     }
     listing = folder / ASSETS_FOLDER / "scene_assets.json"
     text = json.dumps(index, indent=1, sort_keys=True) + "\n"
-    if not _unchanged(listing, text.encode()):
+    if not unchanged(listing, text.encode()):
         write_atomic(listing, text)
     return files
 

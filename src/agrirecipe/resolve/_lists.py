@@ -22,8 +22,14 @@ _NUMBER = r"\d+(?:[.,]\d+)?"
 
 
 @functools.cache
-def _pattern() -> re.Pattern[str]:
+def _data() -> dict[str, Any]:
     data: dict[str, Any] = yaml.safe_load((DATA_DIR / "value_lists.yaml").read_text("utf-8"))
+    return data
+
+
+@functools.cache
+def _pattern() -> re.Pattern[str]:
+    data = _data()
     leads = "|".join(
         re.escape(str(w)) for w in sorted(data["leads"], key=lambda w: len(str(w)), reverse=True)
     )
@@ -39,8 +45,7 @@ def _pattern() -> re.Pattern[str]:
 
 @functools.cache
 def _leads() -> dict[str, str]:
-    data: dict[str, Any] = yaml.safe_load((DATA_DIR / "value_lists.yaml").read_text("utf-8"))
-    return {str(k).lower(): str(v) for k, v in data["leads"].items()}
+    return {str(k).lower(): str(v) for k, v in _data()["leads"].items()}
 
 
 def spread_value_lists(text: str) -> str:

@@ -652,16 +652,7 @@ def _enrich(
         noun=noun,
         notes=notes,
         rotation_deg=rows.rotation_deg if rows is not None else 0.0,
-        agronomy_update=(
-            {
-                "row_spacing_m": rows.row_spacing_m,
-                "in_row_spacing_m": rows.in_row_spacing_m,
-                "rows_per_bed": rows.rows_per_bed,
-                "bed_row_spacing_m": rows.bed_row_spacing_m,
-            }
-            if rows is not None
-            else None
-        ),
+        agronomy_update=rows.agronomy_update() if rows is not None else None,
         warnings=tuple(rows.warnings) if rows is not None else (),
     )
 

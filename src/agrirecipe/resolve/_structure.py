@@ -19,6 +19,7 @@ from typing import Any
 
 from agrirecipe._errors import PromptError
 from agrirecipe.resolve._decompose import Clause, Mention, MentionBuilder
+from agrirecipe.resolve._geometry import geometry_nouns
 from agrirecipe.resolve._lexicon import Item, vocabulary
 from agrirecipe.resolve._relations import listing
 
@@ -400,8 +401,6 @@ _EACH = frozenset({"each", "all", "both"})
 
 def _member_detail(item: Item) -> bool:
     """A word of a listed member's details: "ridges 100 m long", "(75 cm, 2 rows per ridge)"."""
-    from agrirecipe.resolve._geometry import geometry_nouns
-
     return item.role in _MEMBER_DETAIL_ROLES or (
         item.role in ("unknown", "length_unit") and item.norm in (*geometry_nouns(), "cm", "m")
     )

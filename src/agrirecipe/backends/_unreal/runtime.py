@@ -188,18 +188,27 @@ def import_plant_meshes(
     centimetres and Z up) into the catalogue's content folder and reused on the
     next run. Returns None, with a warning, when a file is missing or fails.
     """
-    folder = assets_root(root)
     loaded = []
     for relative, name in zip(plan["files"], plan["names"]):  # noqa: B905 - Python 3.9
-        object_path = f"{plan['destination_path']}/{name}.{name}"
-        if object_path not in meshes:
-            meshes[object_path] = load_project_mesh(object_path, meshes) or import_glb(
-                str(Path(folder).joinpath(*relative.split("/"))), plan["destination_path"], name
-            )
-        if meshes[object_path] is None:
+        mesh = project_or_imported_mesh(relative, plan["destination_path"], name, root, meshes)
+        if mesh is None:
             return None
-        loaded.append(meshes[object_path])
+        loaded.append(mesh)
     return loaded
+
+
+def project_or_imported_mesh(
+    relative: str, destination_path: str, name: str, root: "str | None", meshes: dict[str, Any]
+) -> Any:
+    """The project's static mesh ``destination_path/name``, else the one imported (once)
+    from ``relative`` under the folder holding ``assets/``; None when neither exists."""
+    object_path = f"{destination_path}/{name}.{name}"
+    if object_path not in meshes:
+        filename = str(Path(assets_root(root)).joinpath(*relative.split("/")))
+        meshes[object_path] = load_project_mesh(object_path, meshes) or import_glb(
+            filename, destination_path, name
+        )
+    return meshes[object_path]
 
 
 def import_glb(filename: str, destination_path: str, name: str) -> Any:
@@ -314,13 +323,9 @@ def build_ground_mesh(
     plan = ground.get("mesh")
     if plan is None:
         return False
-    object_path = f"{plan['destination_path']}/{plan['name']}.{plan['name']}"
-    if object_path not in meshes or meshes[object_path] is None:
-        filename = str(Path(assets_root(engine["assets_root"])).joinpath(*plan["file"].split("/")))
-        meshes[object_path] = load_project_mesh(object_path, meshes) or import_glb(
-            filename, plan["destination_path"], plan["name"]
-        )
-    mesh = meshes[object_path]
+    mesh = project_or_imported_mesh(
+        plan["file"], plan["destination_path"], plan["name"], engine["assets_root"], meshes
+    )
     if mesh is None:
         # the plants' warning already says where assets/ is expected
         unreal.log(f"agrirecipe: no ground mesh {plan['file']}; a flat plane is used")
