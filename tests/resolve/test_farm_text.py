@@ -512,3 +512,41 @@ def test_plants_that_have_only_just_gone_in_are_young() -> None:
         ("Sonata", "Reproductive"),
         ("Albion", "Vegetative"),
     ]
+
+
+def test_a_definite_plural_heading_is_not_a_count_of_fields() -> None:
+    scene = recipe(
+        "Quick rundown of the plots. Plot 1: Conference pears, in full blossom, roughly "
+        "1.2 ha. Plot 2: Elsanta strawberries, just planted. Plot 3: Savoy cabbage."
+    )
+    assert [(f.crop, f.variety) for f in scene.fields] == [
+        ("Pear", "Conference"),
+        ("Strawberry", "Elsanta"),
+        ("Cabbage", "Savoy"),
+    ]
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "My allotment in one picture: a strawberry bed with runners everywhere, a patch of "
+        "sweetcorn. My neighbour's shed in the corner.",
+        "My plot: a strawberry bed and a patch of sweetcorn.",
+    ],
+)
+def test_a_plot_heading_a_list_of_fields_is_not_another_field(prompt: str) -> None:
+    assert sorted(f.crop for f in recipe(prompt).fields) == ["Maize", "Strawberry"]
+
+
+def test_a_plot_before_a_colon_with_one_crop_is_that_crop_s_plot() -> None:
+    assert [f.crop for f in recipe("a plot: carrots").fields] == ["Carrot"]
+
+
+def test_a_member_s_own_cue_is_not_overwritten_by_the_next_member_s_stage() -> None:
+    scene = recipe(
+        "Inside the polytunnel you can see two crops: cherry tomatoes climbing their strings "
+        "with the trusses already red, and Padron peppers along the other side, still only "
+        "flowering."
+    )
+    stages = {f.crop: f.stage for f in scene.fields}
+    assert stages == {"Tomato": "Maturation", "Pepper": "Reproductive"}

@@ -77,6 +77,7 @@ from agrirecipe.resolve._structure import (
     apply_plural_counts,
     apply_refinements,
     dissolve_plant_parts,
+    drop_list_headings,
     drop_negated,
     merge_appositive_plots,
     merge_coreferences,
@@ -188,6 +189,7 @@ class PromptReader(FieldReading):
         mentions = share_counted_fields(mentions)
         mentions = merge_coreferences(clauses, mentions, builder)
         mentions = merge_appositive_plots(clauses, mentions)
+        mentions = drop_list_headings(clauses, mentions)
         apply_each_side(clauses)
         scene_items = self._attach_loose(clauses, mentions)
         for mention in mentions:

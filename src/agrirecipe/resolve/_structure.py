@@ -126,6 +126,8 @@ def apply_plural_counts(clauses: Sequence[Clause], plural_count: int) -> None:
             first = _first_word(mention)
             if first is not None and first.norm in definite:
                 continue
+            if _definite_before_head(clause, mention):
+                continue  # "a quick rundown of the plots. Plot 1: ..."
             link = clause.link if index == 0 else None
             if link is not None and link.role == "separator":
                 continue
@@ -237,8 +239,18 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             and clause.link.norm not in (".", "!", "?")  # a new sentence ends the listing
             and (
                 all(_member_detail(i) for i in clause.items)
-                # "Riesling north of it, 25 rows at 2 m": placed against the one before
-                or (clause.link.role == "relation" and clause.items[0].norm in _POINTERS)
+                # "Riesling north of it, 25 rows at 2 m": placed against the one before;
+                # "Padron peppers along the other side, still flowering": likewise
+                or (
+                    clause.link.role == "relation"
+                    and (
+                        clause.items[0].norm in _POINTERS
+                        or (
+                            clause.items[0].role == "reference"
+                            and all(i.role in ("reference", "filler") for i in clause.items)
+                        )
+                    )
+                )
             )
         ):
             # "carrots (75 cm ridges, 2 rows per ridge), onions ...": the listed member's
@@ -571,8 +583,16 @@ def share_trailing_attributes(clauses: Sequence[Clause]) -> None:
             continue
         last_head = max(h.start for h in second.heads)
         trailing = [i for i in second.items if i.role in _SHARED_ROLES and i.start > last_head]
-        own = {i.role for i in first.items}
-        first.items.extend(i for i in trailing if i.role not in own)
+        own = {_attribute(i) for i in first.items}
+        # "cherry tomatoes with the trusses already red, and peppers, still only
+        # flowering": the tomatoes' own cue keeps their stage
+        first.items.extend(i for i in trailing if _attribute(i) not in own)
+
+
+def _attribute(item: Item) -> str:
+    """The attribute an item states: its role, or for a visual cue the cue's attribute."""
+    cue = item.data.get("cue") if item.role == "cue" else None
+    return str(cue.attribute) if cue is not None else item.role
 
 
 def _bare(clause: Clause, mention: Mention) -> bool:
@@ -981,6 +1001,34 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
             if previous.plot is None:
                 previous.plot = mention.plot
             clause.mentions = [m for m in clause.mentions if m is not mention]
+            continue
+        kept.append(mention)
+    return kept
+
+
+def drop_list_headings(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
+    """ "My allotment in one picture: a strawberry bed, a patch of sweetcorn": one plot
+    naming no crop, ending its clause before a colon that lists two or more fields of
+    named crops, is the list's heading, not another field. Return the fields left."""
+    kept: list[Mention] = []
+    for position, mention in enumerate(mentions):
+        following = clauses[mention.clause + 1] if mention.clause + 1 < len(clauses) else None
+        later = [m for m in mentions[position + 1 :] if m.has_crop]
+        if (
+            following is not None
+            and following.link is not None
+            and following.link.norm == ":"
+            and clauses[mention.clause].mentions[-1:] == [mention]
+            and mention.plot is not None
+            and not mention.has_crop
+            and mention.category is None
+            and (mention.count or 1) == 1
+            and not mention.refinements
+            and mention.rest is None
+            and len(later) >= 2
+            and later[0].clause == mention.clause + 1
+        ):
+            clauses[mention.clause].mentions = []
             continue
         kept.append(mention)
     return kept
