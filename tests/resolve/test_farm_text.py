@@ -550,3 +550,88 @@ def test_a_member_s_own_cue_is_not_overwritten_by_the_next_member_s_stage() -> N
     )
     stages = {f.crop: f.stage for f in scene.fields}
     assert stages == {"Tomato": "Maturation", "Pepper": "Reproductive"}
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "Took this on 20 April in the Jonagold block: every tree is white with blossom.",
+        "Jonagold block, April 20, every tree white with blossom",
+    ],
+)
+def test_a_day_of_the_month_is_a_date_not_a_count(prompt: str) -> None:
+    scene = recipe(prompt)
+    assert [(f.variety, f.season) for f in scene.fields] == [("Jonagold", "Spring")]
+
+
+def test_a_count_after_a_month_still_counts_fields() -> None:
+    assert len(recipe("in June 2 fields of wheat").fields) == 2
+
+
+def test_a_capitalised_month_inside_a_sentence_is_the_month() -> None:
+    scene = recipe("peppers and maize, still tiny. Cloudy May morning.")
+    assert {f.season for f in scene.fields} == {"Spring"}
+    assert {f.stage for f in scene.fields} == {"Vegetative"}
+    assert recipe("May I have a ripe wheat field").fields[0].season != "Spring"
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "Durondeau pears, overcast, a ladder leaning against one of the pear trees.",
+        "Conference pears and Kordia cherry trees. A tractor is working one of the pear alleys.",
+    ],
+)
+def test_one_of_the_named_crop_s_plants_is_not_another_field(prompt: str) -> None:
+    assert sorted(f.crop for f in recipe(prompt).fields) in (["Pear"], ["Cherry", "Pear"])
+    assert len([f for f in recipe(prompt).fields if f.crop == "Pear"]) == 1
+
+
+def test_one_of_a_crop_after_a_plural_still_adds_a_field() -> None:
+    assert len(recipe("two apple orchards and one of cherries").fields) == 3
+
+
+def test_fruit_of_a_crop_already_named_describes_it() -> None:
+    scene = recipe(
+        "Dawn in the Navel block, January: the trees are dark green and full of orange fruit "
+        "ready for picking."
+    )
+    assert [(f.variety, f.stage) for f in scene.fields] == [("Navel", "Maturation")]
+
+
+def test_fruit_after_a_with_list_describes_the_field_before() -> None:
+    scene = recipe(
+        "Yellow Delicious trees with scab spots on the leaves and corky fruit, and next to "
+        "them Durondeau pears."
+    )
+    assert [f.crop for f in scene.fields] == ["Apple", "Pear"]
+    assert recipe("apples and fruit").fields[1].crop != "Apple"  # a list member stays
+
+
+def test_a_relative_clause_does_not_end_a_listing() -> None:
+    scene = recipe(
+        "Two blocks side by side, taken late August: Conference pears heavy with fruit that "
+        "is just starting to turn yellow, and Kordia cherry trees that were picked weeks ago."
+    )
+    assert [(f.crop, f.variety) for f in scene.fields] == [
+        ("Pear", "Conference"),
+        ("Cherry", "Kordia"),
+    ]
+
+
+@pytest.mark.parametrize(
+    ("prompt", "key", "value"),
+    [
+        (
+            "Granny Smith, 40 rows, rows 3.5 m apart with a tree about every metre",
+            "in_row_spacing_m",
+            1.0,
+        ),
+        ("Cayenne peppers, plants roughly 18 inches apart", "in_row_spacing_m", 0.4572),
+        ("the wheat. The field has a headland about 6 m wide all round.", "headland_m", 6.0),
+    ],
+)
+def test_lengths_said_roughly_are_read(prompt: str, key: str, value: float) -> None:
+    field = recipe(prompt).fields[0]
+    stated = field.geometry.headland_m if key == "headland_m" else field.agronomy.in_row_spacing_m
+    assert stated == pytest.approx(value)

@@ -101,11 +101,13 @@ def _tables() -> _Tables:
     directions: dict[str, float] = {str(k): float(v) for k, v in words["directions"].items()}
     number = rf"(?P<n>\d+(?:\.\d+)?|{_alternatives(number_words)})"
     number2 = number.replace("?P<n>", "?P<n2>")
+    # "about 6 m", "roughly 18 inches": a length said roughly is still that length
+    about = rf"(?:(?:{_alternatives(words['approximately'])}) )?"
     fill = {
         "{N2}": number2,
-        "{LEN2}": rf"{number2} ?(?P<unit2>{_alternatives(units)})(?! 2\b)",
+        "{LEN2}": rf"{about}{number2} ?(?P<unit2>{_alternatives(units)})(?! 2\b)",
         "{N}": number,
-        "{LEN}": rf"{number} ?(?P<unit>{_alternatives(units)})(?! 2\b)",
+        "{LEN}": rf"{about}{number} ?(?P<unit>{_alternatives(units)})(?! 2\b)",
         "{ROWS}": _alternatives(words["rows"]),
         "{ROWMOD}": _alternatives(words["row_modifiers"]),
         "{PLANTS}": _alternatives(words["plants"]),

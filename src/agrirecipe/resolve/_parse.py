@@ -623,6 +623,25 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
         if item.role == "number" and following.role == "length_unit":
             item.role = "filler"
             item.data["measure"] = True
+    # "on 20 April", "April 3rd": a day of the month is a date, not a count of fields
+    words = [i for i in items if i.role != "separator" or i.norm not in (",",)]
+    for index, item in enumerate(words):
+        if item.role != "number" or not _day_of_month(item):
+            continue
+        before = words[index - 1] if index else None
+        after = words[index + 1] if index + 1 < len(words) else None
+        if (after is not None and after.role == "month") or (
+            before is not None
+            and before.role == "month"
+            and (after is None or after.role not in ("plot", "head", "weak_variety", "category"))
+        ):
+            item.role = "filler"
+            item.data["date"] = True
+
+
+def _day_of_month(item: Item) -> bool:
+    value = item.data.get("value")
+    return isinstance(value, float) and value.is_integer() and 1 <= value <= 31
 
 
 def _shared_by_all(clauses: Sequence[Clause], position: int) -> bool:

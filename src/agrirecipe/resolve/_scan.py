@@ -212,6 +212,7 @@ def _role(item: Item, previous: Item | None, cues: set[str], *, alone: bool = Fa
             and sense.weak
             and not alone
             and (previous is None or previous.norm.split()[-1] not in cues)
+            and not _named_month(item, previous)
         ):
             continue
         if kind == "relation" and sense.value == "between":
@@ -233,6 +234,16 @@ def _role(item: Item, previous: Item | None, cues: set[str], *, alone: bool = Fa
         item.data["value"] = sense.value
         return {"relation_trailer": "trailer"}.get(kind, kind)
     return "filler"
+
+
+def _named_month(item: Item, previous: Item | None) -> bool:
+    """ "Cloudy May morning", "on 20 May": a capitalised month word inside a sentence,
+    or one right after a day number, is the month."""
+    if previous is None or previous.norm in (".", "!", "?", ":", ";"):
+        return False
+    if previous.role == "number" and previous.raw.isdigit():
+        return True
+    return item.raw[:1].isupper() and not item.raw.isupper()
 
 
 def _amount(item: Item) -> float | None:

@@ -239,6 +239,8 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             and clause.link.norm not in (".", "!", "?")  # a new sentence ends the listing
             and (
                 all(_member_detail(i) for i in clause.items)
+                # "Conference pears heavy with fruit that is just starting to turn yellow"
+                or clause.link.norm in _RELATIVE
                 # "Riesling north of it, 25 rows at 2 m": placed against the one before;
                 # "Padron peppers along the other side, still flowering": likewise
                 or (
@@ -404,6 +406,9 @@ def _describes_plants(mentions: Sequence[Mention]) -> bool:
     return bool(heads) and all(h.norm in _descriptive_words() for h in heads)
 
 
+#: Words that open a relative clause about the member just listed.
+_RELATIVE = frozenset({"that", "which", "where", "whose"})
+
 #: Pronouns after a relation word that point back at the member before.
 _POINTERS = frozenset({"it", "them", "this", "that", "these", "those"})
 
@@ -484,6 +489,18 @@ def _pronoun_one(mention: Mention) -> bool:
     """'a spring wheat one', 'the Roma one': "one" after the head stands for a field."""
     heads = [h.start for h in mention.heads]
     return bool(heads) and any(i.norm == "one" and i.start > max(heads) for i in mention.items)
+
+
+def _one_of_the(clause: Clause, mention: Mention) -> bool:
+    """'a ladder against one of the pear trees': one of a field's own plants or rows."""
+    head = min(h.start for h in mention.heads)
+    before = [i for i in clause.items if i.end <= head]
+    return (
+        len(before) >= 3
+        and before[-3].norm == "one"
+        and before[-2].role == "of"
+        and before[-1].norm in _definite_words()
+    )
 
 
 def _adds_a_field(clause: Clause, parent: Mention) -> bool:
@@ -744,8 +761,15 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
         predicate = _predicate(clause, mention)
         # "one plant has wilted leaves": one plant described, not a field of one
         one_described = mention.count == 1 and described
+        # "the Navel block ..., full of orange fruit": the named crop's own fruit
+        own_fruit = _fruit_of_named_crop(mention, clauses[:position])
+        if own_fruit:
+            listed = False
+        elif listed and _continues_with(clauses[position - 1], mention):
+            # "apples with scab spots on the leaves and corky fruit": still the apples'
+            listed, described = False, True
         if (
-            not all(h.norm in words for h in mention.heads)
+            not (own_fruit or all(h.norm in words for h in mention.heads))
             or (
                 mention.count is not None
                 and not (definite or fraction or one_described or predicate)
@@ -767,6 +791,41 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
         clause.mentions = []
         dissolved.append(mention.text)
     return dissolved
+
+
+def _fruit_of_named_crop(mention: Mention, before: Sequence[Clause]) -> bool:
+    """ "full of orange fruit" after an orange block: a crop word before a word for the
+    fruit, naming no variety, is the colour or fruit of a crop already named."""
+    parts = _plant_part_words()
+    if (
+        mention.count is not None
+        or not any(h.norm in parts for h in mention.heads)
+        or any(v is not None for _, v, weak in mention.interpretations or () if not weak)
+    ):
+        return False
+    crops = _strong_crops(mention)
+    named = {c for clause in before for m in clause.mentions for c in _strong_crops(m)}
+    return bool(crops) and crops <= named
+
+
+def _continues_with(previous: Clause, mention: Mention) -> bool:
+    """Whether ``mention`` (only words for fruit) goes on a "with ..." list of the field
+    named in the clause before it: "apples with scab on the leaves and corky fruit"."""
+    if not previous.mentions or not all(h.norm in _plant_part_words() for h in mention.heads):
+        return False
+    owner = previous.mentions[-1]
+    last_head = max(h.start for h in owner.heads)
+    after = [i for i in owner.items if i.start > last_head]
+    return (
+        bool(after)
+        and after[0].role == "of"
+        and all(i.role in ("of", "health", "cue", "stage", "filler", "unknown") for i in after)
+    )
+
+
+@functools.lru_cache(maxsize=1)
+def _plant_part_words() -> frozenset[str]:
+    return frozenset(str(word) for word in vocabulary()["plant_part_words"])
 
 
 def _dissolve_described_after_of(clause: Clause, words: frozenset[str]) -> list[str]:
@@ -850,7 +909,11 @@ def merge_coreferences(
         is_definite = (first is not None and first.norm in definite) or _definite_before_head(
             clause, mention
         )
-        if is_definite and mention.count == 1 and _pronoun_one(mention):
+        if (
+            is_definite
+            and mention.count == 1
+            and (_pronoun_one(mention) or _one_of_the(clause, mention))
+        ):
             mention.count = None
         bare = clause.link is not None and (
             clause.link.role == "separator"
