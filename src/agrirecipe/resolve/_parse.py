@@ -623,6 +623,17 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
         if item.role == "number" and following.role == "length_unit":
             item.role = "filler"
             item.data["measure"] = True
+    for index in range(1, len(items)):
+        before, item = items[index - 1], items[index]
+        after = items[index + 1] if index + 1 < len(items) else None
+        if (
+            item.role == "number"
+            and item.raw.isdigit()
+            and before.role == "unknown"
+            and before.raw[:1].isupper()
+            and (after is None or after.role not in ("plot", "head", "weak_variety", "category"))
+        ):
+            item.role = "filler"  # "on Gisela 6": a rootstock's or machine's name
     # "on 20 April", "April 3rd": a day of the month is a date, not a count of fields
     words = [i for i in items if i.role != "separator" or i.norm not in (",",)]
     for index, item in enumerate(words):
@@ -751,6 +762,9 @@ def _parallel_spacing(
     return intent
 
 
+_POINTING_BACK = frozenset({"it", "that", "them", "this", "those", "these", "which"})
+
+
 def _past_a_reference(
     clauses: Sequence[Clause], position: int, targets: list[Mention]
 ) -> list[Mention]:
@@ -758,6 +772,19 @@ def _past_a_reference(
     named again as a relation's object describe the relation's subject."""
     if len(targets) != 1:
         return targets
+    pointer = clauses[position - 1] if position >= 2 else None
+    if (
+        pointer is not None
+        and pointer.link is not None
+        and pointer.link.role == "relation"
+        and not pointer.mentions
+        and bool(pointer.items)
+        and all(i.norm in _POINTING_BACK for i in pointer.items)
+        and clauses[position - 2].mentions
+    ):
+        # "Padron plot north of it, 20 rows": the words after "north of it" are the
+        # Padron plot's, not those of the field "it" points at
+        return clauses[position - 2].mentions[-1:]
     index = position - 1
     while index >= 0 and not clauses[index].mentions:
         index -= 1

@@ -107,6 +107,18 @@ def assign_roles(items: Sequence[Item]) -> None:
             and "scenery" in item.data
         ):
             previous.role = "filler"  # "a rusty gate": the gate's, not the plants' health
+        if (
+            previous is not None
+            and previous.role == "plot"
+            and (
+                item.role == "non_agricultural"
+                or (item.role == "filler" and "scenery" in item.data)
+            )
+            and not (index >= 2 and items[index - 2].role in ("head", "weak_variety"))
+        ):
+            # "a row-crop robot test", "an orchard sprayer": the machine's kind, not a field
+            previous.role = "filler"
+            previous.data["modifier"] = True
         previous = item
     _ripening_fruit(items)
 

@@ -51,6 +51,7 @@ def promote_weak_varieties(clauses: Sequence[Clause], builder: MentionBuilder) -
     """
     for position, clause in enumerate(clauses):
         if clause.mentions:
+            _promote_into_plot(clauses, clause)
             continue
         weak = [item for item in clause.loose if item.role == "weak_variety"]
         if not weak:
@@ -81,6 +82,30 @@ def promote_weak_varieties(clauses: Sequence[Clause], builder: MentionBuilder) -
                 # "west to east: Lollo, then Imperator carrots": a capitalised name in a
                 # list of fields is its variety even when no field beside it is its crop
                 _promote(clause, weak[0], weak[0].senses_of("variety")[0])
+
+
+def _promote_into_plot(clauses: Sequence[Clause], clause: Clause) -> None:
+    """ "second plot of Sonata": a weak variety name right after a crop-less plot's "of"
+    names the plot's crop when an earlier field grows that crop."""
+    if len(clause.mentions) != 1:
+        return
+    mention = clause.mentions[0]
+    if mention.has_crop or mention.plot is None or mention.category is not None:
+        return
+    ordered = sorted(clause.items, key=lambda i: i.start)
+    for before, item in itertools.pairwise(ordered):
+        if item.role not in ("weak_variety", "filler") or before.role != "of":
+            continue
+        named = {c for c2 in clauses[: clause.index] for m in c2.mentions for c in _strong_crops(m)}
+        senses = [s for s in item.senses_of("variety") if s.crop in named]
+        if senses:
+            item.role = "head"
+            item.data["promoted"] = True
+            if item not in mention.items:
+                mention.items.append(item)
+            mention.heads.append(item)
+            mention.interpretations = [(str(senses[0].crop), str(senses[0].value), False)]
+        return
 
 
 def _promote(clause: Clause, item: Item, sense: Any) -> Mention:
@@ -489,6 +514,28 @@ def _pronoun_one(mention: Mention) -> bool:
     """'a spring wheat one', 'the Roma one': "one" after the head stands for a field."""
     heads = [h.start for h in mention.heads]
     return bool(heads) and any(i.norm == "one" and i.start > max(heads) for i in mention.items)
+
+
+def _another_field(clauses: Sequence[Clause], clause: Clause, mention: Mention) -> bool:
+    """ "; Padron plot north of it", "second plot of Sonata": a plot placed against the
+    field before it, or called a second one, is a new field, not that field again."""
+    if not any(h.role == "plot" for h in mention.heads):
+        return False
+    if any(i.norm in _ORDINAL_NEW for i in clause.items):
+        return True
+    following = clauses[clause.index + 1] if clause.index + 1 < len(clauses) else None
+    return (
+        clause.mentions[-1:] == [mention]
+        and following is not None
+        and following.link is not None
+        and following.link.role == "relation"
+        and not following.mentions
+        and bool(following.items)
+        and all(i.norm in _POINTERS or i.role == "reference" for i in following.items)
+    )
+
+
+_ORDINAL_NEW = frozenset({"second", "third", "fourth", "another", "2nd", "3rd", "4th", "new"})
 
 
 def _one_of_the(clause: Clause, mention: Mention) -> bool:
@@ -932,6 +979,7 @@ def merge_coreferences(
             and not mention.other
             and not mention.refinements
             and (is_definite or bare or bool(repeated))
+            and not _another_field(clauses, clause, mention)
         )
         if not anaphoric:
             kept.append(mention)
