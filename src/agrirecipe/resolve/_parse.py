@@ -639,12 +639,15 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
     for index, item in enumerate(words):
         if item.role != "number" or not _day_of_month(item):
             continue
-        before = words[index - 1] if index else None
-        after = words[index + 1] if index + 1 < len(words) else None
-        if (after is not None and after.role == "month") or (
-            before is not None
-            and before.role == "month"
-            and (after is None or after.role not in ("plot", "head", "weak_variety", "category"))
+        said_before = words[index - 1] if index else None
+        said_after = words[index + 1] if index + 1 < len(words) else None
+        if (said_after is not None and said_after.role == "month") or (
+            said_before is not None
+            and said_before.role == "month"
+            and (
+                said_after is None
+                or said_after.role not in ("plot", "head", "weak_variety", "category")
+            )
         ):
             item.role = "filler"
             item.data["date"] = True
