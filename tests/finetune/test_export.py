@@ -109,11 +109,44 @@ def test_the_strategy_is_registered_but_not_auto() -> None:
 
 
 def test_without_an_adapter_the_strategy_says_how_to_train_one(
-    monkeypatch: pytest.MonkeyPatch,
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
 ) -> None:
+    import agrirecipe._resources
+
+    (tmp_path / "manifest.yaml").write_text("llm: {}\n", encoding="utf-8")
     monkeypatch.delenv("AGRIRECIPE_LORA", raising=False)
+    monkeypatch.setattr(agrirecipe._resources, "data_path", lambda name: tmp_path)
     with pytest.raises(ModelError, match="agrirecipe finetune"):
         FinetunedResolver().model  # noqa: B018 - the property loads the adapter
+
+
+def test_the_shipped_adapter_matches_its_manifest_entry(monkeypatch: pytest.MonkeyPatch) -> None:
+    from agrirecipe.finetune import read_adapter
+    from agrirecipe.finetune._strategy import default_adapter_path
+
+    monkeypatch.delenv("AGRIRECIPE_LORA", raising=False)
+    path = default_adapter_path()  # checks the SHA-256 of models/manifest.yaml
+    adapter = read_adapter(path)
+    assert (adapter.general_type, adapter.adapter_type, adapter.alpha) == ("adapter", "lora", 16)
+    assert len(adapter.tensors) == 252
+    record = adapter.record
+    assert record["settings"]["train"]["epochs"] == 3
+    assert record["steps"] == record["steps_planned"]
+    assert not any(i.startswith("g4-") for i in record["data"]["heldout_ids"])
+
+
+def test_a_changed_adapter_file_is_refused(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    import agrirecipe._resources
+    from agrirecipe.finetune._strategy import default_adapter_path
+
+    (tmp_path / "manifest.yaml").write_text(
+        "finetuned: {file: a.gguf, sha256: '00'}\n", encoding="utf-8"
+    )
+    (tmp_path / "a.gguf").write_bytes(b"not the adapter")
+    monkeypatch.delenv("AGRIRECIPE_LORA", raising=False)
+    monkeypatch.setattr(agrirecipe._resources, "data_path", lambda name: tmp_path)
+    with pytest.raises(ModelError, match="does not match its SHA-256"):
+        default_adapter_path()
 
 
 @pytest.mark.slow

@@ -635,3 +635,18 @@ def test_lengths_said_roughly_are_read(prompt: str, key: str, value: float) -> N
     field = recipe(prompt).fields[0]
     stated = field.geometry.headland_m if key == "headland_m" else field.agronomy.in_row_spacing_m
     assert stated == pytest.approx(value)
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "Market garden layout, left to right: lettuce first, then potatoes, then tomatoes.",
+        "lettuce, then potatoes, then tomatoes going west to east",
+        "Going east from the farmhouse you pass lettuce, then potatoes, then tomatoes.",
+    ],
+)
+def test_a_row_in_the_order_named_towards_the_east(prompt: str) -> None:
+    assert relations(recipe(prompt)) == {
+        ("west_of", "Lettuce", ("Potato",)),
+        ("west_of", "Potato", ("Tomato",)),
+    }

@@ -321,8 +321,10 @@ def _directed_row(
     to south': the fields in the order named, each on one side of the next."""
     fields = _fields_of(list(reversed(coordinated(clauses, position))), members)
     if len(fields) < 2:
-        # "going west to east: tomatoes first, then the jalapenos, then peppers"
-        fields = _fields_of(following_list(clauses, position), members)
+        # "going west to east: tomatoes first, then the jalapenos, then peppers";
+        # "going east you pass Hamlin oranges, then Navel": the clause's own field first
+        own = clauses[position].mentions[-1:]
+        fields = _fields_of(following_list(clauses, position, own), members)
     if len(fields) < 2:
         warnings.append(f"ignored {link.raw!r}: it needs two or more fields before it")
         return []
@@ -637,7 +639,14 @@ def coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:
         return []
     group = [clauses[index].mentions[-1]]
     seen = {id(group[0])}  # identity: comparing mentions field by field made this cubic
-    while index > 0 and clauses[index - 1].mentions and listing(clauses[index].link):
+    while index > 0 and listing(clauses[index].link):
+        previous = clauses[index - 1]
+        if not previous.mentions:
+            # "orchard, then potatoes": the bare comma between two members
+            if previous.items or index < 2 or not listing(previous.link):
+                break
+            index -= 1
+            continue
         index -= 1
         mention = clauses[index].mentions[-1]
         if id(mention) not in seen:  # a field named again stands twice
@@ -646,11 +655,14 @@ def coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:
     return group
 
 
-def following_list(clauses: Sequence[Clause], position: int) -> list[Mention]:
+def following_list(
+    clauses: Sequence[Clause], position: int, first: Sequence[Mention] = ()
+) -> list[Mention]:
     """The mentions listed right after clause ``position`` (a heading such as "west to
-    east:"), in order: the first after it, then each joined to it by a comma, "and" or
-    "then", up to a full stop or any other link."""
-    group: list[Mention] = []
+    east:"), in order: the first after it (or ``first``, named in the heading's own
+    clause), then each joined to it by a comma, "and" or "then", up to a full stop or
+    any other link."""
+    group: list[Mention] = list(first)
     for index in range(position + 1, len(clauses)):
         clause = clauses[index]
         if group and not listing(clause.link):
