@@ -4,6 +4,8 @@ seed spacing, and a number that is part of a name."""
 
 from __future__ import annotations
 
+import pytest
+
 from agrirecipe import generate
 from agrirecipe.recipe import SceneRecipe
 
@@ -55,3 +57,67 @@ def test_seed_spacing_is_the_in_row_spacing() -> None:
 def test_a_number_after_a_capitalised_name_is_not_a_count() -> None:
     scene = recipe("Two sweet cherry blocks on Gisela 6, Kordia and Regina.")
     assert [f.variety for f in scene.fields] == ["Kordia", "Regina"]
+
+
+def geometry(prompt: str) -> list[tuple[float, int, float]]:
+    return [
+        (f.agronomy.row_spacing_m, f.agronomy.rows_per_bed, f.agronomy.in_row_spacing_m)
+        for f in recipe(prompt).fields
+    ]
+
+
+def test_rows_then_each_length_after_a_comma() -> None:
+    field = recipe("Granny Smith block, 12 tree rows, each 80 m, 3.5 m between rows").fields[0]
+    assert field.geometry.size_m[1] == pytest.approx(80 + 2 * field.geometry.headland_m)
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "a Fuji block (10 rows, 3.4 m rows, 1 m in-row, 60 m)",
+        "Fuji apples: 3.4 m rows, 1 m in-row, 10 rows, 60 m, 4 m headland",
+    ],
+)
+def test_a_bare_length_among_row_measures_is_the_row_length(prompt: str) -> None:
+    field = recipe(prompt).fields[0]
+    assert field.geometry.size_m[1] == pytest.approx(60 + 2 * field.geometry.headland_m)
+
+
+def test_twin_rows_on_beds_of_a_width() -> None:
+    assert geometry("a sweet pepper plot grown as twin rows on 1.5 m beds, 45 cm in-row") == [
+        (1.5, 2, 0.45)
+    ]
+
+
+def test_bed_centres_in_inches() -> None:
+    assert geometry("Capsicum plot: 18 beds, 60 in bed centres, 2 rows per bed")[0][:2] == (
+        1.524,
+        2,
+    )
+
+
+def test_a_listed_member_named_again_is_that_member() -> None:
+    scene = recipe(
+        "HLB detection plots: a Valencia block with citrus greening and a healthy Hamlin "
+        "block, rows 6 m apart, Valencia east of Hamlin."
+    )
+    assert [f.variety for f in scene.fields] == ["Valencia", "Hamlin"]
+    assert [(r.kind, r.subject, r.objects) for r in scene.relations] == [
+        ("east_of", scene.fields[0].id, (scene.fields[1].id,))
+    ]
+
+
+def test_a_crop_heading_the_list_of_its_fields_is_not_another_field() -> None:
+    scene = recipe(
+        "Citrus test site in Chile, July: a blood orange block next to a Valencia Late block"
+    )
+    assert [f.variety for f in scene.fields] == ["Moro", "Valencia"]
+    assert len(recipe("Apples: Gala and Fuji").fields) == 2
+
+
+def test_the_two_plots_point_back_at_the_listed_members() -> None:
+    scene = recipe(
+        "Banana variety plots: Big Mike and Lady Finger, 200 plants each, the two plots adjacent."
+    )
+    assert [f.variety for f in scene.fields] == ["Gros Michel", "Lady Finger"]
+    assert [r.kind for r in scene.relations] == ["next_to"]

@@ -224,6 +224,7 @@ def find_geometry(tokens: Sequence[Token]) -> list[GeometryMatch]:
                             min_n=None,
                             scale=1.0,
                             invert=False,
+                            constant=None,
                         ),
                         {"n": groups["n2"], "unit": groups.get("unit2")},
                         tables,

@@ -340,6 +340,8 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             lists_members = lists_members or (
                 _names_varieties_of(sub, parent) and (enumerating or link.role == "separator")
             )
+            if clause.mentions and any(_same_variety(r, sub) for r in parent.refinements):
+                lists_members = False  # "..., Valencia east of Hamlin": a member named again
             room = (parent.count or 1) - len(parent.refinements)
             if (
                 parent.implied_count
@@ -970,7 +972,14 @@ def merge_coreferences(
         summary = _is_summary(mention)
         # "imperator and danvers carrots, ..., imperator north of danvers": a variety
         # named again without an article is the field already named.
-        repeated = [m for m in reversed(kept) if _same_variety(m, mention)]
+        # "plots: a Valencia block ... and a Hamlin block, ..., Valencia east of Hamlin":
+        # also a listed member named again
+        repeated = [
+            m
+            for k in reversed(kept)
+            for m in (k.refinements[::-1] or [k])
+            if m is not mention and _same_variety(m, mention)
+        ]
         if repeated and _related_to(clauses, clause, repeated[0]):
             repeated = []  # "Valencia oranges next to Valencia oranges": two fields
         anaphoric = (
@@ -1009,6 +1018,14 @@ def merge_coreferences(
             # "a strip of Jalapeños between the two groves": the two earlier fields that
             # are groves, whatever was named in between
             fitting = [m for m in reversed(kept) if _compatible(builder, m, mention)]
+            if len(fitting) != mention.count:
+                # "plots: Big Mike and Lady Finger, ..., the two plots adjacent": the members
+                fitting = [
+                    r
+                    for m in reversed(kept)
+                    for r in {id(x): x for x in m.refinements[::-1]}.values()
+                    if _compatible(builder, r, mention)
+                ]
             if len(fitting) == mention.count:
                 run = fitting
         if summary and len(run) != mention.count:
@@ -1117,27 +1134,49 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
     return kept
 
 
+def _heads_its_list(mention: Mention, later: Sequence[Mention]) -> bool:
+    crops = _strong_crops(mention)
+    names_variety = any(v is not None for _, v, weak in mention.interpretations or () if not weak)
+    return (
+        bool(crops)
+        and not names_variety
+        and len(later) >= 2
+        and all(_strong_crops(m) and _strong_crops(m) <= crops for m in later[:2])
+    )
+
+
 def drop_list_headings(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
     """ "My allotment in one picture: a strawberry bed, a patch of sweetcorn": one plot
     naming no crop, ending its clause before a colon that lists two or more fields of
     named crops, is the list's heading, not another field. Return the fields left."""
     kept: list[Mention] = []
     for position, mention in enumerate(mentions):
-        following = clauses[mention.clause + 1] if mention.clause + 1 < len(clauses) else None
+        # the colon may come after words naming no field ("..., July:")
+        following = next(
+            (
+                c
+                for c in clauses[mention.clause + 1 :]
+                if c.mentions or (c.link is not None and c.link.norm == ":")
+            ),
+            None,
+        )
         later = [m for m in mentions[position + 1 :] if m.has_crop]
         if (
             following is not None
             and following.link is not None
             and following.link.norm == ":"
             and clauses[mention.clause].mentions[-1:] == [mention]
-            and mention.plot is not None
-            and not mention.has_crop
-            and mention.category is None
+            and (
+                (mention.plot is not None and not mention.has_crop and mention.category is None)
+                # "Citrus test site in Chile, July: a blood orange block next to a Valencia
+                # block": a crop heading the fields of that crop it lists
+                or _heads_its_list(mention, later)
+            )
             and (mention.count or 1) == 1
             and not mention.refinements
             and mention.rest is None
             and len(later) >= 2
-            and later[0].clause == mention.clause + 1
+            and later[0].clause >= following.index
         ):
             clauses[mention.clause].mentions = []
             continue
