@@ -650,3 +650,37 @@ def test_a_row_in_the_order_named_towards_the_east(prompt: str) -> None:
         ("west_of", "Lettuce", ("Potato",)),
         ("west_of", "Potato", ("Tomato",)),
     }
+
+
+def test_a_field_in_between_the_two_lies_between_them() -> None:
+    scene = recipe(
+        "San Marzano tomatoes, beefsteak tomatoes, and cherry tomatoes in between the two."
+    )
+    between = [r for r in scene.relations if r.kind == "between"]
+    varieties = {f.id: f.variety for f in scene.fields}
+    assert [(varieties[r.subject], {varieties[o] for o in r.objects}) for r in between] == [
+        ("Cherry", {"San Marzano", "Beefsteak"})
+    ]
+
+
+def test_top_middle_and_bottom_terraces_are_zones() -> None:
+    scene = recipe(
+        "Top terrace Riesling, middle terrace Pinot Noir, bottom terrace Chardonnay, all three "
+        "with their autumn leaves on."
+    )
+    varieties = {f.id: f.variety for f in scene.fields}
+    north = {
+        (varieties[r.subject], varieties[r.objects[0]])
+        for r in scene.relations
+        if r.kind == "north_of"
+    }
+    assert {("Riesling", "Pinot Noir"), ("Pinot Noir", "Chardonnay")} <= north
+    assert {f.season for f in scene.fields} == {"Fall"}
+
+
+def test_the_open_field_is_a_plot_not_an_unknown_crop() -> None:
+    scene = recipe(
+        "Our Belgian farm in February: Elsanta strawberries ripe and ready to pick in the open "
+        "field, next to dormant Conference pears."
+    )
+    assert [f.crop for f in scene.fields] == ["Strawberry", "Pear"]

@@ -70,7 +70,11 @@ def read_relations(
         after = [
             m for c in clauses[position:] for m in (c.named if c is not clause else c.mentions)
         ]
-        pronoun = bool(clause.items) and clause.items[0].norm in _PRONOUNS
+        pronoun = bool(clause.items) and (
+            clause.items[0].norm in _PRONOUNS
+            # "cherry tomatoes in between the two", "between both"
+            or (not clause.mentions and " ".join(i.norm for i in clause.items) in _THE_TWO)
+        )
         if (
             pronoun
             and not clause.mentions
@@ -624,6 +628,7 @@ def _placement_pairs(
 
 
 _PRONOUNS = frozenset({"it", "them", "those", "these", "they", "this", "that", "which"})
+_THE_TWO = frozenset({"the two", "both", "the two of them", "those two", "these two", "the pair"})
 
 
 def coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:
