@@ -315,6 +315,23 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             )
         ):
             joined = True  # "two vineyards, chardonnay west of riesling": the next member
+        if (
+            parent is not None
+            and link is not None
+            and link.norm == ":"
+            and not _strong_crops(parent)
+            and len(clause.mentions) >= 2
+            and all(m.count is not None and m.has_crop for m in clause.mentions)
+            and sum(m.count or 0 for m in clause.mentions) == parent.count
+        ):
+            # "4 fields: 2 wheat 2 corn": counted members said without a comma
+            for member in clause.mentions:
+                members, member.count = member.count or 1, None
+                member.is_refinement = True
+                parent.refinements.extend([member] * members)
+            clause.mentions, clause.loose = [], []
+            clause.refined_parent = parent
+            continue
         if parent is not None and joined and len(clause.mentions) <= 1:
             assert link is not None
             sub = (
@@ -340,8 +357,12 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             lists_members = lists_members or (
                 _names_varieties_of(sub, parent) and (enumerating or link.role == "separator")
             )
-            if clause.mentions and any(_same_variety(r, sub) for r in parent.refinements):
-                lists_members = False  # "..., Valencia east of Hamlin": a member named again
+            if clause.mentions and any(
+                _same_variety(r, sub) or _names_again(r, sub) for r in parent.refinements
+            ):
+                # "..., Valencia east of Hamlin", "bintje spuds & nantes carrots, carrots
+                # east of the spuds": a member named again
+                lists_members = False
             room = (parent.count or 1) - len(parent.refinements)
             if (
                 parent.implied_count
@@ -497,18 +518,33 @@ def _lists_exactly(
     )
 
 
+def _names_again(member: Mention, sub: Mention) -> bool:
+    """Whether ``sub`` (no count, no variety, no plot of its own) names ``member``'s crop."""
+    crops = _strong_crops(sub)
+    return (
+        sub.count is None
+        and bool(crops)
+        and crops == _strong_crops(member)
+        and not any(v is not None for _, v, weak in sub.interpretations or () if not weak)
+        and not any(h.role == "plot" for h in sub.heads)
+    )
+
+
 def _names_varieties_of(sub: Mention, parent: Mention) -> bool:
     """``sub`` names, without a count of its own, a variety of the crop ``parent`` names."""
     crops = _strong_crops(parent)
     if not crops and parent.plot is not None and len(parent.plot["options"]) == 1:
         crops = {parent.plot["options"][0]}  # "two vineyards, chardonnay ..."
     named = {(c, v) for c, v, weak in sub.interpretations or () if v is not None and not weak}
+    # "3 cherry blocks: Lapins, Regina and Bing": "cherry" may also be a tomato variety;
+    # the crop the members name decides which reading the parent has
+    common = crops & {c for c, _ in named}
     return (
         (sub.count is None or (sub.count == 1 and _pronoun_one(sub)))
-        and len(crops) == 1
+        and len(common) == 1
         and bool(named)
         and {c for c, _ in named} <= crops
-        and not any(v is not None for _, v, _ in parent.interpretations or ())
+        and not any(v is not None for c, v, _ in parent.interpretations or () if c in common)
     )
 
 
