@@ -59,6 +59,16 @@ def test_rows_that_do_not_share_beds_evenly_are_refused(knowledge: KnowledgeBase
         plan(knowledge, "Strawberry", rows=7, beds=3)
 
 
+def test_rows_that_fill_no_whole_usual_bed_are_single_rows(knowledge: KnowledgeBase) -> None:
+    """ "a row of peppers": one row of a crop usually on twin-row beds, planted single."""
+    result = plan(knowledge, "Pepper", rows=1)
+    assert result.rows_per_bed == 1
+    assert result.row_spacing_m == pytest.approx(1.45 / 2)
+    assert any("planted as single rows" in w for w in result.warnings)
+    with pytest.raises(PromptError, match="do not fill beds"):
+        plan(knowledge, "Pepper", rows=3, rows_per_bed=2)
+
+
 def test_a_count_that_makes_no_even_block_is_planted_and_said(
     knowledge: KnowledgeBase,
 ) -> None:

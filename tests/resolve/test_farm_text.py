@@ -684,3 +684,8 @@ def test_the_open_field_is_a_plot_not_an_unknown_crop() -> None:
         "field, next to dormant Conference pears."
     )
     assert [f.crop for f in scene.fields] == ["Strawberry", "Pear"]
+
+
+def test_beds_with_rows_on_each() -> None:
+    field = recipe("the Elsanta field: six raised beds, two rows on each").fields[0]
+    assert field.agronomy.rows_per_bed == 2

@@ -118,6 +118,21 @@ def plan_rows(
         rows_per_bed = int(rows // beds)
     if rows_per_bed > 8:
         raise _error(label, f"{rows_per_bed} rows on one bed is more than 8", "use 1 to 8")
+    single_spacing: float | None = None
+    if (
+        rows is not None
+        and rows % rows_per_bed
+        and not {"rows_per_bed", "bed_width_m", "beds"} & set(stated)
+    ):
+        # "next to a row of California Wonder peppers": a crop usually grown in double
+        # rows on beds, asked for in a number of rows that fills no whole bed, is planted
+        # in single rows as far apart as the rows on its usual beds
+        warnings.append(
+            f"{label}: {rows:g} row(s) do not fill {crop.crop}'s usual beds of {rows_per_bed} "
+            "rows; planted as single rows"
+        )
+        single_spacing = planting.row_spacing_m.value / rows_per_bed
+        rows_per_bed = 1
 
     # Centre distance of beds (several rows each) or of single rows.
     if rows_per_bed > 1:
@@ -148,7 +163,10 @@ def plan_rows(
             bed_rows = min(bed_rows, spacing / rows_per_bed)
     else:
         spacing = (
-            stated.get("row_spacing_m") or stated.get("bed_width_m") or planting.row_spacing_m.value
+            stated.get("row_spacing_m")
+            or stated.get("bed_width_m")
+            or single_spacing
+            or planting.row_spacing_m.value
         )
         if {"plants_per_ha", "in_row_spacing_m"} <= set(stated) and not {
             "row_spacing_m",
