@@ -689,3 +689,14 @@ def test_the_open_field_is_a_plot_not_an_unknown_crop() -> None:
 def test_beds_with_rows_on_each() -> None:
     field = recipe("the Elsanta field: six raised beds, two rows on each").fields[0]
     assert field.agronomy.rows_per_bed == 2
+
+
+def test_a_weak_variety_name_before_words_about_its_fruit_heads_its_field() -> None:
+    scene = recipe(
+        "Two strawberry varieties side by side in the picture: Sonata with grey mould furring "
+        "the fruit, and Albion clean and bright red."
+    )
+    assert [(f.variety, f.health) for f in scene.fields] == [
+        ("Sonata", "Ill"),
+        ("Albion", "Healthy"),
+    ]

@@ -50,6 +50,7 @@ def promote_weak_varieties(clauses: Sequence[Clause], builder: MentionBuilder) -
     clause, joined by "and"), else from the nearest earlier mention.
     """
     for position, clause in enumerate(clauses):
+        _fold_described_plants(clause)
         if clause.mentions:
             _promote_into_plot(clauses, clause)
             continue
@@ -82,6 +83,33 @@ def promote_weak_varieties(clauses: Sequence[Clause], builder: MentionBuilder) -
                 # "west to east: Lollo, then Imperator carrots": a capitalised name in a
                 # list of fields is its variety even when no field beside it is its crop
                 _promote(clause, weak[0], weak[0].senses_of("variety")[0])
+
+
+def _fold_described_plants(clause: Clause) -> None:
+    """ "Sonata with grey mould furring the fruit": after a weak variety name, a mention
+    made only of words for plants or fruit describes that variety's field; its words
+    become the clause's loose words so the name can head the clause."""
+    weak = [
+        i
+        for i in clause.items
+        if i.role == "weak_variety" or (i.role == "filler" and i.senses_of("variety"))
+    ]
+    if not weak or not clause.mentions:
+        return
+    words = _descriptive_words()
+    if not all(h.norm in words for m in clause.mentions for h in m.heads):
+        return
+    first = min(h.start for m in clause.mentions for h in m.heads)
+    if weak[0].start > first:
+        return
+    loose = {id(i): i for i in clause.loose}
+    for mention in clause.mentions:
+        for head in mention.heads:
+            head.role = "filler"
+        loose.update((id(i), i) for i in mention.items)
+    clause.loose = sorted(loose.values(), key=lambda i: i.start)
+    clause.mentions = []
+    weak[0].role = "weak_variety"
 
 
 def _promote_into_plot(clauses: Sequence[Clause], clause: Clause) -> None:
