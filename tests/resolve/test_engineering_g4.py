@@ -121,3 +121,24 @@ def test_the_two_plots_point_back_at_the_listed_members() -> None:
     )
     assert [f.variety for f in scene.fields] == ["Gros Michel", "Lady Finger"]
     assert [r.kind for r in scene.relations] == ["next_to"]
+
+
+def test_beds_of_a_width_with_rows_each() -> None:
+    assert geometry("peppers on 1.5 m beds with two rows each (12 beds)")[0][:2] == (1.5, 2)
+
+
+def test_a_stage_word_naming_a_machine_s_job_is_not_the_crop_s_stage() -> None:
+    scene = recipe("Harvesting-arm test: peppers on 1.5 m beds, young plants")
+    assert scene.fields[0].stage == "Vegetative"
+    assert recipe("Harvesting-arm test: peppers").fields[0].stage != "Maturation"
+
+
+@pytest.mark.parametrize(
+    ("prompt", "rotation"),
+    [
+        ("Wheat field drilled NE-SW, 1.5 ha", -45.0),
+        ("potatoes, 40 rows @ 75cm, 150m rows, E-W.", -90.0),
+    ],
+)
+def test_row_directions_said_after_drilling_or_alone(prompt: str, rotation: float) -> None:
+    assert recipe(prompt).fields[0].geometry.rotation_deg == rotation

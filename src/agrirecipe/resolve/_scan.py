@@ -119,6 +119,13 @@ def assign_roles(items: Sequence[Item]) -> None:
             # "a row-crop robot test", "an orchard sprayer": the machine's kind, not a field
             previous.role = "filler"
             previous.data["modifier"] = True
+        if (
+            previous is not None
+            and previous.role in ("stage", "cue")
+            and item.role in ("filler", "non_agricultural")
+            and "scenery" in item.data
+        ):
+            previous.role = "filler"  # "a harvesting gripper": the machine's job, not a stage
         previous = item
     _ripening_fruit(items)
 
