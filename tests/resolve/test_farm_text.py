@@ -700,3 +700,37 @@ def test_a_weak_variety_name_before_words_about_its_fruit_heads_its_field() -> N
         ("Sonata", "Ill"),
         ("Albion", "Healthy"),
     ]
+
+
+def test_field_by_field_is_how_the_text_goes_not_a_field() -> None:
+    scene = recipe(
+        "The farm, field by field. Behind the farmhouse there's 3 ha of Conference pears in "
+        "full blossom, and east of the pears a block of Jonagold apples."
+    )
+    assert [f.crop for f in scene.fields] == ["Pear", "Apple"]
+
+
+def test_the_next_field_over_is_next_to_the_field_before() -> None:
+    scene = recipe(
+        "the Russet potatoes in Long Meadow have late blight, though the Walla Walla onions in "
+        "the next field over look fine."
+    )
+    assert relations(scene) == {("next_to", "Onion", ("Potato",))}
+    assert [f.health for f in scene.fields] == ["Ill", "Healthy"]
+
+
+def test_when_a_crop_was_sown_is_not_the_season_shown() -> None:
+    field = recipe("5 ha of spelt, sown last autumn, still young and green now in March").fields[0]
+    assert (field.season, field.stage) == ("Spring", "Vegetative")
+
+
+def test_zero_spacing_between_them_is_refused() -> None:
+    with pytest.raises(PromptError, match="positive"):
+        recipe("potato rows with zero spacing between them, ridges touching")
+
+
+def test_fruit_held_by_scenery_is_not_a_field() -> None:
+    scene = recipe(
+        "Beefsteak tomatoes with late blight. September, a wheelbarrow full of split fruit."
+    )
+    assert [f.crop for f in scene.fields] == ["Tomato"]

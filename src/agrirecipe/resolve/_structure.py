@@ -874,10 +874,13 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
         predicate = _predicate(clause, mention)
         # "one plant has wilted leaves": one plant described, not a field of one
         one_described = mention.count == 1 and described
-        # "the Navel block ..., full of orange fruit": the named crop's own fruit
-        own_fruit = _fruit_of_named_crop(mention, clauses[:position])
+        # "the Navel block ..., full of orange fruit": the named crop's own fruit;
+        # "a wheelbarrow full of split fruit": what the scenery holds
+        own_fruit = _fruit_of_named_crop(mention, clauses[:position]) or _held_by_scenery(
+            clause, mention
+        )
         if own_fruit:
-            listed = False
+            listed, described = False, True
         elif listed and _continues_with(clauses[position - 1], mention):
             # "apples with scab spots on the leaves and corky fruit": still the apples'
             listed, described = False, True
@@ -919,6 +922,18 @@ def _fruit_of_named_crop(mention: Mention, before: Sequence[Clause]) -> bool:
     crops = _strong_crops(mention)
     named = {c for clause in before for m in clause.mentions for c in _strong_crops(m)}
     return bool(crops) and crops <= named
+
+
+def _held_by_scenery(clause: Clause, mention: Mention) -> bool:
+    """ "a wheelbarrow full of split fruit", "crates of apples": plants or fruit that a
+    piece of scenery holds (the words before them: the scenery, "of", describing words)."""
+    if mention.count is not None or not all(h.norm in _descriptive_words() for h in mention.heads):
+        return False
+    head = min(h.start for h in mention.heads)
+    before = [i for i in clause.items if i.end <= head]
+    while before and before[-1].role in ("unknown", "filler") and "scenery" not in before[-1].data:
+        before.pop()  # "split", "ripe-looking"
+    return len(before) >= 2 and before[-1].role == "of" and "scenery" in before[-2].data
 
 
 def _continues_with(previous: Clause, mention: Mention) -> bool:
