@@ -386,7 +386,10 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
                 _names_varieties_of(sub, parent) and (enumerating or link.role == "separator")
             )
             if clause.mentions and any(
-                _same_variety(r, sub) or _names_again(r, sub) for r in parent.refinements
+                _same_variety(r, sub)
+                # "two different fruits: apples and apples" still lists two members
+                or (link.role == "separator" and not parent.distinct and _names_again(r, sub))
+                for r in parent.refinements
             ):
                 # "..., Valencia east of Hamlin", "bintje spuds & nantes carrots, carrots
                 # east of the spuds": a member named again
