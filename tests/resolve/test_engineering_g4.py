@@ -142,3 +142,17 @@ def test_a_stage_word_naming_a_machine_s_job_is_not_the_crop_s_stage() -> None:
 )
 def test_row_directions_said_after_drilling_or_alone(prompt: str, rotation: float) -> None:
     assert recipe(prompt).fields[0].geometry.rotation_deg == rotation
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "Romaine, Iceberg and Lollo Rosso lettuce, each a 15 m x 40 m plot, 35 cm rows",
+        "from west to east: carrots, onions, lettuce. Each plot 15 m wide and 40 m long, rows "
+        "running north-south",
+    ],
+)
+def test_a_plot_of_each_gives_its_size_to_every_field(prompt: str) -> None:
+    scene = recipe(prompt)
+    assert len(scene.fields) == 3
+    assert {f.geometry.size_m for f in scene.fields} == {(15.0, 40.0)}

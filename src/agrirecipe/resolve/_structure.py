@@ -1187,9 +1187,30 @@ def _is_summary(mention: Mention) -> bool:
 
 def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
     """'chillies, a 15 by 30 m patch, and ...': a plot said right after a crop, between
-    commas and naming no crop of its own, is that crop's plot, not another field."""
+    commas and naming no crop of its own, is that crop's plot, not another field.
+
+    "Romaine, Iceberg and Lollo Rosso, each a 10 m x 20 m plot", "... Each plot 15 m
+    wide and 40 m long": a plot of each, with a size, gives that size to every field
+    named before it that states none."""
     kept: list[Mention] = []
     for mention in mentions:
+        sizes = [i for i in mention.items if i.role in ("size", "side", "dimension_joiner")]
+        if (
+            len(kept) >= 2
+            and not mention.has_crop
+            and mention.category is None
+            and mention.plot is not None
+            and not mention.refinements
+            and any(i.role == "size" for i in sizes)
+            and any(i.norm in ("each", "every") for i in mention.items if i.role == "all")
+        ):
+            for earlier in kept:
+                if not any(i.role == "size" for i in earlier.items):
+                    earlier.items.extend(sizes)
+            clause = clauses[mention.clause] if mention.clause < len(clauses) else None
+            if clause is not None:
+                clause.mentions = [m for m in clause.mentions if m is not mention]
+            continue
         clause = clauses[mention.clause] if mention.clause < len(clauses) else None
         previous = kept[-1] if kept else None
         if (
