@@ -734,3 +734,12 @@ def test_fruit_held_by_scenery_is_not_a_field() -> None:
         "Beefsteak tomatoes with late blight. September, a wheelbarrow full of split fruit."
     )
     assert [f.crop for f in scene.fields] == ["Tomato"]
+
+
+def test_the_two_tomato_strips_are_the_tomato_fields_named() -> None:
+    scene = recipe(
+        "Trial strips in the photo: Roma tomatoes, then Padrón peppers, then cherry tomatoes, "
+        "the peppers between the two tomato strips, everything in flower."
+    )
+    assert [f.variety for f in scene.fields] == ["Roma", "Padron", "Cherry"]
+    assert relations(scene) == {("between", "Pepper", ("Tomato", "Tomato"))}

@@ -1051,7 +1051,13 @@ def merge_coreferences(
             # "; cabbage and potato rows 75 cm apart": a list of fields named again
             or (clause.link.role == "conjunction" and clause.index - 1 in merged)
         )
-        summary = _is_summary(mention)
+        summary = _is_summary(mention) or (
+            # "the peppers between the two tomato strips": fields of a crop named before
+            is_definite
+            and (mention.count or 1) >= 2
+            and mention.has_crop
+            and not any(v is not None for _, v, weak in mention.interpretations or () if not weak)
+        )
         # "imperator and danvers carrots, ..., imperator north of danvers": a variety
         # named again without an article is the field already named.
         # "plots: a Valencia block ... and a Hamlin block, ..., Valencia east of Hamlin":
