@@ -743,3 +743,9 @@ def test_the_two_tomato_strips_are_the_tomato_fields_named() -> None:
     )
     assert [f.variety for f in scene.fields] == ["Roma", "Padron", "Cherry"]
     assert relations(scene) == {("between", "Pepper", ("Tomato", "Tomato"))}
+
+
+@pytest.mark.parametrize("thing", ["scarecrow", "bumblebee"])
+def test_a_thing_in_a_named_field_is_not_another_field(thing: str) -> None:
+    scene = recipe(f"fruit trees on the left, a veg plot on the right. A {thing} in the veg.")
+    assert len(scene.fields) == 2

@@ -102,6 +102,15 @@ def assign_roles(items: Sequence[Item]) -> None:
             previous.role = "filler"  # "a sprayer is working in the potatoes": no count
         if (
             previous is not None
+            and previous.role == "number"
+            and previous.norm in ("a", "an")
+            and item.role == "unknown"
+            and following is not None
+            and following.norm in _PREPOSITIONS
+        ):
+            previous.role = "filler"  # "a scarecrow in the veg": the scarecrow's article
+        if (
+            previous is not None
             and previous.role == "health"
             and item.role == "filler"
             and "scenery" in item.data
@@ -129,6 +138,30 @@ def assign_roles(items: Sequence[Item]) -> None:
         previous = item
     _ripening_fruit(items)
 
+
+#: Words after "a <word>" that show the word is a thing somewhere, not a crop's name.
+_PREPOSITIONS = frozenset(
+    {
+        "in",
+        "on",
+        "at",
+        "by",
+        "near",
+        "among",
+        "amongst",
+        "under",
+        "over",
+        "beside",
+        "with",
+        "across",
+        "along",
+        "between",
+        "inside",
+        "behind",
+        "above",
+        "below",
+    }
+)
 
 # Colour changes that are a disease's sign on leaves but ripening on the fruit.
 _COLOURING = frozenset({"yellowing", "browning", "reddening", "colouring", "coloring"})
