@@ -52,7 +52,7 @@ def default_adapter_path() -> Path:
     entry = manifest.get("finetuned") if isinstance(manifest, dict) else None
     if not isinstance(entry, dict) or not entry.get("file"):
         raise ModelError(
-            "no fine-tuned adapter is shipped yet (models/manifest.yaml has no 'finetuned' entry)",
+            "no fine-tuned adapter is configured (models/manifest.yaml has no 'finetuned' entry)",
             stage="llm",
             hint=_TRAIN_HINT,
         )
