@@ -212,3 +212,19 @@ def test_finetuned_strategy_answers_under_the_grammars(tmp_path: Path) -> None:
     )
     assert scene.recipe.resolver == "finetuned"
     resolver.model.close()  # type: ignore[attr-defined]
+
+
+@pytest.mark.slow
+def test_the_shipped_adapter_reads_the_paper_prompt(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The committed adapter over the real base model, through ``resolver="finetuned"``."""
+    monkeypatch.delenv("AGRIRECIPE_LORA", raising=False)
+    scene = generate(
+        "a healthy Pink Lady apple orchard in summer next to young Nantes carrots",
+        resolver="finetuned",
+    )
+    assert [(f.crop, f.variety, f.health) for f in scene.recipe.fields] == [
+        ("Apple", "Pink Lady", "Healthy"),
+        ("Carrot", "Nantes", "Healthy"),
+    ]
+    assert scene.recipe.fields[1].stage == "Vegetative"
+    assert scene.recipe.resolver == "finetuned"
