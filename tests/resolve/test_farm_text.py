@@ -749,3 +749,30 @@ def test_the_two_tomato_strips_are_the_tomato_fields_named() -> None:
 def test_a_thing_in_a_named_field_is_not_another_field(thing: str) -> None:
     scene = recipe(f"fruit trees on the left, a veg plot on the right. A {thing} in the veg.")
     assert len(scene.fields) == 2
+
+
+def test_strips_going_from_west_to_east_are_in_that_order() -> None:
+    scene = recipe(
+        "Three wheat strips, 12 m by 200 m each, drilled at 12.5, 15 and 20 cm row spacing "
+        "going from west to east."
+    )
+    ids = [f.id for f in scene.fields]
+    west = [(r.subject, r.objects) for r in scene.relations if r.kind == "west_of"]
+    assert west == [(ids[0], (ids[1],)), (ids[1], (ids[2],))]
+    assert [f.agronomy.row_spacing_m for f in scene.fields] == [0.125, 0.15, 0.2]
+
+
+def test_the_northern_block_said_afterwards() -> None:
+    scene = recipe("Two sweet cherry blocks, Kordia and Regina. Kordia is the northern block.")
+    varieties = {f.id: f.variety for f in scene.fields}
+    assert [(r.kind, varieties[r.subject], varieties[r.objects[0]]) for r in scene.relations] == [
+        ("north_of", "Kordia", "Regina")
+    ]
+
+
+def test_a_field_with_one_on_each_side_lies_between_them() -> None:
+    scene = recipe(
+        "north field is wheat, south field is maize, and in between them a narrow strip of "
+        "strawberries"
+    )
+    assert ("between", "Strawberry", ("Wheat", "Maize")) in relations(scene)
