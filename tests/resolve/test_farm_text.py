@@ -776,3 +776,14 @@ def test_a_field_with_one_on_each_side_lies_between_them() -> None:
         "strawberries"
     )
     assert ("between", "Strawberry", ("Wheat", "Maize")) in relations(scene)
+
+
+def test_words_after_beside_them_belong_to_the_field_placed() -> None:
+    scene = recipe(
+        "Fontane potatoes in the big field, and the Danvers carrots beside them have "
+        "Alternaria, dark lesions with yellow halos all over the leaves."
+    )
+    assert [(f.crop, f.health) for f in scene.fields] == [
+        ("Potato", "Healthy"),
+        ("Carrot", "Ill"),
+    ]

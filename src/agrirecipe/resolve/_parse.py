@@ -773,21 +773,23 @@ def _past_a_reference(
 ) -> list[Mention]:
     """'a wheat plot to the south of the vineyard, 25 x 100 m': words after a field
     named again as a relation's object describe the relation's subject."""
+    for at in (position, position - 1):
+        # "Padron plot north of it, 20 rows", "the Danvers carrots beside them have
+        # Alternaria, dark lesions ...": the words after "north of it" / "beside them"
+        # are the placed field's, not those of the field the pronoun points at
+        pointer = clauses[at] if at >= 1 else None
+        if (
+            pointer is not None
+            and pointer.link is not None
+            and pointer.link.role == "relation"
+            and not pointer.mentions
+            and bool(pointer.items)
+            and pointer.items[0].norm in _POINTING_BACK
+            and clauses[at - 1].mentions
+        ):
+            return clauses[at - 1].mentions[-1:]
     if len(targets) != 1:
         return targets
-    pointer = clauses[position - 1] if position >= 2 else None
-    if (
-        pointer is not None
-        and pointer.link is not None
-        and pointer.link.role == "relation"
-        and not pointer.mentions
-        and bool(pointer.items)
-        and all(i.norm in _POINTING_BACK for i in pointer.items)
-        and clauses[position - 2].mentions
-    ):
-        # "Padron plot north of it, 20 rows": the words after "north of it" are the
-        # Padron plot's, not those of the field "it" points at
-        return clauses[position - 2].mentions[-1:]
     index = position - 1
     while index >= 0 and not clauses[index].mentions:
         index -= 1
