@@ -787,3 +787,12 @@ def test_words_after_beside_them_belong_to_the_field_placed() -> None:
         ("Potato", "Healthy"),
         ("Carrot", "Ill"),
     ]
+
+
+def test_a_correction_of_the_plot_word_keeps_the_crop() -> None:
+    scene = recipe("the Valencia groove (sorry, grove), with Moro blood oranges right next to it")
+    assert [(f.crop, f.variety) for f in scene.fields] == [
+        ("Orange", "Valencia"),
+        ("Orange", "Moro"),
+    ]
+    assert [f.crop for f in recipe("a wheat field, sorry, a plot").fields] == ["Wheat"]

@@ -215,6 +215,25 @@ def apply_corrections(clauses: Sequence[Clause]) -> list[str]:
             continue
         for earlier in reversed(clauses[:position]):
             if earlier.mentions:
+                new, old = clause.mentions[0], earlier.mentions[-1]
+                if (
+                    not new.has_crop
+                    and new.category is None
+                    and new.plot is not None
+                    and old.has_crop
+                    and len(clause.mentions) == 1
+                ):
+                    # "the Valencia groove (sorry, grove)": only the plot word is
+                    # corrected; the crop named stays
+                    plots = [h for h in old.heads if h.role == "plot"]
+                    old.heads = [h for h in old.heads if h.role != "plot"] + new.heads
+                    old.items = [i for i in old.items if i not in plots] + [
+                        i for i in new.items if i.role != "correction"
+                    ]
+                    old.plot = new.plot
+                    clause.mentions = []
+                    dropped.append(" ".join(h.raw for h in plots) or new.text)
+                    break
                 dropped.append(earlier.mentions.pop().text)
                 while earlier.mentions and earlier.mentions[-1].continued:
                     dropped.append(earlier.mentions.pop().text)
