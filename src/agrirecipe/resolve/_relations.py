@@ -508,6 +508,10 @@ def _relation_mentions(
         objects = (before[-1],) if kind != "between" else (before[-1], before[-1])
         if kind != "between" or (before[-1].count or 1) >= 2:
             return kind, after[0], objects
+        if len(before) >= 2:
+            # "wheat in the north, maize in the south, and in between them a strip of
+            # strawberries": the two fields named last
+            return kind, after[0], (before[-2], before[-1])
     if kind == "flanks":
         # "Durondeau and Williams pears on either side of a Jonagold block"
         if not after:

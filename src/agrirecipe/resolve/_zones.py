@@ -208,22 +208,7 @@ def complete_orders(
                     if (middle, bottom) in edges[axis] and not related(axis, top, middle):
                         added.append((axis, top, middle))
     kinds: dict[str, RelationKind] = {"ns": "north_of", "ew": "west_of"}
-    completed = [
+    return [
         RelationIntent(kind=kinds[axis], subject=high_index, objects=(low_index,))
         for axis, high_index, low_index in dict.fromkeys(added)
     ]
-    # "north field is wheat, south field is maize, and in between them a strip of
-    # strawberries": a field with one field on each side of it on one axis lies between
-    flanked = {frozenset(r.objects) | {r.subject} for r in relations if r.kind == "between"}
-    for axis in ("ns", "ew"):
-        for middle in range(len(fields)):
-            above = sorted(a for a, b in edges[axis] if b == middle)
-            below = sorted(b for a, b in edges[axis] if a == middle)
-            if len(above) == 1 and len(below) == 1:
-                trio = frozenset((above[0], middle, below[0]))
-                if trio not in flanked:
-                    flanked.add(trio)
-                    completed.append(
-                        RelationIntent(kind="between", subject=middle, objects=(above[0], below[0]))
-                    )
-    return completed
