@@ -156,3 +156,20 @@ def test_a_plot_of_each_gives_its_size_to_every_field(prompt: str) -> None:
     scene = recipe(prompt)
     assert len(scene.fields) == 3
     assert {f.geometry.size_m for f in scene.fields} == {(15.0, 40.0)}
+
+
+def test_same_bed_width_as_the_plot_before() -> None:
+    scene = recipe(
+        "strawberry beds: 10 beds, 1.2 m bed centres, 3 rows per bed. second plot of Sonata "
+        "to the south, 6 beds, same bed width"
+    )
+    assert [f.agronomy.row_spacing_m for f in scene.fields] == [1.2, 1.2]
+
+
+def test_rows_in_the_same_direction_as_the_field_before() -> None:
+    scene = recipe(
+        "wheat, 0.5 ha, 12.5 cm drill rows, rows E-W; right next to it 0.5 ha of maize at "
+        "75 cm, rows in the same direction"
+    )
+    assert [f.geometry.rotation_deg for f in scene.fields] == [-90.0, -90.0]
+    assert [f.agronomy.row_spacing_m for f in scene.fields] == [0.125, 0.75]

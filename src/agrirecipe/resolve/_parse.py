@@ -225,8 +225,9 @@ class PromptReader(FieldReading):
                 i.role == "same_size" for i in fields[index].items
             ):
                 intents[index] = intents[index].model_copy(update={"size": intents[index - 1].size})
-            if any(i.role == "same_spacing" for i in fields[index].items):
-                intents[index] = _same_spacing(intents[index], intents[index - 1])
+            same = [i for i in fields[index].items if i.role == "same_spacing"]
+            if same:
+                intents[index] = _same_spacing(intents[index], intents[index - 1], same)
             intents[index] = _parallel_spacing(
                 intents[index], intents[index - 1], fields[index].items
             )
@@ -703,12 +704,15 @@ def _purpose_diseases(items: Sequence[Item], text: str) -> None:
 _SPACINGS = ("row_spacing_m", "in_row_spacing_m", "bed_width_m", "rows_per_bed", "plants_per_ha")
 
 
-def _same_spacing(intent: FieldIntent, before: FieldIntent) -> FieldIntent:
+def _same_spacing(intent: FieldIntent, before: FieldIntent, words: Sequence[Item]) -> FieldIntent:
     """'Kordia, 10 rows at 4.6 m ...; Regina, same spacing, 8 rows': the spacings of the
-    field before, except those this field states itself."""
+    field before, except those this field states itself; 'rows in the same direction':
+    its rows' bearing."""
     if before.rows is None:
         return intent
-    copied = {k: getattr(before.rows, k) for k in _SPACINGS if getattr(before.rows, k) is not None}
+    direction = any(w in i.norm for i in words for w in ("direction", "orientation"))
+    keys = ("row_bearing_deg",) if direction else _SPACINGS
+    copied = {k: getattr(before.rows, k) for k in keys if getattr(before.rows, k) is not None}
     if not copied:
         return intent
     own = intent.rows
