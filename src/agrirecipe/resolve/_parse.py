@@ -69,7 +69,7 @@ from agrirecipe.resolve._lexicon import (
     vocabulary,
 )
 from agrirecipe.resolve._lists import spread_value_lists
-from agrirecipe.resolve._relations import coordinated, listing, read_relations
+from agrirecipe.resolve._relations import PRONOUNS, coordinated, listing, read_relations
 from agrirecipe.resolve._scan import assign_roles, read_heights, read_latitude, read_sizes
 from agrirecipe.resolve._structure import (
     apply_corrections,
@@ -769,9 +769,6 @@ def _parallel_spacing(
     return intent
 
 
-_POINTING_BACK = frozenset({"it", "that", "them", "this", "those", "these", "which"})
-
-
 def _past_a_reference(
     clauses: Sequence[Clause], position: int, targets: list[Mention]
 ) -> list[Mention]:
@@ -788,7 +785,7 @@ def _past_a_reference(
             and pointer.link.role == "relation"
             and not pointer.mentions
             and bool(pointer.items)
-            and pointer.items[0].norm in _POINTING_BACK
+            and pointer.items[0].norm in PRONOUNS
             and clauses[at - 1].mentions
         ):
             return clauses[at - 1].mentions[-1:]

@@ -17,7 +17,7 @@ from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._intent import RelationIntent, TraceStep
 from agrirecipe.resolve._lexicon import Item
 
-__all__ = ["coordinated", "listing", "read_relations"]
+__all__ = ["PRONOUNS", "coordinated", "listing", "read_relations"]
 
 
 def read_relations(
@@ -71,7 +71,7 @@ def read_relations(
             m for c in clauses[position:] for m in (c.named if c is not clause else c.mentions)
         ]
         pronoun = bool(clause.items) and (
-            clause.items[0].norm in _PRONOUNS
+            clause.items[0].norm in PRONOUNS
             # "cherry tomatoes in between the two", "between both"
             or (not clause.mentions and " ".join(i.norm for i in clause.items) in _THE_TWO)
         )
@@ -631,7 +631,8 @@ def _placement_pairs(
     return pairs
 
 
-_PRONOUNS = frozenset({"it", "them", "those", "these", "they", "this", "that", "which"})
+#: Words that point back at a field named before ("north of it", "beside them").
+PRONOUNS = frozenset({"it", "them", "those", "these", "they", "this", "that", "which"})
 _THE_TWO = frozenset({"the two", "both", "the two of them", "those two", "these two", "the pair"})
 
 

@@ -568,6 +568,11 @@ def _lists_exactly(
     )
 
 
+def _names_variety(mention: Mention) -> bool:
+    """Whether the mention names a variety (not only a crop)."""
+    return any(v is not None for _, v, weak in mention.interpretations or () if not weak)
+
+
 def _names_again(member: Mention, sub: Mention) -> bool:
     """Whether ``sub`` (no count, no variety, no plot of its own) names ``member``'s crop."""
     crops = _strong_crops(sub)
@@ -575,7 +580,7 @@ def _names_again(member: Mention, sub: Mention) -> bool:
         sub.count is None
         and bool(crops)
         and crops == _strong_crops(member)
-        and not any(v is not None for _, v, weak in sub.interpretations or () if not weak)
+        and not _names_variety(sub)
         and not any(h.role == "plot" for h in sub.heads)
     )
 
@@ -938,7 +943,7 @@ def _fruit_of_named_crop(mention: Mention, before: Sequence[Clause]) -> bool:
     if (
         mention.count is not None
         or not any(h.norm in parts for h in mention.heads)
-        or any(v is not None for _, v, weak in mention.interpretations or () if not weak)
+        or _names_variety(mention)
     ):
         return False
     crops = _strong_crops(mention)
@@ -1075,7 +1080,7 @@ def merge_coreferences(
             is_definite
             and (mention.count or 1) >= 2
             and mention.has_crop
-            and not any(v is not None for _, v, weak in mention.interpretations or () if not weak)
+            and not _names_variety(mention)
         )
         # "imperator and danvers carrots, ..., imperator north of danvers": a variety
         # named again without an article is the field already named.
@@ -1138,9 +1143,7 @@ def merge_coreferences(
         if summary and len(run) != mention.count:
             kept.append(mention)
             continue
-        names_variety = any(
-            v is not None for _, v, weak in mention.interpretations or () if not weak
-        )
+        names_variety = _names_variety(mention)
         if names_variety:
             run = [m for m in repeated if _compatible(builder, m, mention)][:1] or run[:1]
         if not run and (is_definite or bare):
@@ -1264,10 +1267,9 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
 
 def _heads_its_list(mention: Mention, later: Sequence[Mention]) -> bool:
     crops = _strong_crops(mention)
-    names_variety = any(v is not None for _, v, weak in mention.interpretations or () if not weak)
     return (
         bool(crops)
-        and not names_variety
+        and not _names_variety(mention)
         and len(later) >= 2
         and all(_strong_crops(m) and _strong_crops(m) <= crops for m in later[:2])
     )
