@@ -15,6 +15,7 @@ link the mentions on either side ("north of", "next to", "between X and Y").
 from __future__ import annotations
 
 import functools
+import itertools
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
@@ -285,7 +286,12 @@ class MentionBuilder:
                 item.role = "filler"  # "tomato vines": the tomato's own vines
                 current.items.append(item)
                 continue
-            elif self.compatible(current, item):
+            elif self.compatible(current, item) and not (
+                # "west of the vineyard there's a block of ...": a plot named by its kind
+                # alone, then a new one ("on the chilli side there's a plot of ..." is
+                # still the chilli plot)
+                item.role == "plot" and not current.has_crop and _existential(clause, pending)
+            ):
                 current.conflict = current.conflict or _plot_conflict(current, item, pending)
                 self._absorb(current, pending, before_head=False, counts=_counts_fields(item))
             else:
@@ -361,6 +367,25 @@ def _count(value: float, item: Item) -> int:
             hint="ask for at most 64 fields",
         )
     return int(value)
+
+
+#: "there's", "there is", "there are": words that bring in something new
+_EXISTENTIAL = frozenset({"s", "is", "are", "was", "were", "stands", "lies", "sits"})
+
+
+def _existential(clause: Clause, pending: Sequence[Item]) -> bool:
+    """'west of the vineyard there's a block of Navel oranges': after "there is" comes a
+    new field, not more words about the one before; so it does after "west of the
+    vineyard is a ..." (a place, then what stands there)."""
+    norms = [t.norm for item in pending for t in item.tokens]
+    if "theres" in norms or any(
+        a == "there" and b in _EXISTENTIAL for a, b in itertools.pairwise(norms)
+    ):
+        return True
+    placed = clause.link is not None and clause.link.role == "relation"
+    return placed and any(
+        a in _EXISTENTIAL and b in ("a", "an") for a, b in itertools.pairwise(norms)
+    )
 
 
 def _pre_head_start(pending: Sequence[Item]) -> int:

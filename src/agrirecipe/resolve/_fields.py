@@ -28,7 +28,13 @@ from agrirecipe.resolve._intent import (
 )
 from agrirecipe.resolve._lexicon import Item
 
-__all__ = ["ATTRIBUTE_ROLES", "FieldDraft", "FieldReading", "describe_intent"]
+__all__ = [
+    "ATTRIBUTE_ROLES",
+    "FieldDraft",
+    "FieldReading",
+    "describe_intent",
+    "give_respectively",
+]
 
 #: Roles of the words that describe a field (not name it).
 ATTRIBUTE_ROLES = (
@@ -307,3 +313,37 @@ def describe_intent(intent: FieldIntent) -> str:
     if intent.distinct_group is not None:
         stated.append(f"distinct group {intent.distinct_group}")
     return words + (f" ({', '.join(stated)})" if stated else "")
+
+
+def give_respectively(fields: Sequence[FieldDraft]) -> None:
+    """'Gala and Fuji blocks, 3.4 m and 3.5 m row spacing respectively': each value of a
+    "respectively" list goes to one of the fields named up to the last field that holds
+    the list, in order (the first value to the first of them)."""
+    lists: dict[int, list[Item]] = {}
+    holders: dict[int, int] = {}
+    for position, field in enumerate(fields):
+        for item in field.items:
+            if item.role != "geometry":
+                continue
+            for match in item.data["geometry"]:
+                if match.share is not None:
+                    start = match.share[2]
+                    if item not in lists.setdefault(start, []):
+                        lists[start].append(item)
+                    holders[start] = position
+    for start, items in lists.items():
+        count = items[0].data["geometry"][0].share[1]
+        named = fields[: holders[start] + 1]
+        if len(named) < count:
+            raise PromptError(
+                f"{' '.join(i.raw for i in items)!r} gives {count} values 'respectively', "
+                f"but only {len(named)} field(s) are named before it",
+                stage="resolve",
+                hint="name one field for each value, e.g. 'Gala and Fuji blocks, 3.4 m and "
+                "3.5 m row spacing respectively'",
+            )
+        for field in fields:
+            field.items[:] = [i for i in field.items if i not in items]
+        for item in items:
+            index = item.data["geometry"][0].share[0]
+            named[len(named) - count + index].items.append(item)

@@ -42,6 +42,10 @@ class GeometryMatch:
     first: int
     last: int
     text: str
+    #: "3.4 m and 3.5 m row spacing respectively": this value's place among the values
+    #: listed (index, how many, the first token of the list), each for one of the fields
+    #: listed before, in order.
+    share: tuple[int, int, int] | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -246,7 +250,66 @@ def find_geometry(tokens: Sequence[Token]) -> list[GeometryMatch]:
             for index in range(first, last):
                 claimed[index] = True
     found.sort(key=lambda m: m.first)
-    return found
+    return _respectively(tokens, found, claimed, tables)
+
+
+#: Words that join the values of a "respectively" list ("3.4 m and 3.5 m", "36, 40").
+_LIST_JOINS = frozenset({"and", ",", "&"})
+
+
+def _respectively(
+    tokens: Sequence[Token],
+    found: list[GeometryMatch],
+    claimed: list[bool],
+    tables: _Tables,
+) -> list[GeometryMatch]:
+    """'3.4 m and 3.5 m row spacing respectively', '36 and 40 rows respectively': the
+    values listed before a measure that "respectively" follows are the same measure,
+    one for each field listed before them, in order (the reader gives them out)."""
+    result: list[GeometryMatch] = []
+    for match in found:
+        ends = match.last < len(tokens) and tokens[match.last].norm == "respectively"
+        if not ends or match.share is not None:
+            result.append(match)
+            continue
+        unit = next(
+            (t.norm for t in tokens[match.first : match.last] if t.norm in tables.units), None
+        )
+        listed: list[GeometryMatch] = []
+        cursor = match.first
+        while cursor >= 2 and tokens[cursor - 1].norm in _LIST_JOINS:
+            # "3.4 m and", "3.4 and" (the unit of the measure), "36 and" (a count)
+            has_unit = tokens[cursor - 2].norm in tables.units and unit is not None
+            number_at = cursor - 3 if has_unit else cursor - 2
+            if number_at < 0 or any(claimed[number_at : cursor - 1]):
+                break
+            try:
+                number = _number(tokens[number_at].norm, tables.number_words)
+            except ValueError:
+                break
+            scale = tables.units[tokens[cursor - 2].norm if has_unit else unit] if unit else 1.0
+            raw = " ".join(t.raw for t in tokens[number_at : cursor - 1])
+            value = round(number * scale, 9)
+            _check(match.key, value, raw)
+            listed.insert(0, GeometryMatch(match.key, value, number_at, cursor - 1, raw))
+            cursor = number_at
+        if not listed:
+            result.append(match)
+            continue
+        count, start = len(listed) + 1, listed[0].first
+        for index, listed_match in enumerate(listed):
+            result.append(replace(listed_match, share=(index, count, start)))
+        last = match.last + 1  # "respectively" is read with its measure
+        result.append(
+            replace(
+                match,
+                last=last,
+                text=" ".join(t.raw for t in tokens[match.first : last]),
+                share=(count - 1, count, start),
+            )
+        )
+    result.sort(key=lambda m: m.first)
+    return result
 
 
 def _number(text: str, number_words: dict[str, float]) -> float:

@@ -25,8 +25,12 @@ _NOUNS = r"(?:block|plot|field|parcel|area|section|strip|zone|bay|compartment|tr
 _DEFINITION = re.compile(
     rf"\b(?i:{_NOUNS})\s+(?P<label>[A-H]|\d{{1,2}})\b\s*(?P<mark>[:,(\-–—]|(?i:is|has)\b)"
 )
+# "A = Roma, B = San Marzano": a bare letter given a crop by an equals sign
+_BARE_DEFINITION = re.compile(r"(?<![\w=])(?P<label>[A-H])\s*(?P<mark>=)(?!=)")
 # What a reference to a label follows: a relation word, or the label's noun.
-_BEFORE_REFERENCE = r"(?:of|to|from|beside|besides|by|and|than|next to|alongside|between)"
+_BEFORE_REFERENCE = (
+    r"(?:of|to|from|beside|besides|by|and|than|next to|alongside|between|put|place|with)"
+)
 
 #: The items a crop phrase keeps ("Jonagored apples"): crop, variety and category words.
 _NAMING = ("crop", "variety", "category")
@@ -39,7 +43,10 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
     label ("Block A = Jonagored apples"). Text with fewer than two labels that name
     crops is returned unchanged.
     """
-    definitions = list(_DEFINITION.finditer(text))
+    definitions = sorted(
+        [*_DEFINITION.finditer(text), *_BARE_DEFINITION.finditer(text)],
+        key=lambda m: m.start(),
+    )
     if len(definitions) < 2:
         return text, []
     names: dict[str, str] = {}
@@ -55,7 +62,7 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
     out = text
     for match in reversed(definitions):
         mark = match.group("mark")
-        keep = "" if mark in ":-–—" or mark.isalpha() else mark
+        keep = "" if mark in ":-–—=" or mark.isalpha() else mark
         out = out[: match.start()] + keep + out[match.end() :]
     for label, phrase in names.items():
         noun = rf"(?i:{_NOUNS})\s+"

@@ -47,7 +47,12 @@ from agrirecipe.resolve._decompose import (
     decompose,
     resolve_weak_varieties,
 )
-from agrirecipe.resolve._fields import ATTRIBUTE_ROLES, FieldReading, describe_intent
+from agrirecipe.resolve._fields import (
+    ATTRIBUTE_ROLES,
+    FieldReading,
+    describe_intent,
+    give_respectively,
+)
 from agrirecipe.resolve._geometry import find_geometry
 from agrirecipe.resolve._intent import (
     FieldIntent,
@@ -219,6 +224,7 @@ class PromptReader(FieldReading):
         ]
         relations += complete_orders(relations, owned)
         scene_season = self._apply_scene_items(scene_items, fields, hemisphere)
+        give_respectively(fields)
         intents = [self._field_intent(f, hemisphere) for f in fields]
         for index in range(1, len(intents)):  # "... & same size of romaine"
             if intents[index].size is None and any(
@@ -515,8 +521,15 @@ class PromptReader(FieldReading):
             # Rows and spacings describe one plot: the nearest field named ("each" shares them).
             geometry = [i for i in others if i.role == "geometry"]
             others = [i for i in others if i.role != "geometry"]
+            if before:
+                # "Gala and Fuji, 40 and 36 rows respectively": the list stays with the
+                # fields named before it (give_respectively shares it out)
+                listed = [i for i in geometry if any(m.share for m in i.data["geometry"])]
+                before[-1].items.extend(listed)
+                geometry = [i for i in geometry if i not in listed]
             if geometry and (
                 _shared_by_all(clauses, position)
+                or _shared_by_all_after(clauses, position)
                 # "8 rows each at 1.5 m": "each" inside the measure itself
                 or any(t.norm in ("each", "both") for i in geometry for t in i.tokens)
             ):
@@ -670,7 +683,9 @@ def _shared_by_all(clauses: Sequence[Clause], position: int) -> bool:
         previous = clauses[index - 1]
         if previous.mentions:
             return False
-        if any(i.role == "all" for i in previous.loose) or any(
+        # ("Each block is 40 rows x 150 m, rows 2.5 m apart": the "each" clause lent its
+        # words to every field, and the measures after it go with them)
+        if any(i.role == "all" for i in (*previous.loose, *previous.items)) or any(
             t.norm in ("each", "both")
             for i in previous.loose
             if i.role == "geometry"
@@ -678,6 +693,24 @@ def _shared_by_all(clauses: Sequence[Clause], position: int) -> bool:
         ):
             return True
         index -= 1
+    return False
+
+
+def _shared_by_all_after(clauses: Sequence[Clause], position: int) -> bool:
+    """Whether a measure clause begins a run of measures that ends with "in both" or "in
+    each" ("rows 6 m apart and trees 3 m apart in both")."""
+    index = position + 1
+    while index < len(clauses):
+        clause = clauses[index]
+        if clause.link is None or not listing(clause.link) or clause.mentions:
+            return False
+        if not clause.items or any(
+            i.role not in ("geometry", "filler", "all") for i in clause.items
+        ):
+            return False
+        if any(i.role == "all" for i in clause.items):
+            return True
+        index += 1
     return False
 
 

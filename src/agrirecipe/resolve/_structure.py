@@ -1152,7 +1152,11 @@ def merge_coreferences(
             # after a comma is the one earlier field it can be (if only one can).
             members = [r for m in reversed(kept) for r in (m.refinements[::-1] or [m])]
             candidates = [m for m in members if _compatible(builder, m, mention)]
-            if is_definite or len(candidates) == 1:
+            if first is not None and first.norm in _EACH and len(candidates) > 1:
+                # "two potato blocks, Bintje ... and Agria ... . Both blocks 36 rows":
+                # every member the list named
+                run = candidates
+            elif is_definite or len(candidates) == 1:
                 run = candidates[:1]
             elif bare and len(candidates) == len(members) and not names_variety:
                 # "two vineyard blocks: Chardonnay and Riesling. October, grapes ripe":

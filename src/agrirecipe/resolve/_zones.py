@@ -24,7 +24,18 @@ from agrirecipe.resolve._lexicon import DATA_DIR, Item, Token
 
 __all__ = ["ZoneMatch", "complete_orders", "find_zones", "zone_owners", "zone_relations"]
 
-_AXES = {"north": ("ns", 0), "south": ("ns", 2), "west": ("ew", 0), "east": ("ew", 2)}
+#: Where each zone lies on the north-south and east-west axes (0 first, 2 last).
+_PLACES: dict[str, dict[str, int]] = {
+    "north": {"ns": 0},
+    "south": {"ns": 2},
+    "west": {"ew": 0},
+    "east": {"ew": 2},
+    "northwest": {"ns": 0, "ew": 0},
+    "northeast": {"ns": 0, "ew": 2},
+    "southwest": {"ns": 2, "ew": 0},
+    "southeast": {"ns": 2, "ew": 2},
+}
+_ZONES = (*_PLACES, "middle")
 
 
 @dataclass(frozen=True, slots=True)
@@ -40,7 +51,7 @@ class ZoneMatch:
 def _patterns() -> tuple[tuple[str, re.Pattern[str]], ...]:
     data: dict[str, Any] = yaml.safe_load((DATA_DIR / "zones.yaml").read_text("utf-8"))
     patterns = []
-    for zone in ("north", "south", "west", "east", "middle"):
+    for zone in _ZONES:
         phrases = sorted((str(p) for p in data[zone]), key=len, reverse=True)
         alternation = "|".join(re.escape(p) for p in phrases)
         patterns.append((zone, re.compile(rf"(?<![a-z0-9])(?:{alternation})(?![a-z0-9])")))
@@ -87,22 +98,33 @@ def zone_relations(fields: Sequence[Sequence[Item]]) -> list[RelationIntent]:
             zones[index] = zone
     if len(set(zones.values())) < 2:
         return []
-    used = {_AXES[z][0] for z in zones.values() if z != "middle"}
+    used = {axis for z in zones.values() if z != "middle" for axis in _PLACES[z]}
     middle_axis = "ns" if "ns" in used else "ew"
+    places = {
+        index: {middle_axis: 1} if zone == "middle" else _PLACES[zone]
+        for index, zone in zones.items()
+    }
     relations: list[RelationIntent] = []
     axes: tuple[tuple[str, RelationKind], ...] = (("ns", "north_of"), ("ew", "west_of"))
     for axis, kind in axes:
+        across = "ew" if axis == "ns" else "ns"
         rows: dict[int, list[int]] = {}
-        for index, zone in zones.items():
-            where = (middle_axis, 1) if zone == "middle" else _AXES[zone]
-            if where[0] == axis:
-                rows.setdefault(where[1], []).append(index)
+        for index, place in places.items():
+            if axis in place:
+                rows.setdefault(place[axis], []).append(index)
         order = sorted(rows)
         for upper, lower in itertools.pairwise(order):
             for subject in rows[upper]:
-                relations.append(
-                    RelationIntent(kind=kind, subject=subject, objects=(rows[lower][0],))
+                # "NW quarter" lies north of the SW one, the one across on the other axis
+                other = next(
+                    (
+                        o
+                        for o in rows[lower]
+                        if places[o].get(across) == places[subject].get(across)
+                    ),
+                    rows[lower][0],
                 )
+                relations.append(RelationIntent(kind=kind, subject=subject, objects=(other,)))
         if order == [0, 1, 2]:  # "X on the left, Y in the middle, Z on the right"
             relations.extend(
                 RelationIntent(kind="between", subject=middle, objects=(rows[0][0], rows[2][0]))
