@@ -14,7 +14,7 @@ from __future__ import annotations
 import functools
 import math
 import re
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, replace
 from typing import Any
 
@@ -24,7 +24,14 @@ from agrirecipe._errors import PromptError
 from agrirecipe.resolve._intent import RowSpec
 from agrirecipe.resolve._lexicon import DATA_DIR, Token, tokenize, vocabulary
 
-__all__ = ["GeometryMatch", "find_geometry", "merge_geometry", "row_spec", "strip_geometry"]
+__all__ = [
+    "GeometryMatch",
+    "find_geometry",
+    "hoist_counted_crops",
+    "merge_geometry",
+    "row_spec",
+    "strip_geometry",
+]
 
 # Keys whose value is a whole number.
 _COUNTS = frozenset({"rows", "beds", "rows_per_bed", "plant_count", "plants_per_row"})
@@ -103,7 +110,8 @@ def _tables() -> _Tables:
     units: dict[str, float] = {str(k): float(v) for k, v in vocabulary()["length_units"].items()}
     areas: dict[str, float] = {str(k): float(v) for k, v in data["density_units"].items()}
     directions: dict[str, float] = {str(k): float(v) for k, v in words["directions"].items()}
-    number = rf"(?P<n>\d+(?:\.\d+)?|{_alternatives(number_words)})"
+    # a minus sign may stand before the number ("a row spacing of -75 cm": refused)
+    number = rf"(?:[-−–] )?(?P<n>\d+(?:\.\d+)?|{_alternatives(number_words)})"
     number2 = number.replace("?P<n>", "?P<n2>")
     # "about 6 m", "roughly 18 inches": a length said roughly is still that length
     about = rf"(?:(?:{_alternatives(words['approximately'])}) )?"
@@ -235,13 +243,15 @@ def find_geometry(tokens: Sequence[Token]) -> list[GeometryMatch]:
                     )
                 if second is None:
                     continue
-            raw = " ".join(t.raw for t in tokens[first:last])
-            if (
-                first
-                and tokens[first - 1].raw in _MINUS
-                and (tokens[first - 1].end == tokens[first].start)
-            ):
-                value, raw = -value, tokens[first - 1].raw + raw  # "-3 rows"
+                if match.groupdict().get("n2") and _negated(tokens, token_at(match.start("n2"))):
+                    second = -second  # "10 beds at -1.5 m bed spacing"
+            raw = _raw(tokens, first, last)
+            # "-3 rows", "a row spacing of -75 cm": a minus sign on the number
+            number_at = token_at(match.start("n")) if match.groupdict().get("n") else first
+            if _negated(tokens, number_at):
+                value = -value
+                if number_at == first:
+                    raw = tokens[first - 1].raw + raw
             _check(pattern.key, value, raw)
             found.append(GeometryMatch(pattern.key, value, first, last, raw))
             if pattern.key2 is not None and second is not None:
@@ -288,7 +298,7 @@ def _respectively(
             except ValueError:
                 break
             scale = tables.units[tokens[cursor - 2].norm if has_unit else unit] if unit else 1.0
-            raw = " ".join(t.raw for t in tokens[number_at : cursor - 1])
+            raw = _raw(tokens, number_at, cursor - 1)
             value = round(number * scale, 9)
             _check(match.key, value, raw)
             listed.insert(0, GeometryMatch(match.key, value, number_at, cursor - 1, raw))
@@ -304,12 +314,31 @@ def _respectively(
             replace(
                 match,
                 last=last,
-                text=" ".join(t.raw for t in tokens[match.first : last]),
+                text=_raw(tokens, match.first, last),
                 share=(count - 1, count, start),
             )
         )
     result.sort(key=lambda m: m.first)
     return result
+
+
+def _negated(tokens: Sequence[Token], index: int) -> bool:
+    """Whether a minus sign is written onto the number at ``tokens[index]`` ("-75")."""
+    return (
+        index > 0
+        and tokens[index - 1].raw in _MINUS
+        and tokens[index - 1].end == tokens[index].start
+    )
+
+
+def _raw(tokens: Sequence[Token], first: int, last: int) -> str:
+    """The words of ``tokens[first:last]`` as written ("-75 cm", "76 cm apart")."""
+    parts: list[str] = []
+    for index in range(first, last):
+        if index > first and tokens[index].start > tokens[index - 1].end:
+            parts.append(" ")
+        parts.append(tokens[index].raw)
+    return "".join(parts)
 
 
 def _number(text: str, number_words: dict[str, float]) -> float:
@@ -427,3 +456,29 @@ def strip_geometry(request: str) -> tuple[str, list[tuple[int, GeometryMatch]]]:
         cursor = end
     kept.append(request[cursor:])
     return "".join(kept), removed
+
+
+#: "12 maize rows at 75 cm", "40 carrot ridges, two rows per ridge": a count of rows
+#: with the crop between the number and the row noun (rows and ridges always; beds
+#: only before a measure, since "two strawberry beds" may be two plots).
+_COUNTED_CROP_ROWS = re.compile(
+    r"(?<![\w.,])(?P<n>\d+|(?i:two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|"
+    r"fifteen|twenty|thirty|forty|fifty|sixty))\s+"
+    r"(?P<words>[A-Za-z][\w'’-]*(?:\s+[A-Za-z][\w'’-]*)?)\s+"
+    r"(?P<noun>(?i:rows|ridges|drills|beds(?=\s*(?:,\s*)?(?:at|on|of|x|by|with|spaced|each)\s)))\b"
+)
+
+
+def hoist_counted_crops(text: str, tag: Callable[[str], Sequence[Any]]) -> str:
+    """``text`` with "12 maize rows" written "maize in 12 rows", so the number counts rows,
+    not fields. ``tag`` reads a phrase into lexicon items; only words that all name a
+    crop or variety move."""
+
+    def rewrite(match: re.Match[str]) -> str:
+        words = match.group("words")
+        items = [i for i in tag(words) if i.role != "separator"]
+        if not items or not all(i.has("crop", "variety") for i in items):
+            return match.group(0)
+        return f"{words} in {match.group('n')} {match.group('noun')}"
+
+    return _COUNTED_CROP_ROWS.sub(rewrite, text)

@@ -53,7 +53,7 @@ from agrirecipe.resolve._fields import (
     describe_intent,
     give_respectively,
 )
-from agrirecipe.resolve._geometry import find_geometry
+from agrirecipe.resolve._geometry import find_geometry, hoist_counted_crops
 from agrirecipe.resolve._intent import (
     FieldIntent,
     Hemisphere,
@@ -146,6 +146,7 @@ class PromptReader(FieldReading):
         text = spread_value_lists(expand_casual(prompt))
         text, labels = resolve_labels(text, lambda phrase: self.lexicon.tag(tokenize(phrase)))
         text = place_leading_directions(text)
+        text = hoist_counted_crops(text, lambda phrase: self.lexicon.tag(tokenize(phrase)))
         for note in labels:
             self.trace.append(TraceStep(stage="decompose", subject="label", detail=note))
         tokens = tokenize(text)
@@ -406,6 +407,14 @@ class PromptReader(FieldReading):
                 stage="resolve",
                 hint="name a crop, a variety or a kind of field, e.g. " + _EXAMPLES,
             )
+        scenery = [i.raw for i in items if _is_scenery(i)]
+        if scenery and all(c.norm in _ONLY_A_SCENE for c in containers):
+            # "a drone survey scene over the yard: two tractors, a sprayer and the shed"
+            raise PromptError(
+                f"{NOTHING_FOUND}: only scenery ({', '.join(repr(w) for w in scenery[:5])})",
+                stage="resolve",
+                hint="name a crop, a variety or a kind of field, e.g. " + _EXAMPLES,
+            )
         mention = Mention(items=[i for c in clauses for i in c.loose], clause=0)
         mention.heads.append(containers[0])
         mention.count = int(vocabulary()["containers"]["default_fields"])
@@ -474,12 +483,9 @@ class PromptReader(FieldReading):
                     )
                     # "... onions in 12 rows. Rows are 60 m.": a closing sentence of
                     # row measures is about every field's rows
-                    or (
-                        clause.link is not None
-                        and clause.link.norm in (".", "!")
-                        and any(i.role == "geometry" for i in clause.items)
-                        and all(i.role in ("geometry", "filler", "all") for i in clause.items)
-                    )
+                    # ("... Granny Smith. Tall spindle, 3.5 m between rows, trees 1 m
+                    # apart, rows 120 m long.": each clause of a sentence of measures)
+                    or _in_a_sentence_of_measures(clauses, position)
                 )
             ):
                 # "A next to B, young plants": closing words about "the plants" describe all.
@@ -566,6 +572,11 @@ class PromptReader(FieldReading):
                     for h in t.heads
                 )
             )
+            parallel = _parallel_fields(clauses, position, before) if geometry else []
+            if parallel:
+                for target in parallel:
+                    target.items.extend(geometry)
+                geometry = []
             for target in targets if shared_by_list or shared_noun else targets[-1:]:
                 target.items.extend(geometry)
         return scene
@@ -648,6 +659,11 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
             and (after is None or after.role not in ("plot", "head", "weak_variety", "category"))
         ):
             item.role = "filler"  # "on Gisela 6": a rootstock's or machine's name
+    # "between the two tracks", "three tractors": a number before scenery counts it
+    for item, following in itertools.pairwise(items):
+        if item.role == "number" and item.norm not in ("a", "an") and _is_scenery(following):
+            item.role = "filler"
+            item.data["counts_scenery"] = True
     # "on 20 April", "April 3rd": a day of the month is a date, not a count of fields
     words = [i for i in items if i.role != "separator" or i.norm not in (",",)]
     for index, item in enumerate(words):
@@ -665,6 +681,26 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
         ):
             item.role = "filler"
             item.data["date"] = True
+
+
+#: Words for the picture itself, not for a farm: with only scenery in them they ask for
+#: no field ("a drone survey scene over the equipment yard").
+_ONLY_A_SCENE = frozenset({"scene", "scenery", "environment", "simulation", "world", "setting"})
+
+
+def _purpose(item: Item) -> bool:
+    """A word naming what a request is for ("dataset", "test", "survey")."""
+    group = item.data.get("scenery") or next(
+        (sense.value for sense in item.senses_of("scenery")), None
+    )
+    return item.role in ("filler", "non_agricultural") and group in _PURPOSES
+
+
+def _is_scenery(item: Item) -> bool:
+    """A word for scenery ("tracks", "tractors", "sheds"), not for plants or plots."""
+    return item.role in ("filler", "non_agricultural") and bool(
+        item.data.get("scenery") or item.senses_of("scenery")
+    )
 
 
 def _day_of_month(item: Item) -> bool:
@@ -685,15 +721,81 @@ def _shared_by_all(clauses: Sequence[Clause], position: int) -> bool:
             return False
         # ("Each block is 40 rows x 150 m, rows 2.5 m apart": the "each" clause lent its
         # words to every field, and the measures after it go with them)
-        if any(i.role == "all" for i in (*previous.loose, *previous.items)) or any(
-            t.norm in ("each", "both")
-            for i in previous.loose
-            if i.role == "geometry"
-            for t in i.tokens
+        if (
+            any(i.role == "all" for i in (*previous.loose, *previous.items))
+            or any(
+                t.norm in ("each", "both")
+                for i in previous.loose
+                if i.role == "geometry"
+                for t in i.tokens
+            )
+            # "8 rows per block, 5 m between rows": measures said per plot
+            or any(
+                a.norm == "per" and b.role == "plot" for a, b in itertools.pairwise(previous.items)
+            )
         ):
             return True
         index -= 1
     return False
+
+
+_SENTENCE_ENDS = frozenset({".", "!", ";"})
+
+
+def _only_measures(clause: Clause) -> bool:
+    """A clause of row measures and words that say nothing of a field ("Tall spindle")."""
+    return not clause.mentions and all(
+        i.role in ("geometry", "filler", "all", "unknown")
+        or (i.role == "number" and i.norm in ("a", "an"))
+        for i in clause.items
+    )
+
+
+def _in_a_sentence_of_measures(clauses: Sequence[Clause], position: int) -> bool:
+    """Whether a clause of measures lies in a sentence that names no field."""
+    clause = clauses[position]
+    if not any(i.role == "geometry" for i in clause.items):
+        return False
+    index = position
+    while True:
+        current = clauses[index]
+        if not _only_measures(current):
+            return False
+        if current.link is not None and current.link.norm in _SENTENCE_ENDS:
+            return True
+        if current.link is None or index == 0:
+            return False
+        index -= 1
+
+
+def _parallel_fields(
+    clauses: Sequence[Clause], position: int, before: Sequence[Mention]
+) -> list[Mention]:
+    """'10 rows of beef tomatoes north of 10 rows of cherry tomatoes, 1.6 m between
+    rows': the fields of the sentence, when each states the same measures, so what
+    follows them in that sentence is about all of them ([] otherwise)."""
+    start = position
+    while start > 0 and not (
+        clauses[start].link is not None and clauses[start].link.norm in _SENTENCE_ENDS
+    ):
+        start -= 1
+    end = position + 1
+    while end < len(clauses) and not (
+        clauses[end].link is not None and clauses[end].link.norm in _SENTENCE_ENDS
+    ):
+        if clauses[end].mentions:
+            return []  # a field named later in the sentence takes what comes before it
+        end += 1
+    named = {id(m) for c in clauses[start:position] for m in c.mentions}
+    fields = [m for m in before if id(m) in named]
+    fields = list({id(m): m for m in fields}.values())
+    if len(fields) < 2 or any((m.count or 1) > 1 or m.refinements for m in fields):
+        return []
+    keys = [
+        frozenset(g.key for i in m.items if i.role == "geometry" for g in i.data["geometry"])
+        for m in fields
+    ]
+    return fields if keys[0] and all(k == keys[0] for k in keys) else []
 
 
 def _shared_by_all_after(clauses: Sequence[Clause], position: int) -> bool:
@@ -719,6 +821,22 @@ def _purpose_diseases(items: Sequence[Item], text: str) -> None:
     a dataset or robot is for says nothing about the plants' health (scenery words).
     'Apple-counting scene', 'fruit-detection plots': a crop joined by a hyphen to what a
     robot does names the task, not a field."""
+    for index, item in enumerate(items):
+        # "for a banana canopy-segmentation dataset": the crop a purpose is about
+        if item.role != "head" or index == 0:
+            continue
+        opener = index - 1
+        if items[opener].norm in ("a", "an", "the", "our", "my") and opener:
+            opener -= 1
+        if items[opener].norm != "for":
+            continue
+        for following in items[index + 1 : index + 5]:
+            if _purpose(following):
+                item.role = "filler"
+                item.data["scenery"] = "purposes"
+                break
+            if following.role not in ("unknown", "filler"):
+                break
     for item, following in itertools.pairwise(items):
         group = following.data.get("scenery") or next(
             (sense.value for sense in following.senses_of("scenery")), None

@@ -360,10 +360,14 @@ def _words(text: str) -> set[str]:
 def _validate(intent: SceneIntent, context: ResolveContext) -> None:
     """Catch intents that name what the hierarchy does not hold (any strategy can err)."""
     hierarchy = context.hierarchy
-    # "the": references to labelled fields are spelled "the <crop>" ("north of A")
+    # "the": references to labelled fields are spelled "the <crop>" ("north of A");
+    # "in": "12 maize rows" is read as "maize in 12 rows"
     expanded = expand_casual(intent.prompt)
     prompt_words = (
-        _words(intent.prompt) | _words(expanded) | _words(spread_value_lists(expanded)) | {"the"}
+        _words(intent.prompt)
+        | _words(expanded)
+        | _words(spread_value_lists(expanded))
+        | {"the", "in"}
     )
     for index, field in enumerate(intent.fields):
         path = f"fields[{index}]"

@@ -11,8 +11,9 @@ from __future__ import annotations
 
 import itertools
 from collections.abc import Sequence
-from typing import Any
+from typing import Any, get_args
 
+from agrirecipe.recipe import RelationKind
 from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._intent import RelationIntent, TraceStep
 from agrirecipe.resolve._lexicon import Item
@@ -238,8 +239,8 @@ def _last_named(mentions: Sequence[Mention]) -> list[Mention]:
 def _landmark(clause: Clause) -> str | None:
     """The scenery a relation's object is ("east of the yard ..."), or None."""
     for item in clause.items:
-        if item.norm in _ARTICLES:
-            continue
+        if item.norm in _ARTICLES or item.data.get("counts_scenery"):
+            continue  # "between the two tracks"
         if (item.role == "filler" and "scenery" in item.data) or item.role == "non_agricultural":
             return item.norm
         return None
@@ -386,8 +387,8 @@ def _pair(
     """Field-level relations for a relation between mentions (plural ones expand)."""
     subject_fields = members.get(id(subject), [])
     object_fields = [members.get(id(o), []) for o in objects]
-    if not subject_fields or not all(object_fields):
-        return []
+    if not subject_fields or not all(object_fields) or kind not in get_args(RelationKind):
+        return []  # (a word read as a relation that no field relation is: not used)
     trace.append(
         TraceStep(
             stage="decompose",
@@ -493,6 +494,19 @@ def _relation_mentions(
     attached: bool = False,
 ) -> tuple[Any, Mention, tuple[Mention, ...]] | None:
     kind = link.data.get("value", "between") if link.role != "between" else "between"
+    if kind == "flanks":
+        # "Durondeau and Williams pears on either side of a Jonagold block"
+        if not after:
+            return None
+        if pronoun and before:
+            # "the Cabernet, and either side of it Chardonnay ... and Pinot Nero ...": it
+            # lies between the two named after
+            return ("between", before[-1], (after[0], after[1])) if len(after) >= 2 else None
+        if before and (before[-1].count or 1) >= 2:
+            return "between", after[0], (before[-1], before[-1])
+        if len(before) >= 2:
+            return "between", after[0], (before[-2], before[-1])
+        return None
     if pronoun and not after and len(before) >= 2:
         # "a couple of wheat fields and a maize field in between them".
         if kind == "between" and (before[-2].count or 1) >= 2:
@@ -512,15 +526,6 @@ def _relation_mentions(
             # "wheat in the north, maize in the south, and in between them a strip of
             # strawberries": the two fields named last
             return kind, after[0], (before[-2], before[-1])
-    if kind == "flanks":
-        # "Durondeau and Williams pears on either side of a Jonagold block"
-        if not after:
-            return None
-        if before and (before[-1].count or 1) >= 2:
-            return "between", after[0], (before[-1], before[-1])
-        if len(before) >= 2:
-            return "between", after[0], (before[-2], before[-1])
-        return None
     if link.role == "between":
         if after and before and (after[0].count or 1) >= 2:
             return "between", before[-1], (after[0], after[0])

@@ -1,0 +1,138 @@
+"""Engineering requests of blind set g5 (issue 8): crop rows counted with the crop in
+between ("12 maize rows"), spacing said "each way" or as a bare grid, counts of plants,
+densities in millions, bearings, grass headlands, minus signs, closing measures shared
+by parallel plots, purposes that name a crop, and scenes of scenery only."""
+
+from __future__ import annotations
+
+import pytest
+
+from agrirecipe import PromptError, generate
+from agrirecipe.recipe import SceneRecipe
+
+
+def recipe(prompt: str) -> SceneRecipe:
+    return generate(prompt, resolver="hybrid").recipe
+
+
+@pytest.mark.parametrize(
+    ("prompt", "rows"),
+    [("12 maize rows at 75 cm", 12), ("twenty Roma rows, 1.5 m apart", 20)],
+)
+def test_a_crop_between_the_number_and_rows_is_one_field(prompt: str, rows: int) -> None:
+    (field,) = recipe(prompt).fields
+    assert field.row_count == rows
+
+
+def test_counted_crop_ridges_are_beds_not_fields() -> None:
+    scene = recipe(
+        "Weeding robot trial: 40 carrot ridges at 75 cm with two rows per ridge, next to an "
+        "onion plot drilled at 30 cm between rows and 10 cm in-row."
+    )
+    assert [f.crop for f in scene.fields] == ["Carrot", "Onion"]
+    assert scene.fields[0].bed_count == 40
+    assert scene.fields[0].agronomy.rows_per_bed == 2
+
+
+def test_two_strawberry_beds_without_a_measure_are_still_two_plots() -> None:
+    assert len(recipe("two strawberry beds next to a lettuce bed").fields) == 3
+
+
+@pytest.mark.parametrize(
+    ("prompt", "spacing"),
+    [
+        ("Ladyfinger bananas, plants 3 m apart each way", (3.0, 3.0)),
+        ("Durondeau and Bartlett pears, 3.5 m x 1 m, rows north-south", (3.5, 1.0)),
+        ("Dwarf Cavendish at 2 m x 2 m", (2.0, 2.0)),
+    ],
+)
+def test_planting_grids(prompt: str, spacing: tuple[float, float]) -> None:
+    for field in recipe(prompt).fields:
+        assert (field.agronomy.row_spacing_m, field.agronomy.in_row_spacing_m) == spacing
+
+
+def test_a_count_of_them_counts_plants_not_fields() -> None:
+    (field,) = recipe(
+        "Pear trees, 1,000 of them at 3.5 x 1.2 m, fire blight present. Disease-detection "
+        "drone flights."
+    ).fields
+    assert field.crop == "Pear" and field.health == "Ill"
+    assert field.agronomy.in_row_spacing_m == 1.2
+    assert "plant_count" in field.stated
+
+
+def test_density_in_millions_bearing_and_grass_headland() -> None:
+    carrots = recipe("Imperator carrots sown at 2 million plants/ha on 1.5 m beds with 4 rows")
+    assert carrots.fields[0].plants_per_ha == pytest.approx(2_000_000, rel=0.01)
+    maize = recipe("Maize at 80,000 plants per hectare on 75 cm rows bearing 60 degrees")
+    assert maize.fields[0].row_bearing_deg == pytest.approx(60)
+    bintje = recipe("Bintje in full flower, ridges on 75 cm, a 6 m grass headland")
+    assert bintje.fields[0].geometry.headland_m == 6
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "Potato plot for the robot with a row spacing of -75 cm and 30 cm in-row.",
+        "Strawberry beds for the picker: 10 beds at -1.5 m bed spacing, 2 rows per bed.",
+        "Conference pears in rows 4 m apart but with the trees at zero spacing in the row",
+    ],
+)
+def test_negative_and_zero_spacings_are_refused(prompt: str) -> None:
+    with pytest.raises(PromptError, match="positive number"):
+        recipe(prompt)
+
+
+def test_measures_after_parallel_plots_go_to_both() -> None:
+    scene = recipe(
+        "Pollination drone: 10 rows of beef tomatoes north of 10 rows of cherry tomatoes, "
+        "1.6 m between rows, 50 cm in-row."
+    )
+    assert [f.agronomy.row_spacing_m for f in scene.fields] == [1.6, 1.6]
+    assert [f.agronomy.in_row_spacing_m for f in scene.fields] == [0.5, 0.5]
+
+
+def test_a_sentence_of_measures_after_a_description_goes_to_every_field() -> None:
+    scene = recipe(
+        "8 rows of Royal Gala and, directly south of them, 8 rows of Granny Smith. Tall "
+        "spindle, 3.5 m between rows, trees 1 m apart, rows 120 m long on a bearing of 15°."
+    )
+    for field in scene.fields:
+        assert field.agronomy.row_spacing_m == 3.5
+        assert field.row_length_m == pytest.approx(120)
+        assert field.row_bearing_deg == pytest.approx(15)
+
+
+def test_measures_per_block_go_to_every_block() -> None:
+    scene = recipe("Lapins north of Regina, 8 rows per block, 5 m between rows, 3 m between trees.")
+    assert [f.agronomy.row_spacing_m for f in scene.fields] == [5.0, 5.0]
+    assert [f.agronomy.in_row_spacing_m for f in scene.fields] == [3.0, 3.0]
+
+
+def test_a_crop_named_in_a_purpose_is_not_a_field() -> None:
+    scene = recipe(
+        "Dwarf Cavendish at 2 m x 2 m next to Lady Finger at 3 m x 3 m, 1 ha each, for a "
+        "banana canopy-segmentation dataset."
+    )
+    assert [f.variety for f in scene.fields] == ["Cavendish", "Lady Finger"]
+
+
+def test_a_scene_of_scenery_only_is_refused() -> None:
+    with pytest.raises(PromptError, match="only scenery"):
+        recipe(
+            "Set up a drone survey scene over the equipment yard: two tractors, a sprayer, "
+            "the machine shed and an overcast sky."
+        )
+    assert len(recipe("a farm scene").fields) == 3
+
+
+def test_either_side_of_it_places_the_field_between() -> None:
+    scene = recipe(
+        "Between the two tracks sits the Cabernet, and either side of it we've planted "
+        "Chardonnay to the west and Pinot Nero to the east."
+    )
+    cabernet, chardonnay, pinot = (f.id for f in scene.fields)
+    assert len(scene.fields) == 3
+    assert ("between", cabernet, (chardonnay, pinot)) in {
+        (r.kind, r.subject, r.objects) for r in scene.relations
+    }
