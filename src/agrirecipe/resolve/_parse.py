@@ -742,6 +742,12 @@ def _shared_by_all(clauses: Sequence[Clause], position: int) -> bool:
 _SENTENCE_ENDS = frozenset({".", "!", ";"})
 
 
+def _ends_a_sentence(clause: Clause) -> bool:
+    """Whether the clause begins a new sentence ("...; fruit ready", "... . Rows ...")."""
+    link = clause.link
+    return link is not None and link.norm in _SENTENCE_ENDS
+
+
 def _only_measures(clause: Clause) -> bool:
     """A clause of row measures and words that say nothing of a field ("Tall spindle")."""
     return not clause.mentions and all(
@@ -761,7 +767,7 @@ def _in_a_sentence_of_measures(clauses: Sequence[Clause], position: int) -> bool
         current = clauses[index]
         if not _only_measures(current):
             return False
-        if current.link is not None and current.link.norm in _SENTENCE_ENDS:
+        if _ends_a_sentence(current):
             return True
         if current.link is None or index == 0:
             return False
@@ -775,14 +781,10 @@ def _parallel_fields(
     rows': the fields of the sentence, when each states the same measures, so what
     follows them in that sentence is about all of them ([] otherwise)."""
     start = position
-    while start > 0 and not (
-        clauses[start].link is not None and clauses[start].link.norm in _SENTENCE_ENDS
-    ):
+    while start > 0 and not _ends_a_sentence(clauses[start]):
         start -= 1
     end = position + 1
-    while end < len(clauses) and not (
-        clauses[end].link is not None and clauses[end].link.norm in _SENTENCE_ENDS
-    ):
+    while end < len(clauses) and not _ends_a_sentence(clauses[end]):
         if clauses[end].mentions:
             return []  # a field named later in the sentence takes what comes before it
         end += 1
