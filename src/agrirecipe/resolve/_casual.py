@@ -30,6 +30,14 @@ def _forms() -> tuple[re.Pattern[str], dict[str, str]]:
     return pattern, forms
 
 
+@functools.cache
+def _lower_forms() -> tuple[re.Pattern[str], dict[str, str]]:
+    data: dict[str, Any] = yaml.safe_load((DATA_DIR / "casual.yaml").read_text("utf-8"))
+    forms = {str(k): str(v) for k, v in data.get("lower_forms", {}).items()}
+    alternation = "|".join(re.escape(form) for form in sorted(forms, key=len, reverse=True))
+    return re.compile(rf"(?<=\s)(?:{alternation})(?=\s)"), forms
+
+
 def expand_casual(prompt: str) -> str:
     """``prompt`` with every texting form replaced by its words."""
     pattern, forms = _forms()
@@ -38,4 +46,6 @@ def expand_casual(prompt: str) -> str:
         key = re.sub(r"\s+", " ", match.group(0).lower())
         return f" {forms[key]} " if forms[key] else " "
 
-    return pattern.sub(replace, prompt)
+    lower, lower_forms = _lower_forms()
+    text = pattern.sub(replace, prompt)
+    return lower.sub(lambda match: lower_forms[match.group(0)], text)

@@ -197,6 +197,10 @@ class PromptReader(FieldReading):
         mentions = merge_appositive_plots(clauses, mentions)
         mentions = drop_list_headings(clauses, mentions)
         apply_each_side(clauses)
+        for clause in clauses:
+            # "... and there's a duck pond in the middle": the zone of scenery, not a field
+            if not clause.mentions and any(_is_scenery(i) for i in clause.loose):
+                clause.loose = [i for i in clause.loose if i.role != "zone"]
         scene_items = self._attach_loose(clauses, mentions)
         for mention in mentions:
             for sub in (mention, *mention.refinements):

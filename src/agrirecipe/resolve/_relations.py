@@ -333,6 +333,12 @@ def _directed_row(
     if len(fields) < 2:
         warnings.append(f"ignored {link.raw!r}: it needs two or more fields before it")
         return []
+    if link.norm.startswith("looking") and any(
+        i.role == "zone" for c in clauses[position:] for m in c.mentions for i in m.items
+    ):
+        # "Looking north: wheat at the far north end, ... strawberries closest to me":
+        # the zones place the fields; the view only says where the viewer faces
+        return []
     kind = _TOWARDS[str(link.data["value"])]
     trace.append(
         TraceStep(
@@ -681,6 +687,8 @@ def following_list(
     for index in range(position + 1, len(clauses)):
         clause = clauses[index]
         if group and not listing(clause.link):
+            if not clause.mentions and all(i.role == "filler" for i in clause.items):
+                continue  # "potatoes closest to me, then the wheat": placed by the viewer
             break
         if (
             not group

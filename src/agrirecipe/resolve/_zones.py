@@ -49,8 +49,10 @@ class ZoneMatch:
 
 @functools.cache
 def _patterns() -> tuple[tuple[str, re.Pattern[str]], ...]:
+    """(zone, pattern) for each zone, after ("order", pattern) for the words that are not."""
     data: dict[str, Any] = yaml.safe_load((DATA_DIR / "zones.yaml").read_text("utf-8"))
-    patterns = []
+    orders = "|".join(re.escape(str(p)) for p in sorted(data["orders"], key=len, reverse=True))
+    patterns = [("order", re.compile(rf"(?<![a-z0-9])(?:{orders})(?![a-z0-9])"))]
     for zone in _ZONES:
         phrases = sorted((str(p) for p in data[zone]), key=len, reverse=True)
         alternation = "|".join(re.escape(p) for p in phrases)
@@ -80,7 +82,8 @@ def find_zones(tokens: Sequence[Token], claimed: Sequence[bool] = ()) -> list[Zo
             last = next((i for i, s in enumerate(starts) if s >= end), len(tokens))
             if first is None or any(taken[first:last]):
                 continue
-            found.append(ZoneMatch(zone, first, last))
+            if zone != "order":
+                found.append(ZoneMatch(zone, first, last))
             for index in range(first, last):
                 taken[index] = True
     sides = {m.zone for m in found if m.zone != "middle"}
