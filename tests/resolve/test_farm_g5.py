@@ -110,3 +110,76 @@ def test_hay_shed_is_scenery() -> None:
 )
 def test_new_visual_cues(prompt: str, attribute: str, value: str) -> None:
     assert getattr(recipe(prompt).fields[0], attribute) == value
+
+
+@pytest.mark.parametrize(
+    ("prompt", "crops"),
+    [
+        ("cabbages and onions in 2 plots w/ a sprayer driving thru", ["Cabbage", "Onion"]),
+        ("Sturon and Walla Walla onions in adjacent 6 x 50 m strips", ["Onion", "Onion"]),
+        ("Durondeau and Bartlett pears in neighbouring blocks", ["Pear", "Pear"]),
+    ],
+)
+def test_plots_a_list_is_grown_in_are_its_fields(prompt: str, crops: list[str]) -> None:
+    assert [f.crop for f in recipe(prompt).fields] == crops
+
+
+def test_measures_after_a_lists_plots_go_to_each() -> None:
+    scene = recipe(
+        "Sturon and Walla Walla onions in adjacent 6 x 50 m strips, rows 30 cm apart and "
+        "8 cm in-row."
+    )
+    assert [f.agronomy.in_row_spacing_m for f in scene.fields] == [0.08, 0.08]
+    assert [f.geometry.size_m for f in scene.fields] == [(6.0, 50.0), (6.0, 50.0)]
+
+
+def test_both_fields_named_first_are_two() -> None:
+    scene = recipe("Both cereal fields beside the grain dryer have yellow rust this summer.")
+    assert len(scene.fields) == 2
+    assert {f.health for f in scene.fields} == {"Ill"}
+
+
+def test_a_weak_variety_placed_against_its_crop_is_that_crop() -> None:
+    scene = recipe(
+        "Sonata in 10 beds north of Malling Centenary in 10 beds. Bed centres 1.3 m, 2 rows "
+        "per bed, 25 cm between plants."
+    )
+    assert [f.variety for f in scene.fields] == ["Sonata", "Malling Centenary"]
+    assert [f.agronomy.row_spacing_m for f in scene.fields] == [1.3, 1.3]
+
+
+def test_members_listed_without_commas() -> None:
+    scene = recipe("onions (red baron) between 2 carrot fields, one nantes one chantenay")
+    assert [f.variety for f in scene.fields] == ["Red Baron", "Nantes", "Chantenay"]
+
+
+def test_the_other_after_a_size_is_the_next_member() -> None:
+    scene = recipe("2 maize fields 75cm rows, 1 of them 5 ha the other 3 ha")
+    assert [round(f.geometry.area_m2) for f in scene.fields] == [50_000, 30_000]
+
+
+def test_slashed_fractions_and_weak_varieties_after_of() -> None:
+    scene = recipe("1/2 acre of russets & a 100 ft by 200 ft plot of sturon onions south of it")
+    potato, onion = scene.fields
+    assert (potato.crop, potato.variety) == ("Potato", "Russet Burbank")
+    assert potato.geometry.area_m2 == pytest.approx(4046.8564 / 2, rel=0.01)
+    assert ("south_of", onion.id, (potato.id,)) in relations(scene)
+
+
+def test_a_total_area_is_not_a_fields_size() -> None:
+    scene = recipe("we farm about 4 ha in total - 2 ha of potatoes and the last 2 ha is onions")
+    assert [f.crop for f in scene.fields] == ["Potato", "Onion"]
+    assert [round(f.geometry.area_m2) for f in scene.fields] == [20_000, 20_000]
+
+
+def test_words_about_one_crops_plants_go_to_that_crop() -> None:
+    scene = recipe(
+        "The Riesling vineyard runs along the north side of the Fuji orchard. Half the vines "
+        "show downy mildew; the apples are colouring up nicely."
+    )
+    assert [(f.crop, f.health) for f in scene.fields] == [("Grape", "Ill"), ("Apple", "Healthy")]
+
+
+def test_bare_vines_are_still_vines() -> None:
+    (field,) = recipe("Bare vines in the snow, every post capped with white").fields
+    assert (field.crop, field.season) == ("Grape", "Winter")

@@ -48,4 +48,17 @@ def expand_casual(prompt: str) -> str:
 
     lower, lower_forms = _lower_forms()
     text = pattern.sub(replace, prompt)
-    return lower.sub(lambda match: lower_forms[match.group(0)], text)
+    text = lower.sub(lambda match: lower_forms[match.group(0)], text)
+    # "2 carrot fields, one nantes one chantenay": a list of members without commas
+    text = _ONE_AFTER_ONE.sub(r"\g<first>, \g<second>", text)
+    # "1 of them 5 ha the other 3 ha": a measure ends one member, "the other" begins the next
+    return _OTHER_AFTER_MEASURE.sub(r"\g<unit>, ", text)
+
+
+_OTHER_AFTER_MEASURE = re.compile(
+    r"\b(?P<unit>ha|hectares?|acres?|m|metres|meters|rows)\s+(?=(?i:the others?)\b)"
+)
+
+_ONE_AFTER_ONE = re.compile(
+    r"(?P<first>\b(?i:one|1)\s+(?!of\b|each\b|another\b)[A-Za-z][\w'-]*)\s+(?P<second>(?i:one|1)\b)"
+)

@@ -91,6 +91,7 @@ from agrirecipe.resolve._structure import (
     share_counted_fields,
     share_leading_attributes,
     share_trailing_attributes,
+    strong_crops,
 )
 from agrirecipe.resolve._zones import complete_orders, find_zones, zone_owners, zone_relations
 
@@ -168,6 +169,8 @@ class PromptReader(FieldReading):
         prompt_latitude, latitude_text, items = read_latitude(text, items)
         items = read_sizes(read_heights(items))
         _measures_are_not_counts(items)
+        _plots_of_a_list(items)
+        _totals_are_not_sizes(items)
         self._reject_scenery(items)
         self._reject_other_crops(items)
         builder = MentionBuilder(self.crop_categories)
@@ -528,6 +531,7 @@ class PromptReader(FieldReading):
             else:
                 targets = coordinated(clauses, position)
                 targets = _past_a_reference(clauses, position, targets)
+                targets = _described_crop(clause, before) or targets
             # Rows and spacings describe one plot: the nearest field named ("each" shares them).
             geometry = [i for i in others if i.role == "geometry"]
             others = [i for i in others if i.role != "geometry"]
@@ -581,7 +585,10 @@ class PromptReader(FieldReading):
                 for target in parallel:
                     target.items.extend(geometry)
                 geometry = []
-            for target in targets if shared_by_list or shared_noun else targets[-1:]:
+            # "Durondeau and Bartlett pears in neighbouring blocks, 3.5 m x 1 m": measures
+            # said after the plots a list is grown in are each plot's
+            in_plots = len(targets) > 1 and _after_list_plots(clauses, position)
+            for target in targets if shared_by_list or shared_noun or in_plots else targets[-1:]:
                 target.items.extend(geometry)
         return scene
 
@@ -698,6 +705,101 @@ def _purpose(item: Item) -> bool:
         (sense.value for sense in item.senses_of("scenery")), None
     )
     return item.role in ("filler", "non_agricultural") and group in _PURPOSES
+
+
+#: Words between "in" and the plots a list of crops is grown in ("in adjacent strips").
+_PLOT_ADJECTIVES = frozenset(
+    {"adjacent", "neighbouring", "neighboring", "separate", "parallel", "their", "own", "its"}
+)
+_SENTENCE_MARKS = frozenset({".", "!", "?", ";"})
+
+
+#: Words after a size that make it the farm's total ("40 ha in total", "60 ha all told").
+_TOTALS = (
+    ("in", "total"),
+    ("total",),
+    ("altogether",),
+    ("overall",),
+    ("all", "told"),
+    ("in", "all"),
+)
+
+
+def _totals_are_not_sizes(items: Sequence[Item]) -> None:
+    """'we farm about 40 ha in total - 25 ha of wheat, ...': a total is not a field's size."""
+    norms = [i.norm for i in items]
+    for index, item in enumerate(items):
+        if item.role != "size":
+            continue
+        after = tuple(norms[index + 1 : index + 3])
+        if any(after[: len(words)] == words for words in _TOTALS):
+            item.role = "filler"
+            item.data["total"] = True
+
+
+def _described_crop(clause: Clause, before: Sequence[Mention]) -> list[Mention]:
+    """'The Riesling vineyard ... of the Fuji orchard. Half the vines show mildew': words
+    about the plants of one crop go to the last field of that crop ([] if none)."""
+    crops: set[str] = set()
+    for item in clause.loose:
+        crops |= set(item.data.get("describes", ()))
+    if not crops:
+        return []
+    fields = [m for m in before if strong_crops(m) & crops]
+    return fields[-1:]
+
+
+def _after_list_plots(clauses: Sequence[Clause], position: int) -> bool:
+    """Whether the sentence so far named the plots of a list ("... in adjacent strips")."""
+    for index in range(position, -1, -1):
+        if any(i.data.get("list_plots") for i in clauses[index].items):
+            return True
+        if _ends_a_sentence(clauses[index]):
+            return False
+    return False
+
+
+def _plots_of_a_list(items: Sequence[Item]) -> None:
+    """'cabbages and onions in 2 plots', 'Sturon and Walla Walla onions in adjacent
+    6 x 50 m strips': plots a list of crops is grown in are the list's own fields, one
+    each, not more fields (the plot word and its count are read as said of them)."""
+    for index, item in enumerate(items):
+        if item.norm != "in" or index == 0:
+            continue
+        cursor, between = index + 1, list[Item]()
+        while (
+            cursor < len(items)
+            and len(between) < 3
+            and (
+                items[cursor].role in ("number", "size")
+                or items[cursor].norm in _PLOT_ADJECTIVES
+                or (
+                    items[cursor].role in ("relation", "trailer")
+                    and items[cursor].norm in _PLOT_ADJECTIVES
+                )
+            )
+        ):
+            between.append(items[cursor])
+            cursor += 1
+        if cursor >= len(items):
+            continue
+        plot = items[cursor]
+        spec = plot.data.get("value") if plot.role == "plot" else None
+        if not isinstance(spec, dict) or not spec.get("plural") or spec.get("individual"):
+            continue
+        crops = 0
+        for before in reversed(items[:index]):
+            if before.role == "separator" and before.norm in _SENTENCE_MARKS:
+                break
+            if before.role == "head" and before.has("crop", "variety"):
+                crops += 1
+        counted = [i for i in between if i.role == "number"]
+        if crops < 2 or (counted and float(counted[0].data.get("value", 0)) != crops):
+            continue
+        plot.role = "filler"
+        plot.data["list_plots"] = True
+        for word in counted:
+            word.role = "filler"
 
 
 def _is_scenery(item: Item) -> bool:

@@ -36,10 +36,11 @@ __all__ = [
     "share_counted_fields",
     "share_leading_attributes",
     "share_trailing_attributes",
+    "strong_crops",
 ]
 
 
-def _strong_crops(mention: Mention) -> set[str]:
+def strong_crops(mention: Mention) -> set[str]:
     return {crop for crop, _, weak in mention.interpretations or () if not weak}
 
 
@@ -62,13 +63,14 @@ def promote_weak_varieties(clauses: Sequence[Clause], builder: MentionBuilder) -
         if (
             following is not None
             and following.link is not None
-            and following.link.role == "conjunction"
+            # "navel and valencia oranges"; "Sonata in 10 beds north of Malling Centenary"
+            and following.link.role in ("conjunction", "relation", "between")
             and following.mentions
         ):
             neighbours.append(following.mentions[0])
         neighbours += [m for c in reversed(clauses[:position]) for m in reversed(c.mentions)]
         for neighbour in neighbours:
-            crops = _strong_crops(neighbour)
+            crops = strong_crops(neighbour)
             senses = [s for s in weak[0].senses_of("variety") if s.crop in crops]
             if not senses:
                 continue
@@ -79,7 +81,12 @@ def promote_weak_varieties(clauses: Sequence[Clause], builder: MentionBuilder) -
         else:
             crops = {s.crop for s in weak[0].senses_of("variety") if s.crop}
             in_list = clause.link is not None and (listing(clause.link) or clause.link.norm == ":")
-            if len(crops) == 1 and weak[0].tokens[0].capitalised and in_list:
+            at = clause.loose.index(weak[0])
+            # "half acre of russets": what a size or a plot is "of" is a crop
+            planted = at > 0 and clause.loose[at - 1].role == "of"
+            if len(crops) == 1 and planted:
+                _promote(clause, weak[0], weak[0].senses_of("variety")[0])
+            elif len(crops) == 1 and weak[0].tokens[0].capitalised and in_list:
                 # "west to east: Lollo, then Imperator carrots": a capitalised name in a
                 # list of fields is its variety even when no field beside it is its crop
                 _promote(clause, weak[0], weak[0].senses_of("variety")[0])
@@ -124,7 +131,7 @@ def _promote_into_plot(clauses: Sequence[Clause], clause: Clause) -> None:
     for before, item in itertools.pairwise(ordered):
         if item.role not in ("weak_variety", "filler") or before.role != "of":
             continue
-        named = {c for c2 in clauses[: clause.index] for m in c2.mentions for c in _strong_crops(m)}
+        named = {c for c2 in clauses[: clause.index] for m in c2.mentions for c in strong_crops(m)}
         senses = [s for s in item.senses_of("variety") if s.crop in named]
         if senses:
             item.role = "head"
@@ -256,7 +263,7 @@ def _first_word(mention: Mention) -> Item | None:
 
 def _fits(sub: Mention, parent: Mention, crop_categories: dict[str, str]) -> bool:
     """Whether ``sub`` can describe members of ``parent``."""
-    sub_crops = _strong_crops(sub)
+    sub_crops = strong_crops(sub)
     if sub.plot is not None and sub.plot["narrows"] and not sub_crops:
         options = set(sub.plot["options"])
         if sub.plot["category"] is not None:
@@ -266,7 +273,7 @@ def _fits(sub: Mention, parent: Mention, crop_categories: dict[str, str]) -> boo
         sub_crops = {c for c, cat in crop_categories.items() if cat == sub.category}
     if not sub_crops:
         return True
-    parent_crops = _strong_crops(parent)
+    parent_crops = strong_crops(parent)
     if parent_crops:
         return bool(parent_crops & sub_crops)
     if parent.category is not None:
@@ -356,7 +363,7 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
                 # "two plots: a pear orchard, and north of it a strawberry field"
                 or (
                     enumerating
-                    and not _strong_crops(parent)
+                    and not strong_crops(parent)
                     and _fits(clause.mentions[0], parent, crop_categories)
                 )
             )
@@ -366,7 +373,7 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             parent is not None
             and link is not None
             and link.norm == ":"
-            and not _strong_crops(parent)
+            and not strong_crops(parent)
             and len(clause.mentions) >= 2
             and all(m.count is not None and m.has_crop for m in clause.mentions)
             and sum(m.count or 0 for m in clause.mentions) == parent.count
@@ -389,7 +396,7 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             # A generic plural mention followed by ':' lists its members; so does a
             # plural crop followed by its varieties ("two beds of lettuce, lollo rosso
             # and bibb").
-            lists_members = not _strong_crops(parent) and (
+            lists_members = not strong_crops(parent) and (
                 enumerating
                 or link.norm in (":", "-", "—", "–")
                 # "two blocks, 150 cherry trees ... and 300 apple trees ...": as many
@@ -575,11 +582,11 @@ def _names_variety(mention: Mention) -> bool:
 
 def _names_again(member: Mention, sub: Mention) -> bool:
     """Whether ``sub`` (no count, no variety, no plot of its own) names ``member``'s crop."""
-    crops = _strong_crops(sub)
+    crops = strong_crops(sub)
     return (
         sub.count is None
         and bool(crops)
-        and crops == _strong_crops(member)
+        and crops == strong_crops(member)
         and not _names_variety(sub)
         and not any(h.role == "plot" for h in sub.heads)
     )
@@ -587,7 +594,7 @@ def _names_again(member: Mention, sub: Mention) -> bool:
 
 def _names_varieties_of(sub: Mention, parent: Mention) -> bool:
     """``sub`` names, without a count of its own, a variety of the crop ``parent`` names."""
-    crops = _strong_crops(parent)
+    crops = strong_crops(parent)
     if not crops and parent.plot is not None and len(parent.plot["options"]) == 1:
         crops = {parent.plot["options"][0]}  # "two vineyards, chardonnay ..."
     named = {(c, v) for c, v, weak in sub.interpretations or () if v is not None and not weak}
@@ -652,7 +659,7 @@ def _adds_a_field(clause: Clause, parent: Mention) -> bool:
     words = [i for i in clause.items if i.norm != "the"]
     if len(words) < 3 or words[0].role != "number" or words[1].role != "of":
         return False
-    return words[2].role == "head" and bool(_strong_crops(parent))
+    return words[2].role == "head" and bool(strong_crops(parent))
 
 
 #: Words after "<number> of" that point back at a plural mention ("two of them").
@@ -928,8 +935,11 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
             for earlier in (m for c in clauses[:position] for m in c.mentions):
                 earlier.distinct = True
                 earlier.distinct_crops = True
+        crops = strong_crops(mention)
         for head in mention.heads:
             head.role = "filler"
+            if crops:
+                head.data["describes"] = crops  # "Half the vines show mildew": the grapes
         clause.loose = [*clause.loose, *(i for i in mention.items if i.role != "distinct")]
         clause.mentions = []
         dissolved.append(mention.text)
@@ -946,8 +956,8 @@ def _fruit_of_named_crop(mention: Mention, before: Sequence[Clause]) -> bool:
         or _names_variety(mention)
     ):
         return False
-    crops = _strong_crops(mention)
-    named = {c for clause in before for m in clause.mentions for c in _strong_crops(m)}
+    crops = strong_crops(mention)
+    named = {c for clause in before for m in clause.mentions for c in strong_crops(m)}
     return bool(crops) and crops <= named
 
 
@@ -1056,10 +1066,12 @@ def merge_coreferences(
     merged: set[int] = set()  # clauses whose mention was a field named again
     for mention in mentions:
         clause = clause_of.get(id(mention))
+        first = _first_word(mention)
         if clause is None or not kept or clause.mentions[0] is not mention:
+            if first is not None and first.norm == "both" and mention.count is None:
+                mention.count = 2  # "Both cereal fields beside the dryer": two, named now
             kept.append(mention)
             continue
-        first = _first_word(mention)
         # "the carrots ...", "fire blight on the pears", "the Roma one"
         is_definite = (first is not None and first.norm in definite) or _definite_before_head(
             clause, mention
@@ -1103,10 +1115,12 @@ def merge_coreferences(
             and not _another_field(clauses, clause, mention)
         )
         if not anaphoric:
+            if first is not None and first.norm == "both" and mention.count is None:
+                mention.count = 2  # "Both cereal fields beside the dryer": two, named now
             kept.append(mention)
             continue
         run: list[Mention] = []
-        own = _strong_crops(mention)
+        own = strong_crops(mention)
         # "two pear blocks: Comice, ... and Durondeau, east of the Comice": the member
         # that variety named, not the plural mention listing it
         member = next(
@@ -1121,7 +1135,7 @@ def merge_coreferences(
         for earlier in [] if member is not None else reversed(kept):
             if not _compatible(builder, earlier, mention):
                 break
-            if own and _strong_crops(earlier) and not own & _strong_crops(earlier):
+            if own and strong_crops(earlier) and not own & strong_crops(earlier):
                 break  # "cherries" is the cherry orchard, not the cherry tomatoes
             run.append(earlier)
         if member is not None:
@@ -1270,12 +1284,12 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
 
 
 def _heads_its_list(mention: Mention, later: Sequence[Mention]) -> bool:
-    crops = _strong_crops(mention)
+    crops = strong_crops(mention)
     return (
         bool(crops)
         and not _names_variety(mention)
         and len(later) >= 2
-        and all(_strong_crops(m) and _strong_crops(m) <= crops for m in later[:2])
+        and all(strong_crops(m) and strong_crops(m) <= crops for m in later[:2])
     )
 
 
