@@ -183,3 +183,42 @@ def test_words_about_one_crops_plants_go_to_that_crop() -> None:
 def test_bare_vines_are_still_vines() -> None:
     (field,) = recipe("Bare vines in the snow, every post capped with white").fields
     assert (field.crop, field.season) == ("Grape", "Winter")
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "In the polytunnel block there are Padrón peppers and jalapeños side by side, with the "
+        "San Marzano tomatoes on the far side of the jalapeños.",
+        "Padrón peppers next to jalapeños, and San Marzano tomatoes on the other side of the "
+        "jalapeños.",
+    ],
+)
+def test_the_far_side_of_a_named_field_is_beside_it(prompt: str) -> None:
+    scene = recipe(prompt)
+    _padron, jalapeno, tomato = (f.id for f in scene.fields)
+    assert len(scene.fields) == 3
+    assert ("next_to", tomato, (jalapeno,)) in relations(scene)
+
+
+def test_what_a_field_has_is_another_field() -> None:
+    scene = recipe("The cherry orchard has a plot of cherry tomatoes right next to it.")
+    assert [(f.crop, f.variety) for f in scene.fields] == [
+        ("Cherry", scene.fields[0].variety),
+        ("Tomato", "Cherry"),
+    ]
+
+
+def test_one_tree_of_the_named_fields_is_not_a_field() -> None:
+    scene = recipe(
+        "the Navel block with ripe fruit, and a picker's ladder leaning against one tree."
+    )
+    assert [f.crop for f in scene.fields] == ["Orange"]
+
+
+def test_members_planted_one_strip_each_with_adjectives() -> None:
+    scene = recipe(
+        "Three pepper varieties in my photo, one strip each: California Wonder with big blocky "
+        "green fruit, Jalapeños hanging dark and shiny, and Cayenne with long red pods."
+    )
+    assert [f.variety for f in scene.fields] == ["California Wonder", "Jalapeno", "Cayenne"]

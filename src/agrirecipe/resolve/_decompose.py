@@ -289,8 +289,11 @@ class MentionBuilder:
             elif self.compatible(current, item) and not (
                 # "west of the vineyard there's a block of ...": a plot named by its kind
                 # alone, then a new one ("on the chilli side there's a plot of ..." is
-                # still the chilli plot)
-                item.role == "plot" and not current.has_crop and _existential(clause, pending)
+                # still the chilli plot); "the cherry orchard has a plot of ..."
+                item.role == "plot"
+                and (
+                    (not current.has_crop and _existential(clause, pending)) or _possessed(pending)
+                )
             ):
                 current.conflict = current.conflict or _plot_conflict(current, item, pending)
                 self._absorb(current, pending, before_head=False, counts=_counts_fields(item))
@@ -385,6 +388,14 @@ def _existential(clause: Clause, pending: Sequence[Item]) -> bool:
     placed = clause.link is not None and clause.link.role == "relation"
     return placed and any(
         a in _EXISTENTIAL and b in ("a", "an") for a, b in itertools.pairwise(norms)
+    )
+
+
+def _possessed(pending: Sequence[Item]) -> bool:
+    """'The cherry orchard has a plot of cherry tomatoes': what a field has is another."""
+    norms = [t.norm for item in pending for t in item.tokens]
+    return any(
+        a in ("has", "have", "had") and b in ("a", "an") for a, b in itertools.pairwise(norms)
     )
 
 

@@ -310,7 +310,13 @@ class Lexicon:
         if match is None:
             return None
         phrase, score = str(match[0]), 100.0 * float(match[1])
+        if text.startswith(phrase) and text[len(phrase) :] in _DERIVING_ENDINGS:
+            return None  # "blocky" fruit is a word made from "block", not a misspelt one
         return phrase, score, self._fuzzy_senses[phrase]
+
+
+#: Endings that make a new word of a known one ("blocky", "reddish", "ridged").
+_DERIVING_ENDINGS = frozenset({"y", "ish", "ed", "ing", "er", "ers", "ly"})
 
 
 @functools.lru_cache(maxsize=1)

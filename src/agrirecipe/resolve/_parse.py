@@ -670,6 +670,14 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
             and (after is None or after.role not in ("plot", "head", "weak_variety", "category"))
         ):
             item.role = "filler"  # "on Gisela 6": a rootstock's or machine's name
+    # "Three pepper varieties, one strip each: ...": how each member is planted
+    for first, plot, each in zip(items, items[1:], items[2:], strict=False):
+        if (
+            first.norm in ("one", "1", "a")
+            and plot.role == "plot"
+            and each.norm in ("each", "apiece")
+        ):
+            first.role = plot.role = "filler"
     # "between the two tracks", "three tractors": a number before scenery counts it
     for item, following in itertools.pairwise(items):
         if item.role == "number" and item.norm not in ("a", "an") and _is_scenery(following):

@@ -318,6 +318,12 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             and clause.link.norm not in (".", "!", "?")  # a new sentence ends the listing
             and (
                 all(_member_detail(i) for i in clause.items)
+                # "Jalapeños hanging dark and shiny": a word or two joined by "and"
+                or (
+                    clause.link.role == "conjunction"
+                    and len(clause.items) <= 2
+                    and all(i.role in ("unknown", "filler") for i in clause.items)
+                )
                 # "Conference pears heavy with fruit that is just starting to turn yellow"
                 or clause.link.norm in _RELATIVE
                 # "Riesling north of it, 25 rows at 2 m": placed against the one before;
@@ -906,8 +912,16 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
         )
         # "a few plants have fallen over": a verb says what the plants do or look like
         predicate = _predicate(clause, mention)
-        # "one plant has wilted leaves": one plant described, not a field of one
-        one_described = mention.count == 1 and described
+        # "one plant has wilted leaves": one plant described, not a field of one;
+        # "a ladder leaning against one tree": one plant of the fields named
+        one_described = mention.count == 1 and (
+            described
+            or (
+                others_before
+                and not mention.has_crop
+                and all(h.role == "plot" and h.data["value"]["individual"] for h in mention.heads)
+            )
+        )
         # "the Navel block ..., full of orange fruit": the named crop's own fruit;
         # "a wheelbarrow full of split fruit": what the scenery holds
         own_fruit = _fruit_of_named_crop(mention, clauses[:position]) or _held_by_scenery(
@@ -928,7 +942,9 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
             or mention.other
             or own_size
             or (listed and not (definite or predicate))
-            or not (described or definite or fraction or mention.distinct or predicate)
+            or not (
+                described or definite or fraction or mention.distinct or predicate or one_described
+            )
         ):
             continue
         if mention.distinct:
