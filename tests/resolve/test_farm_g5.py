@@ -222,3 +222,28 @@ def test_members_planted_one_strip_each_with_adjectives() -> None:
         "green fruit, Jalapeños hanging dark and shiny, and Cayenne with long red pods."
     )
     assert [f.variety for f in scene.fields] == ["California Wonder", "Jalapeno", "Cayenne"]
+
+
+def test_everywhere_after_one_field_is_that_fields() -> None:
+    scene = recipe(
+        "Field A - Russet potatoes, blight everywhere. Field B - Sturon onions, healthy. "
+        "Field C - Iceberg lettuce, bolting."
+    )
+    assert [f.health for f in scene.fields] == ["Ill", "Healthy", "Healthy"]
+    assert recipe("potatoes and onions, blight everywhere").fields[1].health == "Ill"
+
+
+def test_separate_blocks_after_a_list_are_its_blocks() -> None:
+    scene = recipe("i want jonagored apples AND fuji apples, 2 separate blocks, spring")
+    assert [f.variety for f in scene.fields] == ["Jonagold", "Fuji"]
+
+
+def test_a_field_of_it_is_the_crop_named() -> None:
+    (field,) = recipe("all we really have is veg, one big field of it behind the barn").fields
+    assert field.category == "Vegetables"
+
+
+def test_the_block_one_field_is_planted_in_gives_its_size() -> None:
+    (field,) = recipe("Pear trees at 3.5 x 1.2 m, in a 60 m x 80 m block, fire blight").fields
+    assert (field.crop, field.health) == ("Pear", "Ill")
+    assert field.geometry.size_m == (60.0, 80.0)

@@ -466,6 +466,12 @@ class PromptReader(FieldReading):
                         roles = {i.role for i in sub.items}
                         sub.items.extend(i for i in others if i.role not in roles)
                 continue
+            alls = [i for i in attributes if i.role == "all"]
+            if says_all and after and all(i.norm in _HERE_EVERYWHERE for i in alls):
+                # "Field A - Russet potatoes, blight everywhere. Field B - ...": everywhere
+                # in the field just named, when more fields follow
+                attributes = [i for i in attributes if i.role != "all"]
+                says_all = False
             if says_all:
                 scene.extend(attributes)
                 continue
@@ -717,7 +723,17 @@ def _purpose(item: Item) -> bool:
 
 #: Words between "in" and the plots a list of crops is grown in ("in adjacent strips").
 _PLOT_ADJECTIVES = frozenset(
-    {"adjacent", "neighbouring", "neighboring", "separate", "parallel", "their", "own", "its"}
+    {
+        "adjacent",
+        "neighbouring",
+        "neighboring",
+        "separate",
+        "parallel",
+        "their",
+        "own",
+        "its",
+        "the",
+    }
 )
 _SENTENCE_MARKS = frozenset({".", "!", "?", ";"})
 
@@ -743,6 +759,10 @@ def _totals_are_not_sizes(items: Sequence[Item]) -> None:
         if any(after[: len(words)] == words for words in _TOTALS):
             item.role = "filler"
             item.data["total"] = True
+
+
+#: "All" words that may mean all over one field ("blight everywhere").
+_HERE_EVERYWHERE = frozenset({"everywhere", "throughout"})
 
 
 def _described_crop(clause: Clause, before: Sequence[Mention]) -> list[Mention]:
@@ -793,16 +813,29 @@ def _plots_of_a_list(items: Sequence[Item]) -> None:
             continue
         plot = items[cursor]
         spec = plot.data.get("value") if plot.role == "plot" else None
-        if not isinstance(spec, dict) or not spec.get("plural") or spec.get("individual"):
+        if not isinstance(spec, dict) or spec.get("individual"):
             continue
-        crops = 0
+        crops, comma = 0, False
         for before in reversed(items[:index]):
             if before.role == "separator" and before.norm in _SENTENCE_MARKS:
                 break
+            comma = comma or (before.role == "separator" and crops == 0)
             if before.role == "head" and before.has("crop", "variety"):
                 crops += 1
         counted = [i for i in between if i.role == "number"]
-        if crops < 2 or (counted and float(counted[0].data.get("value", 0)) != crops):
+        followed = cursor + 1 < len(items) and items[cursor + 1].role in ("of", "head")
+        if spec.get("plural"):
+            if crops < 2 or (counted and float(counted[0].data.get("value", 0)) != crops):
+                continue
+        elif not (
+            # "Pear trees, 1,000 of them at 3.5 x 1.2 m in a 60 m x 80 m block": the block
+            # the one field named is planted in
+            crops == 1
+            and comma
+            and not followed
+            and any(i.role == "size" for i in between)
+            and all(i.role != "number" or i.norm in ("a", "an", "one") for i in between)
+        ):
             continue
         plot.role = "filler"
         plot.data["list_plots"] = True

@@ -1088,14 +1088,17 @@ def merge_coreferences(
                 mention.count = 2  # "Both cereal fields beside the dryer": two, named now
             kept.append(mention)
             continue
-        # "the carrots ...", "fire blight on the pears", "the Roma one"
-        is_definite = (first is not None and first.norm in definite) or _definite_before_head(
-            clause, mention
+        # "the carrots ...", "fire blight on the pears", "the Roma one"; "one big field
+        # of it" (of the crop just named)
+        is_definite = (
+            (first is not None and first.norm in definite)
+            or _definite_before_head(clause, mention)
+            or _of_it(mention)
         )
         if (
             is_definite
             and mention.count == 1
-            and (_pronoun_one(mention) or _one_of_the(clause, mention))
+            and (_pronoun_one(mention) or _one_of_the(clause, mention) or _of_it(mention))
         ):
             mention.count = None
         bare = clause.link is not None and (
@@ -1124,7 +1127,8 @@ def merge_coreferences(
             repeated = []  # "Valencia oranges next to Valencia oranges": two fields
         anaphoric = (
             (mention.count is None or summary)
-            and not mention.distinct
+            # "jonagored apples AND fuji apples, 2 separate blocks": still those two
+            and (not mention.distinct or summary)
             and not mention.other
             and not mention.refinements
             and (is_definite or bare or bool(repeated))
@@ -1214,6 +1218,14 @@ def merge_coreferences(
         else:
             clause.mentions.remove(mention)
     return kept
+
+
+def _of_it(mention: Mention) -> bool:
+    """'one big field of it': a plot word whose crop is "it" or "them", named before."""
+    if mention.has_crop or not any(h.role == "plot" for h in mention.heads):
+        return False
+    norms = [i.norm for i in mention.items]
+    return any(a == "of" and b in ("it", "them") for a, b in itertools.pairwise(norms))
 
 
 def _related_to(clauses: Sequence[Clause], clause: Clause, earlier: Mention) -> bool:
