@@ -136,3 +136,52 @@ def test_either_side_of_it_places_the_field_between() -> None:
     assert ("between", cabernet, (chardonnay, pinot)) in {
         (r.kind, r.subject, r.objects) for r in scene.relations
     }
+
+
+def test_measures_in_brackets_after_plots_are_theirs_only() -> None:
+    scene = recipe(
+        "Camera rig test: two lettuce plots (10 rows each, 35 cm row spacing) with a cabbage "
+        "plot between them planted in 75 cm rows."
+    )
+    assert [f.agronomy.row_spacing_m for f in scene.fields] == [0.35, 0.35, 0.75]
+    assert [f.row_count for f in scene.fields][:2] == [10, 10]
+    assert "rows" not in scene.fields[2].stated
+
+
+def test_a_plot_word_heading_a_count_of_plots_is_no_field() -> None:
+    scene = recipe(
+        "Pruning-robot vineyard, two blocks: Chardonnay, 40 rows at 2.2 m, east of Cabernet, "
+        "36 rows at 2.5 m. Vines 1 m apart in both."
+    )
+    assert [f.variety for f in scene.fields] == ["Chardonnay", "Cabernet Sauvignon"]
+    assert [f.agronomy.in_row_spacing_m for f in scene.fields] == [1.0, 1.0]
+
+
+def test_a_spread_list_with_respectively_goes_to_the_fields_in_order() -> None:
+    scene = recipe(
+        "Three plots for the soil-moisture probes - spuds, carrots and onions - each 12 rows, "
+        "at 75, 50 and 30 cm row spacing respectively."
+    )
+    assert [f.crop for f in scene.fields] == ["Potato", "Carrot", "Onion"]
+    assert [f.agronomy.row_spacing_m for f in scene.fields] == [0.75, 0.5, 0.3]
+    assert [f.row_count for f in scene.fields] == [12, 12, 12]
+
+
+def test_row_length_then_spacing_in_one_phrase() -> None:
+    field = recipe("tomato plants in 100 m rows 1.2 m apart, 40 cm in the row").fields[0]
+    assert field.row_length_m == pytest.approx(100)
+    assert field.agronomy.row_spacing_m == 1.2
+
+
+def test_a_measure_said_with_each_by_the_last_of_a_list_is_everyones() -> None:
+    scene = recipe(
+        "The Hamlin block takes the east half, Washington Navel the west half: 150 trees each "
+        "at 7 m x 4 m, rows running north-south."
+    )
+    assert [(f.agronomy.row_spacing_m, f.agronomy.in_row_spacing_m) for f in scene.fields] == [
+        (7.0, 4.0),
+        (7.0, 4.0),
+    ]
+    assert ("east_of", scene.fields[0].id, (scene.fields[1].id,)) in {
+        (r.kind, r.subject, r.objects) for r in scene.relations
+    }

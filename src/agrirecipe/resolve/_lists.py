@@ -48,6 +48,10 @@ def _leads() -> dict[str, str]:
     return {str(k).lower(): str(v) for k, v in _data()["leads"].items()}
 
 
+#: "respectively" within a few words after a list of values.
+_RESPECTIVELY = re.compile(r"(?:\s+[\w-]+){0,3}\s+respectively\b", re.IGNORECASE)
+
+
 def spread_value_lists(text: str) -> str:
     """``text`` with each list of values of one measure spread into one member per value."""
 
@@ -55,6 +59,9 @@ def spread_value_lists(text: str) -> str:
         values = re.findall(_NUMBER, match.group("values"))
         # "1,000" is one number, not a list: thousands separators stay whole
         if re.search(r"\d,\d{3}(?!\d)", match.group("values")):
+            return match.group(0)
+        # "at 75, 50 and 30 cm row spacing respectively": given out to the fields named
+        if _RESPECTIVELY.match(text, match.end()):
             return match.group(0)
         member = _leads()[match.group("lead").lower()]
         unit = match.group("unit")

@@ -205,6 +205,7 @@ class PromptReader(FieldReading):
             if not clause.mentions and any(_is_scenery(i) for i in clause.loose):
                 clause.loose = [i for i in clause.loose if i.role != "zone"]
         scene_items = self._attach_loose(clauses, mentions)
+        _share_each_measures(clauses)
         for mention in mentions:
             for sub in (mention, *mention.refinements):
                 resolve_weak_varieties(sub)
@@ -473,7 +474,8 @@ class PromptReader(FieldReading):
                 attributes = [i for i in attributes if i.role != "all"]
                 says_all = False
             if says_all:
-                scene.extend(attributes)
+                owner = _bracketed_by(clauses, position)  # "two lettuce plots (10 rows each"
+                (owner.items if owner is not None else scene).extend(attributes)
                 continue
             several = len(mentions) > 1 or any((m.count or 1) > 1 for m in mentions)
             if not before or (several and not after):
@@ -553,8 +555,10 @@ class PromptReader(FieldReading):
                 # "8 rows each at 1.5 m": "each" inside the measure itself
                 or any(t.norm in ("each", "both") for i in geometry for t in i.tokens)
             ):
-                # "A, B and C, each 20 x 30 m, rows at 90°": still about each of them
-                scene.extend(geometry)
+                # "A, B and C, each 20 x 30 m, rows at 90°": still about each of them;
+                # "two lettuce plots (10 rows each, 35 cm row spacing)": each of those
+                owner = _bracketed_by(clauses, position)
+                (owner.items if owner is not None else scene).extend(geometry)
                 if not any(i.role == "all" for i in scene):
                     scene.extend(i for i in clause.items if i.role == "all")
                 geometry = []
@@ -945,6 +949,43 @@ def _parallel_fields(
         for m in fields
     ]
     return fields if keys[0] and all(k == keys[0] for k in keys) else []
+
+
+def _share_each_measures(clauses: Sequence[Clause]) -> None:
+    """'The Hamlin block ..., Washington Navel the west half: 150 trees each at 7 m x 4 m':
+    a measure said with "each" by the last of a list is every listed field's."""
+    for position, clause in enumerate(clauses):
+        for mention in clause.mentions[-1:]:
+            measures = [i for i in mention.items if i.role == "geometry"]
+            if not any(t.norm in ("each", "both") for i in measures for t in i.tokens):
+                continue
+            each = measures  # "150 trees each at 7 m x 4 m": the whole measure
+            start = position
+            while start > 0 and not _ends_a_sentence(clauses[start]):
+                start -= 1
+            others = {id(m): m for c in clauses[start:position] for m in c.mentions}
+            for other in others.values():
+                if other is mention:
+                    continue
+                said = {
+                    g.key for i in other.items if i.role == "geometry" for g in i.data["geometry"]
+                }
+                other.items.extend(
+                    i for i in each if not {g.key for g in i.data["geometry"]} & said
+                )
+
+
+def _bracketed_by(clauses: Sequence[Clause], position: int) -> Mention | None:
+    """The field a bracket of measures follows ("two lettuce plots (10 rows each, ...)"),
+    when clause ``position`` lies inside that bracket; None otherwise."""
+    for index in range(position, 0, -1):
+        clause = clauses[index]
+        if clause.mentions or clause.link is None or clause.link.norm == ")":
+            return None
+        if clause.link.norm == "(":
+            before = clauses[index - 1].mentions
+            return before[-1] if before else None
+    return None
 
 
 def _shared_by_all_after(clauses: Sequence[Clause], position: int) -> bool:

@@ -1356,5 +1356,35 @@ def drop_list_headings(clauses: Sequence[Clause], mentions: list[Mention]) -> li
         ):
             clauses[mention.clause].mentions = []
             continue
+        if _heads_counted_plots(clauses, mention):
+            clauses[mention.clause].mentions = []
+            continue
         kept.append(mention)
     return kept
+
+
+def _heads_counted_plots(clauses: Sequence[Clause], mention: Mention) -> bool:
+    """'Pruning-robot vineyard, two blocks: Chardonnay, ..., Cabernet': a plot word right
+    before a count of plots that lists members it can hold is their heading."""
+    if (
+        mention.plot is None
+        or mention.has_crop
+        or (mention.count or 1) != 1
+        or mention.refinements
+        or mention.clause + 1 >= len(clauses)
+        or clauses[mention.clause].mentions[-1:] != [mention]
+    ):
+        return False
+    following = clauses[mention.clause + 1]
+    if following.link is None or following.link.norm != "," or len(following.mentions) != 1:
+        return False
+    plots = following.mentions[0]
+    options = set(mention.plot["options"])
+    members = {id(r): r for r in plots.refinements}.values()
+    return (
+        not plots.has_crop
+        and (plots.count or 0) >= 2
+        and len(members) >= 2
+        and bool(options)
+        and all(strong_crops(r) and strong_crops(r) <= options for r in members)
+    )
