@@ -247,3 +247,59 @@ def test_the_block_one_field_is_planted_in_gives_its_size() -> None:
     (field,) = recipe("Pear trees at 3.5 x 1.2 m, in a 60 m x 80 m block, fire blight").fields
     assert (field.crop, field.health) == ("Pear", "Ill")
     assert field.geometry.size_m == (60.0, 80.0)
+
+
+def test_a_crop_on_the_terraces_is_one_field() -> None:
+    scene = recipe(
+        "On the finca in Tenerife we grow Dwarf Cavendish bananas on the terraces below the "
+        "house and Valencia Late oranges on the terraces up above."
+    )
+    assert [f.crop for f in scene.fields] == ["Banana", "Orange"]
+
+
+def test_some_kind_of_root_crop_is_a_zone_field() -> None:
+    scene = recipe(
+        "so the farm splits into three bands: cherries across the top, some kind of root crop "
+        "through the middle, and cereals down the bottom by the brook"
+    )
+    top, middle, _bottom = scene.fields
+    assert middle.crop in ("Carrot", "Potato", "Onion")
+    assert ("north_of", top.id, (middle.id,)) in relations(scene)
+
+
+def test_the_half_being_the_northern_one() -> None:
+    scene = recipe(
+        "The orchard is half Comice and half Durondeau, the Comice half being the northern one."
+    )
+    comice, durondeau = scene.fields
+    assert relations(scene) == {("north_of", comice.id, (durondeau.id,))}
+
+
+def test_scenery_words_are_not_fuzzy_crops_or_stages() -> None:
+    scene = recipe(
+        "Wheat at the two-leaf stage, and the onion sets in the next field are barely up. "
+        "Rooks picking about along the hedge."
+    )
+    wheat, onion = scene.fields
+    assert ("next_to", onion.id, (wheat.id,)) in relations(scene)
+    vines = recipe(
+        "Pinot Noir vines, the bunches colouring up, grass in the alleys freshly mown"
+    ).fields[0]
+    assert vines.stage == "Maturation"
+
+
+def test_the_first_leaves_just_out_are_vegetative() -> None:
+    scene = recipe(
+        "Fruit trees covered in blossom and, behind them, a vineyard with the first "
+        "leaves just out."
+    )
+    assert [f.stage for f in scene.fields] == ["Reproductive", "Vegetative"]
+
+
+def test_the_first_word_of_a_crop_named_stands_for_it() -> None:
+    scene = recipe(
+        "two staked tomato blocks, San Marzano and plum tomatoes (plum ones to the west)."
+    )
+    san_marzano, roma = scene.fields
+    assert roma.variety == "Roma"
+    assert ("west_of", roma.id, (san_marzano.id,)) in relations(scene)

@@ -219,7 +219,17 @@ def plan_rows(
 
     # Along the rows: a stated length, plants per row, or a count of plants.
     count = stated.get("plant_count")
-    if count is not None and per_row is None:
+    if count is not None and per_row is None and bed_count is None and length_rows is not None:
+        # "1,000 tomato plants in 100 m rows": as many rows of that length as the plants fill
+        along = math.floor(length_rows / in_row + 1e-9) + 1
+        bed_count = max(1, math.ceil(int(count) / (along * rows_per_bed)))
+        if bed_count * rows_per_bed * along != int(count):
+            warnings.append(
+                f"{label}: {int(count)} plants do not fill {length_rows:g} m rows evenly; "
+                f"planted as {bed_count * rows_per_bed} rows of {along} "
+                f"({bed_count * rows_per_bed * along} plants)"
+            )
+    elif count is not None and per_row is None:
         bed_count, per_row = _split_count(
             int(count),
             bed_count,

@@ -340,6 +340,15 @@ class PromptReader(FieldReading):
                 item.role = "filler"
                 item.data["scenery"] = "vegetation"
                 continue
+            if any(
+                earlier.role == "head" and earlier.tokens[0].norm == item.norm
+                for earlier in items[:index]
+            ):
+                # "San Marzano and plum tomatoes (plum ones to the west)": the first word
+                # of a crop named before stands for it
+                item.role = "filler"
+                item.data["short_for"] = True
+                continue
             other: OtherCrop = item.senses_of("other_crop")[0].value
             if other.variety_of is not None:
                 names = [v.name for v in self.context.hierarchy.crop(other.variety_of).varieties]
@@ -796,7 +805,7 @@ def _plots_of_a_list(items: Sequence[Item]) -> None:
     6 x 50 m strips': plots a list of crops is grown in are the list's own fields, one
     each, not more fields (the plot word and its count are read as said of them)."""
     for index, item in enumerate(items):
-        if item.norm != "in" or index == 0:
+        if item.norm not in ("in", "on") or index == 0:
             continue
         cursor, between = index + 1, list[Item]()
         while (
@@ -828,7 +837,10 @@ def _plots_of_a_list(items: Sequence[Item]) -> None:
                 crops += 1
         counted = [i for i in between if i.role == "number"]
         followed = cursor + 1 < len(items) and items[cursor + 1].role in ("of", "head")
-        if spec.get("plural"):
+        definite = any(i.norm == "the" for i in between) and not counted
+        if spec.get("plural") and definite and crops >= 1:
+            pass  # "Cavendish bananas on the terraces below the house": where they grow
+        elif spec.get("plural"):
             if crops < 2 or (counted and float(counted[0].data.get("value", 0)) != crops):
                 continue
         elif not (
