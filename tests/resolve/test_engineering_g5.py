@@ -185,3 +185,13 @@ def test_a_measure_said_with_each_by_the_last_of_a_list_is_everyones() -> None:
     assert ("east_of", scene.fields[0].id, (scene.fields[1].id,)) in {
         (r.kind, r.subject, r.objects) for r in scene.relations
     }
+
+
+def test_a_count_of_plants_in_rows_of_a_stated_length_fills_whole_rows() -> None:
+    scene = generate(
+        "1,000 tomato plants in 100 m rows 1.5 m apart, 50 cm in the row", resolver="hybrid"
+    )
+    (field,) = scene.recipe.fields
+    assert field.row_length_m == pytest.approx(100)
+    assert field.row_count == 5  # 201 positions a row: 5 rows hold the 1,000
+    assert any("do not fill 100 m rows evenly" in w for w in scene.recipe.warnings)
