@@ -117,6 +117,7 @@ def make_spec(
     rotation: float,
     placement: Placement,
     pattern: str,
+    planted: tuple[float, float] | None = None,
 ) -> FieldSpec:
     agronomy = Agronomy(
         planting_pattern=pattern,  # type: ignore[arg-type]
@@ -149,6 +150,7 @@ def make_spec(
             size_m=(width, length),
             rotation_deg=rotation,
             headland_m=headland,
+            planted_m=planted,
         ),
         placement=placement,
     )
@@ -186,6 +188,14 @@ def field_specs(draw: st.DrawFn) -> FieldSpec:
         ),
         pattern=draw(
             st.sampled_from(["rows", "drilled_rows", "ridges", "double_rows_on_beds", "tree_rows"])
+        ),
+        # a planted block smaller than the field ("10 rows in a 25 x 60 m plot"), or none
+        planted=draw(
+            st.none()
+            | st.tuples(
+                st.floats(bed_span + 0.06, max(bed_span + 0.06, width - 2 * headland)),
+                st.floats(0.06, max(0.06, length - 2 * headland)),
+            )
         ),
     )
 
@@ -232,6 +242,10 @@ def test_plants_stay_inside_the_field_minus_headland(spec: FieldSpec, seed: int)
     h = geometry.headland_m
     assert (local_x >= h - slack).all() and (local_x <= width - h + slack).all()
     assert (local_y >= h - slack).all() and (local_y <= length - h + slack).all()
+    if geometry.planted_m is not None:  # and inside the planted block, centred
+        block_w, block_l = geometry.usable_m()
+        assert (np.abs(local_x - width / 2) <= block_w / 2 + slack).all()
+        assert (np.abs(local_y - length / 2) <= block_l / 2 + slack).all()
     assert (xyz[:, 2] == 0.0).all()
     yaw_limit = math.radians(placement.yaw_variation_deg) + 1e-9
     assert (np.abs(yaw - angle) <= yaw_limit).all()

@@ -195,3 +195,40 @@ def test_a_count_of_plants_in_rows_of_a_stated_length_fills_whole_rows() -> None
     assert field.row_length_m == pytest.approx(100)
     assert field.row_count == 5  # 201 positions a row: 5 rows hold the 1,000
     assert any("do not fill 100 m rows evenly" in w for w in scene.recipe.warnings)
+
+
+@pytest.mark.parametrize(
+    ("prompt", "rows", "size"),
+    [
+        ("10 rows of maize 76 cm apart in a 20 x 50 m plot", 10, (20.0, 50.0)),
+        (
+            "Put a strawberry plot (8 beds, 1.5 m centres, 2 rows per bed) between two wheat "
+            "plots drilled at 12.5 cm; all three are 20 x 50 m.",
+            16,
+            (20.0, 50.0),
+        ),
+    ],
+)
+def test_rows_that_fill_less_than_a_stated_plot_are_a_planted_block(
+    prompt: str, rows: int, size: tuple[float, float]
+) -> None:
+    from agrirecipe.layout import field_parameters, place_field
+
+    recipe_ = recipe(prompt)
+    field = recipe_.fields[0]
+    assert field.geometry.size_m == size
+    assert field.row_count == rows
+    assert field.geometry.planted_m is not None
+    assert field.geometry.planted_m[0] < size[0] - 2 * field.geometry.headland_m
+    # the layout kernel (plants.csv, Blender, USD, Unreal) plants exactly that block
+    params = field_parameters(recipe_)[0]
+    plants = place_field(dict(params, missing_rate=0.0))
+    assert len(plants) == field.nominal_plant_count
+    xs = sorted({round(p[0], 3) for p in place_field(dict(params, missing_rate=0.0, jitter_m=0.0))})
+    assert len(xs) == rows
+
+
+def test_a_plot_that_the_rows_fill_has_no_planted_block() -> None:
+    field = recipe("10 rows of maize 76 cm apart").fields[0]
+    assert field.geometry.planted_m is None
+    assert field.row_count == 10

@@ -58,6 +58,9 @@ class RowPlan:
     headland_m: float
     rotation_deg: float
     stated: list[AttributeName] = field(default_factory=list)
+    #: The planted block when stated counts fill less than a stated field ("10 rows in a
+    #: 25 x 60 m plot"): width and length inside the headland; None when rows fill it.
+    planted_m: tuple[float, float] | None = None
     warnings: list[str] = field(default_factory=list)
 
     def agronomy_update(self) -> dict[str, float | int]:
@@ -259,9 +262,12 @@ def plan_rows(
         headland = min(default_headland_m, round(_HEADLAND_SHARE * min(planted), 2))
     else:
         headland = default_headland_m
+    planted_m: tuple[float, float] | None = None
     if size_m is not None and stated_headland is None:
         # "36 m x 60 m: 12 rows on a 3 m grid": the size said is the field; its border
-        # narrows to what the rows leave (they are planted whole only if they fit).
+        # narrows to what the rows leave (they are planted whole only if they fit), and
+        # "8 beds ... all three are 20 x 50 m": rows that fill less of it are a planted
+        # block in its middle, as many as said.
         room = [
             (side - planted) / 2
             for side, planted in ((width, usable_w), (length, usable_l))
@@ -269,6 +275,15 @@ def plan_rows(
         ]
         if room and min(room) >= 0:
             headland = min(headland, *room)
+            inner_w, inner_l = width - 2 * headland, length - 2 * headland
+            block = (
+                inner_w if usable_w is None else usable_w,
+                inner_l if usable_l is None else usable_l,
+            )
+            spare_w = inner_w - block[0] >= spacing / 2
+            spare_l = inner_l - block[1] >= in_row / 2
+            if spare_w or spare_l:
+                planted_m = (round(block[0], 6), round(block[1], 6))
             usable_w = usable_l = None
     # A stated count or length is planted area: the headland goes around it.
     if usable_w is not None:
@@ -292,6 +307,7 @@ def plan_rows(
         size_m=(round(width, 6), round(length, 6)),
         headland_m=headland,
         rotation_deg=rotation,
+        planted_m=planted_m,
         stated=names,
         warnings=warnings,
     )

@@ -58,16 +58,20 @@ def plant_grid(params: dict[str, Any]) -> tuple[int, int, int, float, float]:
         raise ValueError("row spacings must be positive and rows_per_bed at least 1")
     # Same arithmetic, in the same order, as FieldSpec.nominal_plant_count.
     bed_span = bed_row_spacing * (rows_per_bed - 1)
-    usable_w = width - 2 * headland - bed_span
-    usable_l = length - 2 * headland
+    inner_w = width - 2 * headland
+    inner_l = length - 2 * headland
+    planted = params.get("planted_m")  # a planted block smaller than the field, centred
+    usable_w = min(inner_w, float(planted[0])) if planted else inner_w
+    usable_l = min(inner_l, float(planted[1])) if planted else inner_l
+    usable_w -= bed_span
     if usable_w < 0.0 or usable_l < 0.0:
         raise ValueError(f"field {params.get('id')!r} is smaller than its headland")
     beds = math.floor(usable_w / row_spacing + 1e-9) + 1
     per_row = math.floor(usable_l / in_row + 1e-9) + 1
     occupied_w = (beds - 1) * row_spacing + bed_span
     occupied_l = (per_row - 1) * in_row
-    x_start = headland + (width - 2 * headland - occupied_w) / 2.0
-    y_start = headland + (length - 2 * headland - occupied_l) / 2.0
+    x_start = headland + (inner_w - occupied_w) / 2.0
+    y_start = headland + (inner_l - occupied_l) / 2.0
     return beds, rows_per_bed, per_row, x_start, y_start
 
 

@@ -55,6 +55,7 @@ def _parameters(spec: FieldSpec, recipe_seed: int) -> dict[str, Any]:
         "size_m": [geometry.size_m[0], geometry.size_m[1]],
         "rotation_deg": geometry.rotation_deg,
         "headland_m": geometry.headland_m,
+        "planted_m": list(geometry.planted_m) if geometry.planted_m is not None else None,
         "pattern": agronomy.planting_pattern,
         "row_spacing_m": agronomy.row_spacing_m,
         "rows_per_bed": agronomy.rows_per_bed,

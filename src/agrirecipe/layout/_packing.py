@@ -55,6 +55,9 @@ class FieldRequest:
     #: Counter-clockwise turn of the rectangle (rows along its local Y); the field is
     #: packed by its bounding box, so a turned field never overlaps a neighbour.
     rotation_deg: float = 0.0
+    #: The planted block inside the headland when smaller than the field (see
+    #: :attr:`~agrirecipe.recipe.FieldGeometry.planted_m`), carried into the geometry.
+    planted_m: tuple[float, float] | None = None
 
 
 def describe_relation(relation: Relation) -> str:
@@ -100,6 +103,7 @@ def pack_fields(
             size_m=(float(request.width_m), float(request.length_m)),
             rotation_deg=float(request.rotation_deg),
             headland_m=float(request.headland_m),
+            planted_m=request.planted_m,
         )
     return geometry
 

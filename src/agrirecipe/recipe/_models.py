@@ -187,6 +187,20 @@ class FieldGeometry(_Frozen):
     )
     rotation_deg: float = Field(default=0.0, ge=-180.0, le=180.0)
     headland_m: float = Field(default=0.0, ge=0.0, allow_inf_nan=False)
+    planted_m: tuple[PositiveMetres, PositiveMetres] | None = Field(
+        default=None,
+        description="Width and length of the planted block, centred inside the headland, "
+        "when a stated count of rows or plants fills less than the stated field "
+        "('10 rows in a 25 x 60 m plot'); None: the rows fill the field inside its headland.",
+    )
+
+    def usable_m(self) -> tuple[float, float]:
+        """Width and length the rows may fill: inside the headland, and the planted block."""
+        width = self.size_m[0] - 2 * self.headland_m
+        length = self.size_m[1] - 2 * self.headland_m
+        if self.planted_m is not None:
+            width, length = min(width, self.planted_m[0]), min(length, self.planted_m[1])
+        return width, length
 
     @property
     def area_m2(self) -> float:
@@ -248,8 +262,7 @@ class FieldSpec(_Frozen):
     def _field_holds_a_plant(self) -> FieldSpec:
         width, length = self.geometry.size_m
         headland = self.geometry.headland_m
-        usable_w = width - 2 * headland
-        usable_l = length - 2 * headland
+        usable_w, usable_l = self.geometry.usable_m()
         agronomy = self.agronomy
         bed_span = agronomy.bed_row_spacing_m * (agronomy.rows_per_bed - 1)
         # One plant needs its canopy, or at least half the spacing it was planted at
@@ -269,12 +282,10 @@ class FieldSpec(_Frozen):
 
     def _grid(self) -> tuple[int, int]:
         """Beds (or single rows) across the field and plants along each row (the kernel's grid)."""
-        width, length = self.geometry.size_m
-        headland = self.geometry.headland_m
         agronomy = self.agronomy
         bed_span = agronomy.bed_row_spacing_m * (agronomy.rows_per_bed - 1)
-        usable_w = width - 2 * headland - bed_span
-        usable_l = length - 2 * headland
+        usable_w, usable_l = self.geometry.usable_m()
+        usable_w -= bed_span
         beds = math.floor(usable_w / agronomy.row_spacing_m + 1e-9) + 1
         per_row = math.floor(usable_l / agronomy.in_row_spacing_m + 1e-9) + 1
         return beds, per_row
@@ -297,8 +308,9 @@ class FieldSpec(_Frozen):
 
     @property
     def row_length_m(self) -> float:
-        """Length of the planted rows: the field's length inside its headland."""
-        return self.geometry.size_m[1] - 2 * self.geometry.headland_m
+        """Length of the planted rows: the field's length inside its headland (or the
+        planted block's, when it is shorter)."""
+        return self.geometry.usable_m()[1]
 
     @property
     def plants_per_ha(self) -> float:

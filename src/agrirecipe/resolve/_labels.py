@@ -18,7 +18,7 @@ from collections.abc import Callable, Sequence
 
 from agrirecipe.resolve._lexicon import Item, tokenize
 
-__all__ = ["place_leading_directions", "resolve_labels"]
+__all__ = ["place_leading_directions", "place_trailing_directions", "resolve_labels"]
 
 _NOUNS = r"(?:block|plot|field|parcel|area|section|strip|zone|bay|compartment|trial plot)"
 # "Block A:", "plot 2 -", "Field B," : a label that introduces what follows it.
@@ -123,3 +123,54 @@ _SIDES = {
     "bottom": "south",
     "lower": "south",
 }
+
+
+# "carrots north, potatoes south": a compass word alone after what it places
+_TRAILING = re.compile(
+    r"\b(?P<word>[A-Za-z][\w'-]*)\s+(?P<side>(?i:north|south|east|west))\b(?=\s*(?:[,.;]|$))"
+)
+#: Words after which a compass word is a direction, not a place ("rows running north").
+_NOT_PLACED = frozenset(
+    {
+        "run",
+        "runs",
+        "running",
+        "facing",
+        "face",
+        "faces",
+        "going",
+        "heading",
+        "looking",
+        "look",
+        "due",
+        "to",
+        "the",
+        "of",
+        "from",
+        "towards",
+        "toward",
+        "pointing",
+        "lying",
+        "aligned",
+        "oriented",
+        "orientated",
+        "far",
+        "up",
+        "down",
+        "back",
+        "out",
+        "and",
+    }
+)
+
+
+def place_trailing_directions(text: str) -> str:
+    """``text`` with "carrots north, potatoes south" written "carrots in the north,
+    potatoes in the south" (two or more such places, not all the same)."""
+    matches = [m for m in _TRAILING.finditer(text) if m.group("word").lower() not in _NOT_PLACED]
+    if len(matches) < 2 or len({m.group("side").lower() for m in matches}) < 2:
+        return text
+    for match in reversed(matches):
+        start, end = match.span("side")
+        text = f"{text[:start]}in the {match.group('side')}{text[end:]}"
+    return text

@@ -62,7 +62,11 @@ from agrirecipe.resolve._intent import (
     SceneIntent,
     TraceStep,
 )
-from agrirecipe.resolve._labels import place_leading_directions, resolve_labels
+from agrirecipe.resolve._labels import (
+    place_leading_directions,
+    place_trailing_directions,
+    resolve_labels,
+)
 from agrirecipe.resolve._lexicon import (
     Item,
     Lexicon,
@@ -146,7 +150,7 @@ class PromptReader(FieldReading):
             )
         text = spread_value_lists(expand_casual(prompt))
         text, labels = resolve_labels(text, lambda phrase: self.lexicon.tag(tokenize(phrase)))
-        text = place_leading_directions(text)
+        text = place_trailing_directions(place_leading_directions(text))
         text = hoist_counted_crops(text, lambda phrase: self.lexicon.tag(tokenize(phrase)))
         for note in labels:
             self.trace.append(TraceStep(stage="decompose", subject="label", detail=note))
@@ -545,6 +549,9 @@ class PromptReader(FieldReading):
             elif _continues_a_description(clauses, position):
                 # "the oranges colouring up, the bananas still small and just planted"
                 targets = [clauses[position - 1].mentions[-1]]
+            elif any(i.data.get("list_plots") for i in clause.items):
+                # "carrots (...) and potatoes (...) in 25 x 60 m plots": the list's plots
+                targets = _sentence_fields(clauses, position)
             else:
                 targets = coordinated(clauses, position)
                 targets = _past_a_reference(clauses, position, targets)
@@ -776,6 +783,14 @@ def _totals_are_not_sizes(items: Sequence[Item]) -> None:
 
 #: "All" words that may mean all over one field ("blight everywhere").
 _HERE_EVERYWHERE = frozenset({"everywhere", "throughout"})
+
+
+def _sentence_fields(clauses: Sequence[Clause], position: int) -> list[Mention]:
+    """The fields named in the sentence before clause ``position``, each once."""
+    start = position
+    while start > 0 and not _ends_a_sentence(clauses[start]):
+        start -= 1
+    return list({id(m): m for c in clauses[start:position] for m in c.mentions}.values())
 
 
 def _described_crop(clause: Clause, before: Sequence[Mention]) -> list[Mention]:

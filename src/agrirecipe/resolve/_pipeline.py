@@ -225,6 +225,7 @@ class _Plan:
     noun: str
     notes: list[str]
     rotation_deg: float = 0.0
+    planted_m: tuple[float, float] | None = None
     agronomy_update: dict[str, float | int] | None = None
     warnings: tuple[str, ...] = ()
 
@@ -656,6 +657,7 @@ def _enrich(
         noun=noun,
         notes=notes,
         rotation_deg=rows.rotation_deg if rows is not None else 0.0,
+        planted_m=rows.planted_m if rows is not None else None,
         agronomy_update=rows.agronomy_update() if rows is not None else None,
         warnings=tuple(rows.warnings) if rows is not None else (),
     )
@@ -704,7 +706,14 @@ def _layout(
     from agrirecipe.layout import FieldRequest, pack_fields
 
     requests = [
-        FieldRequest(field_id, plan.size_m[0], plan.size_m[1], plan.headland_m, plan.rotation_deg)
+        FieldRequest(
+            field_id,
+            plan.size_m[0],
+            plan.size_m[1],
+            plan.headland_m,
+            plan.rotation_deg,
+            planted_m=plan.planted_m,
+        )
         for plan, field_id in zip(plans, ids, strict=True)
     ]
     return pack_fields(requests, relations)
