@@ -303,3 +303,26 @@ def test_the_first_word_of_a_crop_named_stands_for_it() -> None:
     san_marzano, roma = scene.fields
     assert roma.variety == "Roma"
     assert ("west_of", roma.id, (san_marzano.id,)) in relations(scene)
+
+
+def test_whole_patches_browned_off_describe_the_field() -> None:
+    scene = recipe(
+        "In the photo the carot tops are dotted with dark lesions ringed in yellow and whole "
+        "patches have browned off; sprinkler line in the background, pale sky."
+    )
+    assert [(f.crop, f.health) for f in scene.fields] == [("Carrot", "Ill")]
+
+
+def test_a_listed_members_words_and_a_machine_are_not_fields() -> None:
+    scene = recipe(
+        "The church tower gives a view of three of our fields: Agria potatoes in flower nearest "
+        "the village, Spelt furthest away and gone the colour of straw, and a strip of Sturon "
+        "onions between the two. August, late afternoon, a combine already working in the spelt."
+    )
+    assert [f.variety for f in scene.fields] == ["Agria", "Spelt", "Sturon"]
+
+
+def test_a_plot_word_before_a_list_of_its_crops_is_a_heading() -> None:
+    scene = recipe("vineyard in NZ, cabernet on one block n chardonnay on the other, march")
+    assert [f.variety for f in scene.fields] == ["Cabernet Sauvignon", "Chardonnay"]
+    assert {f.season for f in scene.fields} == {"Fall"}

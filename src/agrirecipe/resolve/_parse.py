@@ -709,6 +709,8 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
         if item.role == "number" and item.norm not in ("a", "an") and _is_scenery(following):
             item.role = "filler"
             item.data["counts_scenery"] = True
+        elif item.role == "number" and item.norm in ("a", "an") and following.role == "cue":
+            item.role = "filler"  # "a combine already working in the spelt": not a field
     # "on 20 April", "April 3rd": a day of the month is a date, not a count of fields
     words = [i for i in items if i.role != "separator" or i.norm not in (",",)]
     for index, item in enumerate(words):

@@ -318,11 +318,14 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             and clause.link.norm not in (".", "!", "?")  # a new sentence ends the listing
             and (
                 all(_member_detail(i) for i in clause.items)
-                # "Jalapeños hanging dark and shiny": a word or two joined by "and"
+                # "Jalapeños hanging dark and shiny", "Spelt furthest away and gone the
+                # colour of straw": words about the member, joined by "and"
                 or (
                     clause.link.role == "conjunction"
-                    and len(clause.items) <= 2
-                    and all(i.role in ("unknown", "filler") for i in clause.items)
+                    and all(
+                        i.role in ("unknown", "filler", "of", "cue", "stage", "health")
+                        for i in clause.items
+                    )
                 )
                 # "Conference pears heavy with fruit that is just starting to turn yellow"
                 or clause.link.norm in _RELATIVE
@@ -1356,11 +1359,38 @@ def drop_list_headings(clauses: Sequence[Clause], mentions: list[Mention]) -> li
         ):
             clauses[mention.clause].mentions = []
             continue
-        if _heads_counted_plots(clauses, mention):
+        if _heads_counted_plots(clauses, mention) or _heads_fitting_list(clauses, mention, later):
             clauses[mention.clause].mentions = []
             continue
         kept.append(mention)
     return kept
+
+
+def _heads_fitting_list(
+    clauses: Sequence[Clause], mention: Mention, later: Sequence[Mention]
+) -> bool:
+    """'vineyard in NZ, cabernet on one block n chardonnay on the other': a plot word
+    naming no crop, then (after a comma) two or more fields of crops only it holds."""
+    if (
+        mention.plot is None
+        or mention.has_crop
+        or mention.count not in (None, 1)
+        or mention.refinements
+        or mention.clause + 1 >= len(clauses)
+        or clauses[mention.clause].mentions[-1:] != [mention]
+    ):
+        return False
+    following = clauses[mention.clause + 1]
+    options = set(mention.plot["options"])
+    members = [m for m in later if m.clause > mention.clause][:2]
+    return (
+        following.link is not None
+        and following.link.norm == ","
+        and bool(following.mentions)
+        and bool(options)
+        and len(members) == 2
+        and all(strong_crops(m) and strong_crops(m) <= options for m in members)
+    )
 
 
 def _heads_counted_plots(clauses: Sequence[Clause], mention: Mention) -> bool:
