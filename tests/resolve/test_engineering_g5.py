@@ -232,3 +232,15 @@ def test_a_plot_that_the_rows_fill_has_no_planted_block() -> None:
     field = recipe("10 rows of maize 76 cm apart").fields[0]
     assert field.geometry.planted_m is None
     assert field.row_count == 10
+
+
+def test_a_field_sized_like_a_planting_grid_is_refused_with_the_way_to_say_it() -> None:
+    prompt = "Stone fruit along the north edge, citrus along the south; both blocks 4 m x 2 m"
+    with pytest.raises(PromptError, match="too small for one") as error:
+        recipe(prompt)
+    assert "planted at 4 m x 2 m" in (error.value.hint or "")
+    scene = recipe(prompt.replace("4 m x 2 m", "planted at 4 m x 2 m"))
+    assert [(f.agronomy.row_spacing_m, f.agronomy.in_row_spacing_m) for f in scene.fields] == [
+        (4.0, 2.0),
+        (4.0, 2.0),
+    ]

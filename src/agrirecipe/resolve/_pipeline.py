@@ -290,11 +290,20 @@ def build_recipe(
                 agronomy_update=plan.agronomy_update,
             )
         except ValidationError as exc:
+            width, length = plan.size_m
+            hint = "ask for a larger field"
+            if "size" in plan.stated and max(width, length) <= _SPACING_SIZED_M:
+                # "both blocks 4 m x 2 m": said like a planting grid, read as a field
+                hint += (
+                    f"; if {width:g} x {length:g} m is the planting grid, say so: "
+                    f"'planted at {width:g} m x {length:g} m' or '{width:g} x {length:g} m "
+                    "spacing'"
+                )
             raise PromptError(
                 f"{label}: {_first_message(exc)}",
                 stage="enrich",
                 path=field_id,
-                hint="ask for a larger field",
+                hint=hint,
             ) from exc
         fields.append(spec)
     latitude = context.latitude_deg
@@ -342,6 +351,10 @@ def build_recipe(
         )
     )
     return recipe, steps
+
+
+#: A stated field no longer than this either way may have meant a planting grid.
+_SPACING_SIZED_M = 12.0
 
 
 def _first_message(exc: ValidationError) -> str:
