@@ -111,7 +111,17 @@ def plan_rows(
         rows_per_bed = 1
     rows = stated.get("rows")
     beds = stated.get("beds")
-    if rows is not None and beds is not None and "rows_per_bed" not in stated:
+    if rows is not None and beds is not None and "rows_per_bed" not in stated and rows < beds:
+        # "14 beds at 1.52 m centres, 2 rows each": fewer rows than beds are the rows on
+        # each bed
+        rows_per_bed = int(rows)
+        stated = {k: v for k, v in stated.items() if k != "rows"} | {"rows_per_bed": rows}
+        names = [_STATED_NAMES["rows_per_bed"] if n == _STATED_NAMES["rows"] else n for n in names]
+        warnings.append(
+            f"{label}: {rows:g} rows with {beds:g} beds read as {rows:g} rows on each bed"
+        )
+        rows = None
+    elif rows is not None and beds is not None and "rows_per_bed" not in stated:
         if rows % beds:
             raise _error(
                 label,

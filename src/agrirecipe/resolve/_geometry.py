@@ -78,6 +78,8 @@ class _Pattern:
     min2_m: float | None = None
     #: The second value is the first ("3 m square spacing": 3 m both ways).
     same_value: bool = False
+    #: What the second number is multiplied by ("30 rows at 30 in": inches to metres).
+    scale2: float = 1.0
 
 
 def _alternatives(words: Iterable[str]) -> str:
@@ -151,6 +153,7 @@ def _tables() -> _Tables:
                 max2_m=entry.get("max2_m"),
                 min2_m=entry.get("min2_m"),
                 same_value=bool(entry.get("same_value", False)),
+                scale2=float(entry.get("scale2", 1.0)),
             )
         )
     return _Tables(
@@ -234,7 +237,7 @@ def find_geometry(tokens: Sequence[Token]) -> list[GeometryMatch]:
                             min_m=pattern.min2_m,
                             max_m=pattern.max2_m,
                             min_n=None,
-                            scale=1.0,
+                            scale=pattern.scale2,
                             invert=False,
                             constant=None,
                         ),
@@ -267,6 +270,38 @@ def find_geometry(tokens: Sequence[Token]) -> list[GeometryMatch]:
 _LIST_JOINS = frozenset({"and", ",", "&"})
 
 
+def _listed_after(
+    tokens: Sequence[Token], match: GeometryMatch, claimed: list[bool], tables: _Tables
+) -> list[GeometryMatch]:
+    """The values listed after a measure up to "respectively" ("rows 15 cm and 76 cm
+    respectively"), each read as that measure; [] when no "respectively" ends them."""
+    unit = next((t.norm for t in tokens[match.first : match.last] if t.norm in tables.units), None)
+    listed: list[GeometryMatch] = []
+    cursor = match.last
+    while cursor + 1 < len(tokens) and tokens[cursor].norm in _LIST_JOINS:
+        number_at = cursor + 1
+        try:
+            number = _number(tokens[number_at].norm, tables.number_words)
+        except ValueError:
+            return []
+        end = number_at + 1
+        said_unit = unit
+        if end < len(tokens) and tokens[end].norm in tables.units:
+            said_unit, end = tokens[end].norm, end + 1
+        if any(claimed[number_at:end]) or (unit is None) != (said_unit is None):
+            return []
+        value = round(number * (tables.units[said_unit] if said_unit else 1.0), 9)
+        raw = _raw(tokens, number_at, end)
+        _check(match.key, value, raw)
+        listed.append(GeometryMatch(match.key, value, number_at, end, raw))
+        cursor = end
+    if not listed or cursor >= len(tokens) or tokens[cursor].norm != "respectively":
+        return []
+    last = listed[-1]
+    listed[-1] = replace(last, last=cursor + 1, text=_raw(tokens, last.first, cursor + 1))
+    return listed
+
+
 def _respectively(
     tokens: Sequence[Token],
     found: list[GeometryMatch],
@@ -279,6 +314,16 @@ def _respectively(
     result: list[GeometryMatch] = []
     for match in found:
         ends = match.last < len(tokens) and tokens[match.last].norm == "respectively"
+        if match.share is None and not ends:
+            after = _listed_after(tokens, match, claimed, tables)
+            if after:  # "rows 15 cm and 76 cm respectively"
+                count, start = len(after) + 1, match.first
+                result.append(replace(match, share=(0, count, start)))
+                result.extend(
+                    replace(value, share=(index + 1, count, start))
+                    for index, value in enumerate(after)
+                )
+                continue
         if not ends or match.share is not None:
             result.append(match)
             continue
@@ -481,4 +526,26 @@ def hoist_counted_crops(text: str, tag: Callable[[str], Sequence[Any]]) -> str:
             return match.group(0)
         return f"{words} in {match.group('n')} {match.group('noun')}"
 
+    def of_crop(match: re.Match[str]) -> str:
+        words = match.group("words")
+        items = [i for i in tag(words) if i.role != "separator"]
+        if not items or not all(i.has("crop", "variety") for i in items):
+            return match.group(0)
+        return f"{words} in {match.group('n')} {match.group('noun')} {match.group('tail')}"
+
+    text = _ELLIPTIC_COUNT.sub(r"\g<head> and \g<n> \g<noun> of", text)
+    text = _ROWS_OF_CROP_AT.sub(of_crop, text)
     return _COUNTED_CROP_ROWS.sub(rewrite, text)
+
+
+#: "12 beds of Sturon and 12 of Red Baron": the second count is of the same beds.
+_ELLIPTIC_COUNT = re.compile(
+    r"(?P<head>\b\d+\s+(?P<noun>rows|beds|ridges|drills)\s+of\s+[A-Za-z][\w' -]*?)\s+and\s+"
+    r"(?P<n>\d+)\s+of\b"
+)
+#: "6 rows of peppers at 3 ft": the rows' spacing said after the crop.
+_ROWS_OF_CROP_AT = re.compile(
+    r"(?<![\w.,])(?P<n>\d+)\s+(?P<noun>rows|ridges|drills|beds)\s+of\s+"
+    r"(?P<words>[A-Za-z][\w'’-]*(?:\s+[A-Za-z][\w'’-]*)?)\s+"
+    r"(?P<tail>(?:at|on|every|spaced)\s+\d)"
+)

@@ -546,6 +546,9 @@ class PromptReader(FieldReading):
                     shared_by_list = True
                 else:
                     targets = [member or refined.refinements[-1]]
+            elif clause.link is not None and clause.link.norm == "also" and before:
+                # "a popping corn block, also 30 rows at 30 in": the same again, for it
+                targets = [before[-1]]
             elif _continues_a_description(clauses, position):
                 # "the oranges colouring up, the bananas still small and just planted"
                 targets = [clauses[position - 1].mentions[-1]]

@@ -348,7 +348,25 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             clause.refined_parent = parent
             # "field corn, flint corn and popping corn, 8 rows each at 76 cm": for them all
             shared = any(t.norm in _EACH for i in clause.items for t in i.tokens)
-            clause.refinement = None if shared else previous.refinement
+            # "Two strawberry plots of 10 beds each, Elsanta and Albion, beds 1.3 m ...":
+            # measures after the last member of a full list describe them all
+            ended = (
+                parent.count is not None
+                and len({id(r) for r in parent.refinements}) >= parent.count
+                and previous.link is not None
+                and previous.link.role == "conjunction"
+                and all(i.role in ("geometry", "of", "filler") for i in clause.items)
+                and any(i.role == "geometry" for i in clause.items)
+                # ("Comice, 16 rows, and Durondeau, 12 rows": each member its own)
+                and not any(i.role == "geometry" for r in parent.refinements for i in r.items)
+                and not any(
+                    i.role == "geometry"
+                    for c in clauses[: clause.index]
+                    if c.refined_parent is parent and c.refinement is not None
+                    for i in c.items
+                )
+            )
+            clause.refinement = None if shared or ended else previous.refinement
             continue
         first = next((i for i in clause.items if i.norm != "the"), None)
         share_of = _counted_reference(clause.items)
@@ -1394,11 +1412,13 @@ def _heads_fitting_list(
 
 
 def _heads_counted_plots(clauses: Sequence[Clause], mention: Mention) -> bool:
-    """'Pruning-robot vineyard, two blocks: Chardonnay, ..., Cabernet': a plot word right
-    before a count of plots that lists members it can hold is their heading."""
+    """'Pruning-robot vineyard, two blocks: Chardonnay, ..., Cabernet', 'Lettuce trial ...,
+    three plots from north to south: Cos, crisphead, Lollo Rosso': a plot word or a crop
+    right before a count of plots that lists members it can hold is their heading."""
+    heading_crop = mention.has_crop and not _names_variety(mention)
     if (
-        mention.plot is None
-        or mention.has_crop
+        (mention.plot is None and not heading_crop)
+        or (mention.has_crop and not heading_crop)
         or (mention.count or 1) != 1
         or mention.refinements
         or mention.clause + 1 >= len(clauses)
@@ -1409,7 +1429,7 @@ def _heads_counted_plots(clauses: Sequence[Clause], mention: Mention) -> bool:
     if following.link is None or following.link.norm != "," or len(following.mentions) != 1:
         return False
     plots = following.mentions[0]
-    options = set(mention.plot["options"])
+    options = strong_crops(mention) if heading_crop else set(mention.plot["options"])
     members = {id(r): r for r in plots.refinements}.values()
     return (
         not plots.has_crop
