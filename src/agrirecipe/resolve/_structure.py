@@ -1429,7 +1429,8 @@ def _heads_counted_plots(clauses: Sequence[Clause], mention: Mention) -> bool:
     if following.link is None or following.link.norm != "," or len(following.mentions) != 1:
         return False
     plots = following.mentions[0]
-    options = strong_crops(mention) if heading_crop else set(mention.plot["options"])
+    plot = mention.plot
+    options = strong_crops(mention) if heading_crop or plot is None else set(plot["options"])
     members = {id(r): r for r in plots.refinements}.values()
     return (
         not plots.has_crop
