@@ -321,10 +321,17 @@ class MentionBuilder:
     def _absorb(
         mention: Mention, items: Sequence[Item], *, before_head: bool, counts: bool = True
     ) -> None:
-        for item in items:
+        for index, item in enumerate(items):
             mention.items.append(item)
+            # "an old wind pump in the corner of the field": the article is the pump's;
+            # the field is named by "the" after it
+            of_another = (
+                before_head
+                and item.norm in ("a", "an")
+                and any(later.norm in ("the", "its", "their") for later in items[index + 1 :])
+            )
             # The amount nearest the head wins: "a combine ... a few cereal fields".
-            if item.role == "number" and (before_head or counts):
+            if item.role == "number" and (before_head or counts) and not of_another:
                 value = float(item.data.get("value", 1))
                 if before_head or item.norm not in ("a", "an"):
                     mention.count = _count(value, item)

@@ -533,11 +533,36 @@ def hoist_counted_crops(text: str, tag: Callable[[str], Sequence[Any]]) -> str:
             return match.group(0)
         return f"{words} in {match.group('n')} {match.group('noun')} {match.group('tail')}"
 
+    def names_a_crop(words: str) -> bool:
+        items = [i for i in tag(words) if i.role != "separator"]
+        return bool(items) and all(i.has("crop", "variety") for i in items)
+
+    def many_plants(match: re.Match[str]) -> str:
+        words = match.group("words")
+        if float(match.group("n").replace(",", "")) <= _MOST_FIELDS:
+            return match.group(0)
+        if names_a_crop(words):
+            return f"{match.group('n')} {words} plants"
+        first, _, rest = words.partition(" ")
+        plot = any(i.has("plot") for i in tag(rest))  # "100 apple orchards": fields
+        if rest and names_a_crop(first) and not plot:  # "1,200 Valencia in one block"
+            return f"{match.group('n')} {first} plants {rest}"
+        return match.group(0)
+
+    text = _MANY_OF_A_CROP.sub(many_plants, text)
     text = _ELLIPTIC_COUNT.sub(r"\g<head> and \g<n> \g<noun> of", text)
     text = _ROWS_OF_CROP_AT.sub(of_crop, text)
     return _COUNTED_CROP_ROWS.sub(rewrite, text)
 
 
+#: More fields than a scene holds: a number above it before a crop counts plants.
+_MOST_FIELDS = 64
+#: "150 Pink Lady in the bottom block": a count of plants named by their crop.
+_MANY_OF_A_CROP = re.compile(
+    r"(?<![\w.,])(?P<n>\d{1,3}(?:,\d{3})+|\d{2,})\s+"
+    r"(?P<words>[A-Za-z][\w'’-]*(?:\s+[A-Za-z][\w'’-]*)?)\b"
+    r"(?!\s+(?:trees|tree|plants|plant|vines|vine|bushes|bush|stems|heads|rows|beds|ridges))"
+)
 #: "12 beds of Sturon and 12 of Red Baron": the second count is of the same beds.
 _ELLIPTIC_COUNT = re.compile(
     r"(?P<head>\b\d+\s+(?P<noun>rows|beds|ridges|drills)\s+of\s+[A-Za-z][\w' -]*?)\s+and\s+"

@@ -98,7 +98,7 @@ def _crop_phrase(following: str, tag: Callable[[str], Sequence[Item]]) -> str:
 _LEADING = re.compile(
     r"(?<!in )(?<!on )(?<!of )(?<!at )(?<!to )"
     r"(?:\b(?i:the)\s+|(?:^|(?<=[,;.:]\s)))(?P<side>(?i:north|south|east|west|top|bottom|upper|lower))(?i:ern)?\s+"
-    r"(?i:plot|block|field|one|part|half|strip|parcel|section|paddock|area)\s*"
+    r"(?i:plot|block|field|one|part|half|strip|parcel|section|paddock|area)\b\s*"
     r"(?:(?i:is|are|has|holds|gets|grows|has got)\s+|[:\-–—]\s*)?"
     r"(?P<rest>(?!(?i:of|to|and|with|in|on|at|is|are)\b)[^\s,;.:()][^,;.:()]*)"
 )

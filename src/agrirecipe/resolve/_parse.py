@@ -173,6 +173,8 @@ class PromptReader(FieldReading):
         prompt_latitude, latitude_text, items = read_latitude(text, items)
         items = read_sizes(read_heights(items))
         _measures_are_not_counts(items)
+        _colours_are_not_crops(items, text)
+        _past_and_other_readiness(items)
         _plots_of_a_list(items)
         _totals_are_not_sizes(items)
         self._reject_scenery(items)
@@ -810,6 +812,85 @@ def _described_crop(clause: Clause, before: Sequence[Mention]) -> list[Mention]:
     return fields[-1:]
 
 
+#: Colour words a crop name joins to make a colour ("yellow-orange", "olive-green").
+_COLOURS = frozenset(
+    {
+        "red",
+        "green",
+        "yellow",
+        "orange",
+        "brown",
+        "purple",
+        "gold",
+        "golden",
+        "black",
+        "white",
+        "grey",
+        "gray",
+        "pink",
+        "blue",
+        "coloured",
+        "colored",
+        "tinted",
+    }
+)
+
+
+def _colours_are_not_crops(items: Sequence[Item], text: str) -> None:
+    """'striped yellow-orange with rust', 'olive-green velvety patches': a crop word joined
+    by a hyphen to a colour is a colour, not a field (nor an unknown crop)."""
+    for first, second in itertools.pairwise(items):
+        if text[first.end : second.start] != "-":
+            continue
+        for crop, colour in ((first, second), (second, first)):
+            if crop.role in ("head", "other_crop") and colour.norm in _COLOURS:
+                crop.role = "filler"
+                crop.data["colour"] = True
+
+
+#: What a crop may be "ready for" that makes it ripe ("ready for harvest", "ready for
+#: picking"); anything else ("wire hoops ready for the fleece") is not its stage.
+_HARVESTS = frozenset(
+    {
+        "harvest",
+        "harvesting",
+        "picking",
+        "pick",
+        "lifting",
+        "lift",
+        "cutting",
+        "cut",
+        "combining",
+        "combine",
+        "market",
+        "digging",
+        "threshing",
+    }
+)
+#: Words after which a month is when the crop was sown, not the scene's time.
+_SOWN = frozenset({"drilled", "sown", "planted", "seeded", "transplanted"})
+
+
+def _past_and_other_readiness(items: Sequence[Item]) -> None:
+    """'wire hoops ready for the fleece': not the crop's stage. 'drilled last October;
+    it's May now': a month said as when the crop was sown is not the scene's time (when
+    another time is said)."""
+    times = [i for i in items if i.role in ("month", "season")]
+    for index, item in enumerate(items):
+        if item.role == "stage" and item.norm == "ready" and items[index + 1 : index + 2]:
+            if items[index + 1].norm == "for":
+                what = next((i.norm for i in items[index + 2 : index + 4] if i.norm != "the"), "")
+                if what not in _HARVESTS:
+                    item.role = "filler"
+        if item.role != "month" or len(times) < 2:
+            continue
+        before = [i.norm for i in items[max(0, index - 2) : index]]
+        last = before[-1] if before else ""
+        if last == "last" or last in _SOWN or (last == "in" and before[0] in _SOWN):
+            item.role = "filler"
+            item.data["sown"] = True
+
+
 def _after_list_plots(clauses: Sequence[Clause], position: int) -> bool:
     """Whether the sentence so far named the plots of a list ("... in adjacent strips")."""
     for index in range(position, -1, -1):
@@ -832,7 +913,7 @@ def _plots_of_a_list(items: Sequence[Item]) -> None:
             cursor < len(items)
             and len(between) < 3
             and (
-                items[cursor].role in ("number", "size")
+                items[cursor].role in ("number", "size", "unknown")
                 or items[cursor].norm in _PLOT_ADJECTIVES
                 or (
                     items[cursor].role in ("relation", "trailer")
@@ -848,16 +929,19 @@ def _plots_of_a_list(items: Sequence[Item]) -> None:
         spec = plot.data.get("value") if plot.role == "plot" else None
         if not isinstance(spec, dict) or spec.get("individual"):
             continue
-        crops, comma = 0, False
+        crops, comma, joined = 0, False, False
         for before in reversed(items[:index]):
             if before.role == "separator" and before.norm in _SENTENCE_MARKS:
                 break
             comma = comma or (before.role == "separator" and crops == 0)
-            if before.role == "head" and before.has("crop", "variety"):
+            named = before.role == "head" and before.has("crop", "variety")
+            if named and not joined:  # "tomatoes (san marzanno)": one crop named
                 crops += 1
+            joined = named or (joined and before.norm in ("(", ")"))
         counted = [i for i in between if i.role == "number"]
         followed = cursor + 1 < len(items) and items[cursor + 1].role in ("of", "head")
-        definite = any(i.norm == "the" for i in between) and not counted
+        # "on the terraces", "on steep slate terraces": where the crop named grows
+        definite = any(i.norm == "the" or i.role == "unknown" for i in between) and not counted
         if spec.get("plural") and definite and crops >= 1:
             pass  # "Cavendish bananas on the terraces below the house": where they grow
         elif spec.get("plural"):

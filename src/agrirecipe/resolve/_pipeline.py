@@ -375,13 +375,14 @@ def _validate(intent: SceneIntent, context: ResolveContext) -> None:
     """Catch intents that name what the hierarchy does not hold (any strategy can err)."""
     hierarchy = context.hierarchy
     # "the": references to labelled fields are spelled "the <crop>" ("north of A");
-    # "in": "12 maize rows" is read as "maize in 12 rows"
+    # "in": "12 maize rows" is read as "maize in 12 rows"; "plants": "150 Pink Lady" as
+    # "150 Pink Lady plants"
     expanded = expand_casual(intent.prompt)
     prompt_words = (
         _words(intent.prompt)
         | _words(expanded)
         | _words(spread_value_lists(expanded))
-        | {"the", "in"}
+        | {"the", "in", "plants"}
     )
     for index, field in enumerate(intent.fields):
         path = f"fields[{index}]"

@@ -120,16 +120,20 @@ def _fold_described_plants(clause: Clause) -> None:
 
 
 def _promote_into_plot(clauses: Sequence[Clause], clause: Clause) -> None:
-    """ "second plot of Sonata": a weak variety name right after a crop-less plot's "of"
-    names the plot's crop when an earlier field grows that crop."""
+    """ "second plot of Sonata", "Sonata in the open ground": a weak variety name right
+    after a crop-less plot's "of", or opening the plot's clause, names the plot's crop
+    when an earlier field grows that crop."""
     if len(clause.mentions) != 1:
         return
     mention = clause.mentions[0]
     if mention.has_crop or mention.plot is None or mention.category is not None:
         return
     ordered = sorted(clause.items, key=lambda i: i.start)
-    for before, item in itertools.pairwise(ordered):
-        if item.role not in ("weak_variety", "filler") or before.role != "of":
+    for index, item in enumerate(ordered):
+        opens = index == 0 and item.tokens[0].capitalised
+        if item.role not in ("weak_variety", "filler") or not (
+            opens or (index > 0 and ordered[index - 1].role == "of")
+        ):
             continue
         named = {c for c2 in clauses[: clause.index] for m in c2.mentions for c in strong_crops(m)}
         senses = [s for s in item.senses_of("variety") if s.crop in named]
