@@ -877,11 +877,11 @@ def _past_and_other_readiness(items: Sequence[Item]) -> None:
     another time is said)."""
     times = [i for i in items if i.role in ("month", "season")]
     for index, item in enumerate(items):
-        if item.role == "stage" and item.norm == "ready" and items[index + 1 : index + 2]:
-            if items[index + 1].norm == "for":
-                what = next((i.norm for i in items[index + 2 : index + 4] if i.norm != "the"), "")
-                if what not in _HARVESTS:
-                    item.role = "filler"
+        following = [i.norm for i in items[index + 1 : index + 4]]
+        if item.role == "stage" and item.norm == "ready" and following[:1] == ["for"]:
+            what = next((word for word in following[1:] if word != "the"), "")
+            if what not in _HARVESTS:
+                item.role = "filler"
         if item.role != "month" or len(times) < 2:
             continue
         before = [i.norm for i in items[max(0, index - 2) : index]]
