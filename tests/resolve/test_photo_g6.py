@@ -97,3 +97,41 @@ def test_a_weak_variety_opening_a_plots_clause_is_its_crop() -> None:
 )
 def test_more_signs_of_illness(prompt: str, health: str) -> None:
     assert recipe(prompt).fields[0].health == health
+
+
+def test_a_heading_before_a_counted_list_and_distinct_vegetables() -> None:
+    scene = recipe(
+        "This one's from my allotment: three different veg patches, a shed with a water butt "
+        "behind them and my neighbour waving over the fence."
+    )
+    assert len(scene.fields) == 3
+    assert {f.category for f in scene.fields} == {"Vegetables"}
+    plots = recipe("Five plots along the lane, each with a different vegetable.")
+    assert len(plots.fields) == 5
+    assert {f.category for f in plots.fields} == {"Vegetables"}
+    assert len({f.crop for f in plots.fields}) == 5
+
+
+def test_a_bed_with_a_size_is_not_a_bed_width() -> None:
+    scene = recipe(
+        "Carrot bed 1.5 m x 25 m at 150 plants per square metre, and an onion bed of the same "
+        "1.5 x 25 m size at 40 per square metre beside it"
+    )
+    assert [f.geometry.size_m for f in scene.fields] == [(1.5, 25.0), (1.5, 25.0)]
+
+
+def test_hands_of_the_bananas_named_are_theirs() -> None:
+    (field,) = recipe(
+        "a plantation of Dwarf Cavendish with big purple flower buds hanging down and the first "
+        "hands of bananas just forming."
+    ).fields
+    assert (field.variety, field.stage) == ("Cavendish", "Reproductive")
+
+
+def test_a_winter_orchard_with_bare_branches_is_of_a_deciduous_fruit() -> None:
+    scene = recipe(
+        "On one side of the lane there's an orchard, bare branches all white with hoarfrost, "
+        "and on the other a vineyard pruned right back and dormant."
+    )
+    assert scene.fields[0].crop in ("Apple", "Pear", "Cherry")
+    assert scene.fields[0].season == "Winter"

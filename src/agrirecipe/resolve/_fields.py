@@ -192,6 +192,14 @@ class FieldReading:
         category = member.category
         if category is not None:
             options = tuple(o for o in options if self.crop_categories.get(o) == category)
+        if crop is None and any(
+            i.data["cue"].deciduous_only for i in member.items if "cue" in i.data
+        ):
+            # "an orchard, bare branches white with hoarfrost": a tree that drops its leaves
+            deciduous = tuple(
+                o for o in options if self.context.knowledge.crop_file(o).leaf_habit == "deciduous"
+            )
+            options = deciduous or options
         if crop is None and len(options) == 1:
             crop = options[0]
         heads = [h for h in member.mention.heads if h.role in ("head", "plot")]

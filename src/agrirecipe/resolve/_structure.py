@@ -949,8 +949,10 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
         )
         # "the Navel block ..., full of orange fruit": the named crop's own fruit;
         # "a wheelbarrow full of split fruit": what the scenery holds
-        own_fruit = _fruit_of_named_crop(mention, clauses[:position]) or _held_by_scenery(
-            clause, mention
+        own_fruit = (
+            _fruit_of_named_crop(mention, clauses[:position])
+            or _part_of_named_crop(mention, clauses[:position])
+            or _held_by_scenery(clause, mention)
         )
         if own_fruit:
             listed, described = False, True
@@ -976,6 +978,13 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
             for earlier in (m for c in clauses[:position] for m in c.mentions):
                 earlier.distinct = True
                 earlier.distinct_crops = True
+                # "Five plots ..., each with a different vegetable"
+                if (
+                    mention.category is not None
+                    and earlier.category is None
+                    and not (earlier.has_crop)
+                ):
+                    earlier.category = mention.category
         crops = strong_crops(mention)
         for head in mention.heads:
             head.role = "filler"
@@ -996,6 +1005,20 @@ def _fruit_of_named_crop(mention: Mention, before: Sequence[Clause]) -> bool:
         or not any(h.norm in parts for h in mention.heads)
         or _names_variety(mention)
     ):
+        return False
+    crops = strong_crops(mention)
+    named = {c for clause in before for m in clause.mentions for c in strong_crops(m)}
+    return bool(crops) and crops <= named
+
+
+def _part_of_named_crop(mention: Mention, before: Sequence[Clause]) -> bool:
+    """ "the first hands of bananas just forming" after a Cavendish plantation: a part of
+    the plants ("hands of", "bunches of") of a crop already named, naming no variety."""
+    if mention.count is not None or _names_variety(mention) or not mention.heads:
+        return False
+    first = min(h.start for h in mention.heads)
+    said = [i for i in mention.items if i.start < first]
+    if len(said) < 2 or said[-1].role != "of" or said[-2].norm not in _plant_part_words():
         return False
     crops = strong_crops(mention)
     named = {c for clause in before for m in clause.mentions for c in strong_crops(m)}
@@ -1361,7 +1384,7 @@ def drop_list_headings(clauses: Sequence[Clause], mentions: list[Mention]) -> li
             ),
             None,
         )
-        later = [m for m in mentions[position + 1 :] if m.has_crop]
+        later = [m for m in mentions[position + 1 :] if m.has_crop or m.category is not None]
         if (
             following is not None
             and following.link is not None
@@ -1376,7 +1399,8 @@ def drop_list_headings(clauses: Sequence[Clause], mentions: list[Mention]) -> li
             and (mention.count or 1) == 1
             and not mention.refinements
             and mention.rest is None
-            and len(later) >= 2
+            # "my allotment: three different veg patches": two or more fields listed
+            and sum(m.count or 1 for m in later) >= 2
             and later[0].clause >= following.index
         ):
             clauses[mention.clause].mentions = []
