@@ -135,3 +135,19 @@ def test_a_winter_orchard_with_bare_branches_is_of_a_deciduous_fruit() -> None:
     )
     assert scene.fields[0].crop in ("Apple", "Pear", "Cherry")
     assert scene.fields[0].season == "Winter"
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "Savoy and January King in two neighbouring blocks, frost on the crinkly leaves",
+        "Savoy and January King in adjacent plots",
+    ],
+)
+def test_a_list_in_neighbouring_plots_lies_side_by_side(prompt: str) -> None:
+    scene = recipe(prompt)
+    savoy, king = scene.fields
+    assert [f.variety for f in scene.fields] == ["Savoy", "January King"]
+    assert {(r.kind, frozenset((r.subject, *r.objects))) for r in scene.relations} == {
+        ("next_to", frozenset((savoy.id, king.id)))
+    }

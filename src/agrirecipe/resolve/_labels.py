@@ -18,7 +18,12 @@ from collections.abc import Callable, Sequence
 
 from agrirecipe.resolve._lexicon import Item, tokenize
 
-__all__ = ["place_leading_directions", "place_trailing_directions", "resolve_labels"]
+__all__ = [
+    "place_leading_directions",
+    "place_neighbouring_plots",
+    "place_trailing_directions",
+    "resolve_labels",
+]
 
 _NOUNS = r"(?:block|plot|field|parcel|area|section|strip|zone|bay|compartment|trial plot)"
 # "Block A:", "plot 2 -", "Field B," : a label that introduces what follows it.
@@ -174,3 +179,17 @@ def place_trailing_directions(text: str) -> str:
         start, end = match.span("side")
         text = f"{text[:start]}in the {match.group('side')}{text[end:]}"
     return text
+
+
+# "Savoy and January King in two neighbouring blocks": the plots of a list, side by side
+_NEIGHBOURING = re.compile(
+    r"\b(?P<at>(?i:in|on))\s+(?P<count>(?:\w+\s+)?)(?i:neighbouring|neighboring|adjacent)\s+"
+    r"(?P<plots>(?i:blocks|plots|fields|strips|beds|patches|paddocks))\b"
+)
+
+
+def place_neighbouring_plots(text: str) -> str:
+    """``text`` with "in two neighbouring blocks" written "in two blocks side by side"."""
+    return _NEIGHBOURING.sub(
+        lambda m: f"{m.group('at')} {m.group('count')}{m.group('plots')} side by side", text
+    )
