@@ -515,27 +515,26 @@ _COUNTED_CROP_ROWS = re.compile(
 
 
 def hoist_counted_crops(text: str, tag: Callable[[str], Sequence[Any]]) -> str:
-    """``text`` with "12 maize rows" written "maize in 12 rows", so the number counts rows,
-    not fields. ``tag`` reads a phrase into lexicon items; only words that all name a
-    crop or variety move."""
-
-    def rewrite(match: re.Match[str]) -> str:
-        words = match.group("words")
-        items = [i for i in tag(words) if i.role != "separator"]
-        if not items or not all(i.has("crop", "variety") for i in items):
-            return match.group(0)
-        return f"{words} in {match.group('n')} {match.group('noun')}"
-
-    def of_crop(match: re.Match[str]) -> str:
-        words = match.group("words")
-        items = [i for i in tag(words) if i.role != "separator"]
-        if not items or not all(i.has("crop", "variety") for i in items):
-            return match.group(0)
-        return f"{words} in {match.group('n')} {match.group('noun')} {match.group('tail')}"
+    """``text`` with counts said of a crop's rows or plants written so that the number
+    counts rows or plants, not fields: "12 maize rows" is "maize in 12 rows", "6 rows of
+    peppers at 3 ft" is "peppers in 6 rows at 3 ft", "12 beds of Sturon and 12 of Red
+    Baron" says "beds" twice, "150 Pink Lady" is "150 Pink Lady plants". ``tag`` reads a
+    phrase into lexicon items; only words that all name a crop or variety move."""
 
     def names_a_crop(words: str) -> bool:
         items = [i for i in tag(words) if i.role != "separator"]
         return bool(items) and all(i.has("crop", "variety") for i in items)
+
+    def crop_rows(tail: str) -> Callable[[re.Match[str]], str]:
+        def rewrite(match: re.Match[str]) -> str:
+            words = match.group("words")
+            if not names_a_crop(words):
+                return match.group(0)
+            return f"{words} in {match.group('n')} {match.group('noun')}" + tail.format(
+                **match.groupdict()
+            )
+
+        return rewrite
 
     def many_plants(match: re.Match[str]) -> str:
         words = match.group("words")
@@ -551,8 +550,8 @@ def hoist_counted_crops(text: str, tag: Callable[[str], Sequence[Any]]) -> str:
 
     text = _MANY_OF_A_CROP.sub(many_plants, text)
     text = _ELLIPTIC_COUNT.sub(r"\g<head> and \g<n> \g<noun> of", text)
-    text = _ROWS_OF_CROP_AT.sub(of_crop, text)
-    return _COUNTED_CROP_ROWS.sub(rewrite, text)
+    text = _ROWS_OF_CROP_AT.sub(crop_rows(" {tail}"), text)
+    return _COUNTED_CROP_ROWS.sub(crop_rows(""), text)
 
 
 #: More fields than a scene holds: a number above it before a crop counts plants.

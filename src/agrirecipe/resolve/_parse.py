@@ -796,9 +796,7 @@ _HERE_EVERYWHERE = frozenset({"everywhere", "throughout"})
 
 def _sentence_fields(clauses: Sequence[Clause], position: int) -> list[Mention]:
     """The fields named in the sentence before clause ``position``, each once."""
-    start = position
-    while start > 0 and not _ends_a_sentence(clauses[start]):
-        start -= 1
+    start = _sentence_start(clauses, position)
     return list({id(m): m for c in clauses[start:position] for m in c.mentions}.values())
 
 
@@ -1017,6 +1015,14 @@ def _ends_a_sentence(clause: Clause) -> bool:
     return link is not None and link.norm in _SENTENCE_ENDS
 
 
+def _sentence_start(clauses: Sequence[Clause], position: int) -> int:
+    """The index of the clause that begins the sentence clause ``position`` is in."""
+    start = position
+    while start > 0 and not _ends_a_sentence(clauses[start]):
+        start -= 1
+    return start
+
+
 def _only_measures(clause: Clause) -> bool:
     """A clause of row measures and words that say nothing of a field ("Tall spindle")."""
     return not clause.mentions and all(
@@ -1049,9 +1055,7 @@ def _parallel_fields(
     """'10 rows of beef tomatoes north of 10 rows of cherry tomatoes, 1.6 m between
     rows': the fields of the sentence, when each states the same measures, so what
     follows them in that sentence is about all of them ([] otherwise)."""
-    start = position
-    while start > 0 and not _ends_a_sentence(clauses[start]):
-        start -= 1
+    start = _sentence_start(clauses, position)
     end = position + 1
     while end < len(clauses) and not _ends_a_sentence(clauses[end]):
         if clauses[end].mentions:
@@ -1078,9 +1082,7 @@ def _share_each_measures(clauses: Sequence[Clause]) -> None:
             if not any(t.norm in ("each", "both") for i in measures for t in i.tokens):
                 continue
             each = measures  # "150 trees each at 7 m x 4 m": the whole measure
-            start = position
-            while start > 0 and not _ends_a_sentence(clauses[start]):
-                start -= 1
+            start = _sentence_start(clauses, position)
             others = {id(m): m for c in clauses[start:position] for m in c.mentions}
             for other in others.values():
                 if other is mention:
