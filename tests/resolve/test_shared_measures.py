@@ -130,3 +130,24 @@ def test_a_new_plot_after_there_is_is_not_the_plot_before(prompt: str) -> None:
 def test_a_vineyard_of_oranges_is_still_a_contradiction() -> None:
     with pytest.raises(PromptError, match="contradiction"):
         recipe("a vineyard of Navel oranges")
+
+
+@pytest.mark.parametrize(
+    ("prompt", "areas"),
+    [
+        ("a wheat field and a maize field, 2 ha and 3 ha respectively", [20_000, 30_000]),
+        (
+            "centenary strawberries south of the elsanta ones, both ripe in june, 30x40m and "
+            "30x60m resp.",
+            [1_200, 1_800],
+        ),
+    ],
+)
+def test_sizes_given_respectively(prompt: str, areas: list[int]) -> None:
+    scene = recipe(prompt)
+    assert [f.geometry.area_m2 for f in scene.fields] == pytest.approx(areas, rel=0.01)
+
+
+def test_sizes_given_respectively_need_as_many_fields() -> None:
+    with pytest.raises(PromptError, match="respectively"):
+        recipe("a wheat field, 2 ha and 3 ha respectively")

@@ -323,24 +323,30 @@ def describe_intent(intent: FieldIntent) -> str:
     return words + (f" ({', '.join(stated)})" if stated else "")
 
 
+def _share(item: Item) -> tuple[int, int, int] | None:
+    """An item's place in a "respectively" list: (index, how many, the list's start)."""
+    if item.role == "geometry":
+        shares = [m.share for m in item.data["geometry"] if m.share is not None]
+        return shares[0] if shares else None
+    share = item.data.get("share") if item.role == "size" else None
+    return cast(tuple[int, int, int], share) if share is not None else None
+
+
 def give_respectively(fields: Sequence[FieldDraft]) -> None:
-    """'Gala and Fuji blocks, 3.4 m and 3.5 m row spacing respectively': each value of a
-    "respectively" list goes to one of the fields named up to the last field that holds
-    the list, in order (the first value to the first of them)."""
+    """'Gala and Fuji blocks, 3.4 m and 3.5 m row spacing respectively', '..., 30x40m and
+    30x60m resp.': each value of a "respectively" list goes to one of the fields named up
+    to the last field that holds the list, in order (the first value to the first)."""
     lists: dict[int, list[Item]] = {}
     holders: dict[int, int] = {}
     for position, field in enumerate(fields):
         for item in field.items:
-            if item.role != "geometry":
-                continue
-            for match in item.data["geometry"]:
-                if match.share is not None:
-                    start = match.share[2]
-                    if item not in lists.setdefault(start, []):
-                        lists[start].append(item)
-                    holders[start] = position
+            share = _share(item)
+            if share is not None:
+                if item not in lists.setdefault(share[2], []):
+                    lists[share[2]].append(item)
+                holders[share[2]] = position
     for start, items in lists.items():
-        count = items[0].data["geometry"][0].share[1]
+        count = cast(tuple[int, int, int], _share(items[0]))[1]
         named = fields[: holders[start] + 1]
         if len(named) < count:
             raise PromptError(
@@ -353,5 +359,5 @@ def give_respectively(fields: Sequence[FieldDraft]) -> None:
         for field in fields:
             field.items[:] = [i for i in field.items if i not in items]
         for item in items:
-            index = item.data["geometry"][0].share[0]
+            index = cast(tuple[int, int, int], _share(item))[0]
             named[len(named) - count + index].items.append(item)

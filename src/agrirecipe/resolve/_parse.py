@@ -179,6 +179,7 @@ class PromptReader(FieldReading):
         _past_and_other_readiness(items)
         _plots_of_a_list(items)
         _totals_are_not_sizes(items)
+        _respective_sizes(items)
         self._reject_scenery(items)
         self._reject_other_crops(items)
         builder = MentionBuilder(self.crop_categories)
@@ -889,6 +890,25 @@ def _past_and_other_readiness(items: Sequence[Item]) -> None:
         if last == "last" or last in _SOWN or (last == "in" and before[0] in _SOWN):
             item.role = "filler"
             item.data["sown"] = True
+
+
+def _respective_sizes(items: Sequence[Item]) -> None:
+    """'30x40m and 30x60m respectively': sizes listed before "respectively" are one for
+    each field named before them, in order (``give_respectively`` gives them out)."""
+    for index, item in enumerate(items):
+        if item.norm != "respectively":
+            continue
+        sizes: list[Item] = []
+        for before in reversed(items[:index]):
+            if before.role == "size":
+                sizes.insert(0, before)
+            elif not (
+                before.role == "conjunction" or (before.role == "separator" and before.norm == ",")
+            ):
+                break
+        if len(sizes) >= 2:
+            for place, size in enumerate(sizes):
+                size.data["share"] = (place, len(sizes), sizes[0].start)
 
 
 def _after_list_plots(clauses: Sequence[Clause], position: int) -> bool:
