@@ -17,7 +17,7 @@ from __future__ import annotations
 import functools
 import itertools
 import math
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -381,29 +381,31 @@ def _count(value: float, item: Item) -> int:
 
 #: "there's", "there is", "there are": words that bring in something new
 _EXISTENTIAL = frozenset({"s", "is", "are", "was", "were", "stands", "lies", "sits"})
+_ARTICLE = frozenset({"a", "an"})
+
+
+def _said(pending: Sequence[Item], first: Collection[str], then: Collection[str]) -> bool:
+    """Whether the words before a head hold a word of ``first`` right before one of
+    ``then`` ("there" "is", "has" "a")."""
+    norms = [t.norm for item in pending for t in item.tokens]
+    return any(a in first and b in then for a, b in itertools.pairwise(norms))
 
 
 def _existential(clause: Clause, pending: Sequence[Item]) -> bool:
     """'west of the vineyard there's a block of Navel oranges': after "there is" comes a
     new field, not more words about the one before; so it does after "west of the
     vineyard is a ..." (a place, then what stands there)."""
-    norms = [t.norm for item in pending for t in item.tokens]
-    if "theres" in norms or any(
-        a == "there" and b in _EXISTENTIAL for a, b in itertools.pairwise(norms)
-    ):
+    if any(t.norm == "theres" for item in pending for t in item.tokens):
+        return True
+    if _said(pending, {"there"}, _EXISTENTIAL):
         return True
     placed = clause.link is not None and clause.link.role == "relation"
-    return placed and any(
-        a in _EXISTENTIAL and b in ("a", "an") for a, b in itertools.pairwise(norms)
-    )
+    return placed and _said(pending, _EXISTENTIAL, _ARTICLE)
 
 
 def _possessed(pending: Sequence[Item]) -> bool:
     """'The cherry orchard has a plot of cherry tomatoes': what a field has is another."""
-    norms = [t.norm for item in pending for t in item.tokens]
-    return any(
-        a in ("has", "have", "had") and b in ("a", "an") for a, b in itertools.pairwise(norms)
-    )
+    return _said(pending, {"has", "have", "had"}, _ARTICLE)
 
 
 def _pre_head_start(pending: Sequence[Item]) -> int:

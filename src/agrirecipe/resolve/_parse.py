@@ -35,6 +35,7 @@ step  pass                                        module (data)
 
 from __future__ import annotations
 
+import functools
 import itertools
 from collections.abc import Callable, Sequence
 
@@ -434,7 +435,7 @@ class PromptReader(FieldReading):
                 hint="name a crop, a variety or a kind of field, e.g. " + _EXAMPLES,
             )
         scenery = [i.raw for i in items if _is_scenery(i)]
-        if scenery and all(c.norm in _ONLY_A_SCENE for c in containers):
+        if scenery and all(c.norm in _reader_words("only_a_scene") for c in containers):
             # "a drone survey scene over the yard: two tractors, a sprayer and the shed"
             raise PromptError(
                 f"{NOTHING_FOUND}: only scenery ({', '.join(repr(w) for w in scenery[:5])})",
@@ -486,7 +487,7 @@ class PromptReader(FieldReading):
                         sub.items.extend(i for i in others if i.role not in roles)
                 continue
             alls = [i for i in attributes if i.role == "all"]
-            if says_all and after and all(i.norm in _HERE_EVERYWHERE for i in alls):
+            if says_all and after and all(i.norm in _reader_words("here_everywhere") for i in alls):
                 # "Field A - Russet potatoes, blight everywhere. Field B - ...": everywhere
                 # in the field just named, when more fields follow
                 attributes = [i for i in attributes if i.role != "all"]
@@ -614,7 +615,7 @@ class PromptReader(FieldReading):
                     for h in t.heads
                 )
             )
-            parallel = _parallel_fields(clauses, position, before) if geometry else []
+            parallel = _parallel_fields(clauses, position) if geometry else []
             if parallel:
                 for target in parallel:
                     target.items.extend(geometry)
@@ -738,11 +739,6 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
             item.data["date"] = True
 
 
-#: Words for the picture itself, not for a farm: with only scenery in them they ask for
-#: no field ("a drone survey scene over the equipment yard").
-_ONLY_A_SCENE = frozenset({"scene", "scenery", "environment", "simulation", "world", "setting"})
-
-
 def _purpose(item: Item) -> bool:
     """A word naming what a request is for ("dataset", "test", "survey")."""
     group = item.data.get("scenery") or next(
@@ -751,32 +747,7 @@ def _purpose(item: Item) -> bool:
     return item.role in ("filler", "non_agricultural") and group in _PURPOSES
 
 
-#: Words between "in" and the plots a list of crops is grown in ("in adjacent strips").
-_PLOT_ADJECTIVES = frozenset(
-    {
-        "adjacent",
-        "neighbouring",
-        "neighboring",
-        "separate",
-        "parallel",
-        "their",
-        "own",
-        "its",
-        "the",
-    }
-)
 _SENTENCE_MARKS = frozenset({".", "!", "?", ";"})
-
-
-#: Words after a size that make it the farm's total ("40 ha in total", "60 ha all told").
-_TOTALS = (
-    ("in", "total"),
-    ("total",),
-    ("altogether",),
-    ("overall",),
-    ("all", "told"),
-    ("in", "all"),
-)
 
 
 def _totals_are_not_sizes(items: Sequence[Item]) -> None:
@@ -786,13 +757,9 @@ def _totals_are_not_sizes(items: Sequence[Item]) -> None:
         if item.role != "size":
             continue
         after = tuple(norms[index + 1 : index + 3])
-        if any(after[: len(words)] == words for words in _TOTALS):
+        if any(after[: len(words)] == tuple(words.split()) for words in _reader_words("totals")):
             item.role = "filler"
             item.data["total"] = True
-
-
-#: "All" words that may mean all over one field ("blight everywhere").
-_HERE_EVERYWHERE = frozenset({"everywhere", "throughout"})
 
 
 def _sentence_fields(clauses: Sequence[Clause], position: int) -> list[Mention]:
@@ -813,30 +780,6 @@ def _described_crop(clause: Clause, before: Sequence[Mention]) -> list[Mention]:
     return fields[-1:]
 
 
-#: Colour words a crop name joins to make a colour ("yellow-orange", "olive-green").
-_COLOURS = frozenset(
-    {
-        "red",
-        "green",
-        "yellow",
-        "orange",
-        "brown",
-        "purple",
-        "gold",
-        "golden",
-        "black",
-        "white",
-        "grey",
-        "gray",
-        "pink",
-        "blue",
-        "coloured",
-        "colored",
-        "tinted",
-    }
-)
-
-
 def _colours_are_not_crops(items: Sequence[Item], text: str) -> None:
     """'striped yellow-orange with rust', 'olive-green velvety patches': a crop word joined
     by a hyphen to a colour is a colour, not a field (nor an unknown crop)."""
@@ -844,32 +787,9 @@ def _colours_are_not_crops(items: Sequence[Item], text: str) -> None:
         if text[first.end : second.start] != "-":
             continue
         for crop, colour in ((first, second), (second, first)):
-            if crop.role in ("head", "other_crop") and colour.norm in _COLOURS:
+            if crop.role in ("head", "other_crop") and colour.norm in _reader_words("colours"):
                 crop.role = "filler"
                 crop.data["colour"] = True
-
-
-#: What a crop may be "ready for" that makes it ripe ("ready for harvest", "ready for
-#: picking"); anything else ("wire hoops ready for the fleece") is not its stage.
-_HARVESTS = frozenset(
-    {
-        "harvest",
-        "harvesting",
-        "picking",
-        "pick",
-        "lifting",
-        "lift",
-        "cutting",
-        "cut",
-        "combining",
-        "combine",
-        "market",
-        "digging",
-        "threshing",
-    }
-)
-#: Words after which a month is when the crop was sown, not the scene's time.
-_SOWN = frozenset({"drilled", "sown", "planted", "seeded", "transplanted"})
 
 
 def _past_and_other_readiness(items: Sequence[Item]) -> None:
@@ -881,13 +801,17 @@ def _past_and_other_readiness(items: Sequence[Item]) -> None:
         following = [i.norm for i in items[index + 1 : index + 4]]
         if item.role == "stage" and item.norm == "ready" and following[:1] == ["for"]:
             what = next((word for word in following[1:] if word != "the"), "")
-            if what not in _HARVESTS:
+            if what not in _reader_words("harvests"):
                 item.role = "filler"
         if item.role != "month" or len(times) < 2:
             continue
         before = [i.norm for i in items[max(0, index - 2) : index]]
         last = before[-1] if before else ""
-        if last == "last" or last in _SOWN or (last == "in" and before[0] in _SOWN):
+        if (
+            last == "last"
+            or last in _reader_words("sown")
+            or (last == "in" and before[0] in _reader_words("sown"))
+        ):
             item.role = "filler"
             item.data["sown"] = True
 
@@ -913,12 +837,11 @@ def _respective_sizes(items: Sequence[Item]) -> None:
 
 def _after_list_plots(clauses: Sequence[Clause], position: int) -> bool:
     """Whether the sentence so far named the plots of a list ("... in adjacent strips")."""
-    for index in range(position, -1, -1):
-        if any(i.data.get("list_plots") for i in clauses[index].items):
-            return True
-        if _ends_a_sentence(clauses[index]):
-            return False
-    return False
+    return any(
+        i.data.get("list_plots")
+        for clause in clauses[_sentence_start(clauses, position) : position + 1]
+        for i in clause.items
+    )
 
 
 def _plots_of_a_list(items: Sequence[Item]) -> None:
@@ -934,10 +857,10 @@ def _plots_of_a_list(items: Sequence[Item]) -> None:
             and len(between) < 3
             and (
                 items[cursor].role in ("number", "size", "unknown")
-                or items[cursor].norm in _PLOT_ADJECTIVES
+                or items[cursor].norm in _reader_words("plot_adjectives")
                 or (
                     items[cursor].role in ("relation", "trailer")
-                    and items[cursor].norm in _PLOT_ADJECTIVES
+                    and items[cursor].norm in _reader_words("plot_adjectives")
                 )
             )
         ):
@@ -981,6 +904,12 @@ def _plots_of_a_list(items: Sequence[Item]) -> None:
         plot.data["list_plots"] = True
         for word in counted:
             word.role = "filler"
+
+
+@functools.cache
+def _reader_words(name: str) -> frozenset[str]:
+    """A list of words one reading pass looks for (``reader_words`` in vocabulary.yaml)."""
+    return frozenset(str(word) for word in vocabulary()["reader_words"][name])
 
 
 def _is_scenery(item: Item) -> bool:
@@ -1069,27 +998,24 @@ def _in_a_sentence_of_measures(clauses: Sequence[Clause], position: int) -> bool
         index -= 1
 
 
-def _parallel_fields(
-    clauses: Sequence[Clause], position: int, before: Sequence[Mention]
-) -> list[Mention]:
+def _measure_keys(items: Sequence[Item]) -> frozenset[str]:
+    """The geometry keys a field's (or a clause's) words state ("row_spacing_m", ...)."""
+    return frozenset(g.key for i in items if i.role == "geometry" for g in i.data["geometry"])
+
+
+def _parallel_fields(clauses: Sequence[Clause], position: int) -> list[Mention]:
     """'10 rows of beef tomatoes north of 10 rows of cherry tomatoes, 1.6 m between
     rows': the fields of the sentence, when each states the same measures, so what
     follows them in that sentence is about all of them ([] otherwise)."""
-    start = _sentence_start(clauses, position)
     end = position + 1
     while end < len(clauses) and not _ends_a_sentence(clauses[end]):
         if clauses[end].mentions:
             return []  # a field named later in the sentence takes what comes before it
         end += 1
-    named = {id(m) for c in clauses[start:position] for m in c.mentions}
-    fields = [m for m in before if id(m) in named]
-    fields = list({id(m): m for m in fields}.values())
+    fields = _sentence_fields(clauses, position)
     if len(fields) < 2 or any((m.count or 1) > 1 or m.refinements for m in fields):
         return []
-    keys = [
-        frozenset(g.key for i in m.items if i.role == "geometry" for g in i.data["geometry"])
-        for m in fields
-    ]
+    keys = [_measure_keys(m.items) for m in fields]
     return fields if keys[0] and all(k == keys[0] for k in keys) else []
 
 
@@ -1098,21 +1024,14 @@ def _share_each_measures(clauses: Sequence[Clause]) -> None:
     a measure said with "each" by the last of a list is every listed field's."""
     for position, clause in enumerate(clauses):
         for mention in clause.mentions[-1:]:
+            # "150 trees each at 7 m x 4 m": the whole measure, said for every one
             measures = [i for i in mention.items if i.role == "geometry"]
             if not any(t.norm in ("each", "both") for i in measures for t in i.tokens):
                 continue
-            each = measures  # "150 trees each at 7 m x 4 m": the whole measure
-            start = _sentence_start(clauses, position)
-            others = {id(m): m for c in clauses[start:position] for m in c.mentions}
-            for other in others.values():
-                if other is mention:
-                    continue
-                said = {
-                    g.key for i in other.items if i.role == "geometry" for g in i.data["geometry"]
-                }
-                other.items.extend(
-                    i for i in each if not {g.key for g in i.data["geometry"]} & said
-                )
+            for other in _sentence_fields(clauses, position):
+                if other is not mention:
+                    said = _measure_keys(other.items)
+                    other.items.extend(i for i in measures if not _measure_keys([i]) & said)
 
 
 def _bracketed_by(clauses: Sequence[Clause], position: int) -> Mention | None:
@@ -1168,11 +1087,7 @@ def _purpose_diseases(items: Sequence[Item], text: str) -> None:
             if following.role not in ("unknown", "filler"):
                 break
     for item, following in itertools.pairwise(items):
-        group = following.data.get("scenery") or next(
-            (sense.value for sense in following.senses_of("scenery")), None
-        )
-        purpose = following.role in ("filler", "non_agricultural") and group in _PURPOSES
-        if not purpose:
+        if not _purpose(following):
             continue
         gap = text[item.end : following.start]
         named = item.role in ("head", "plot")  # "Apple-counting", "Vineyard-robot"
