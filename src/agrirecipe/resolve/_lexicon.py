@@ -136,6 +136,13 @@ class Item:
         """Character offset just past the last token."""
         return self.tokens[-1].end
 
+    @property
+    def scenery(self) -> bool:
+        """A word for scenery ("tracks", "tractors", "sheds"), not for plants or plots."""
+        return self.role in ("filler", "non_agricultural") and bool(
+            self.data.get("scenery") or self.senses_of("scenery")
+        )
+
     def senses_of(self, *kinds: str) -> list[Sense]:
         """The senses of the given kinds, in lexicon order."""
         return [sense for sense in self.senses if sense.kind in kinds]

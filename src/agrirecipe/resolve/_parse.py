@@ -99,7 +99,13 @@ from agrirecipe.resolve._structure import (
     share_trailing_attributes,
     strong_crops,
 )
-from agrirecipe.resolve._zones import complete_orders, find_zones, zone_owners, zone_relations
+from agrirecipe.resolve._zones import (
+    complete_orders,
+    drop_placed_neighbours,
+    find_zones,
+    zone_owners,
+    zone_relations,
+)
 
 __all__ = ["NOTHING_FOUND", "NearestCrops", "PromptReader", "UnknownWords"]
 
@@ -212,7 +218,7 @@ class PromptReader(FieldReading):
         apply_each_side(clauses)
         for clause in clauses:
             # "... and there's a duck pond in the middle": the zone of scenery, not a field
-            if not clause.mentions and any(_is_scenery(i) for i in clause.loose):
+            if not clause.mentions and any(i.scenery for i in clause.loose):
                 clause.loose = [i for i in clause.loose if i.role != "zone"]
         scene_items = self._attach_loose(clauses, mentions)
         _share_each_measures(clauses)
@@ -238,9 +244,8 @@ class PromptReader(FieldReading):
         relations = read_relations(clauses, members, self.trace, self.warnings)
         said = {(r.kind, r.subject, r.objects) for r in relations}
         owned = zone_owners(items, [f.items for f in fields])
-        relations += [
-            r for r in zone_relations(owned) if (r.kind, r.subject, r.objects) not in said
-        ]
+        zoned = [r for r in zone_relations(owned) if (r.kind, r.subject, r.objects) not in said]
+        relations = drop_placed_neighbours(relations, zoned) + zoned
         relations += complete_orders(relations, owned)
         scene_season = self._apply_scene_items(scene_items, fields, hemisphere)
         give_respectively(fields)
@@ -434,7 +439,7 @@ class PromptReader(FieldReading):
                 stage="resolve",
                 hint="name a crop, a variety or a kind of field, e.g. " + _EXAMPLES,
             )
-        scenery = [i.raw for i in items if _is_scenery(i)]
+        scenery = [i.raw for i in items if i.scenery]
         if scenery and all(c.norm in _reader_words("only_a_scene") for c in containers):
             # "a drone survey scene over the yard: two tractors, a sprayer and the shed"
             raise PromptError(
@@ -715,7 +720,7 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
             first.role = plot.role = "filler"
     # "between the two tracks", "three tractors": a number before scenery counts it
     for item, following in itertools.pairwise(items):
-        if item.role == "number" and item.norm not in ("a", "an") and _is_scenery(following):
+        if item.role == "number" and item.norm not in ("a", "an") and following.scenery:
             item.role = "filler"
             item.data["counts_scenery"] = True
         elif item.role == "number" and item.norm in ("a", "an") and following.role == "cue":
@@ -849,7 +854,14 @@ def _plots_of_a_list(items: Sequence[Item]) -> None:
     6 x 50 m strips': plots a list of crops is grown in are the list's own fields, one
     each, not more fields (the plot word and its count are read as said of them)."""
     for index, item in enumerate(items):
-        if item.norm not in ("in", "on") or index == 0:
+        # "onions and cabbages, 2 plots, ...": the count of plots said after a comma
+        summary = (
+            item.role == "separator"
+            and item.norm == ","
+            and index + 1 < len(items)
+            and items[index + 1].role == "number"
+        )
+        if (item.norm not in ("in", "on") and not summary) or index == 0:
             continue
         cursor, between = index + 1, list[Item]()
         while (
@@ -885,6 +897,10 @@ def _plots_of_a_list(items: Sequence[Item]) -> None:
         followed = cursor + 1 < len(items) and items[cursor + 1].role in ("of", "head")
         # "on the terraces", "on steep slate terraces": where the crop named grows
         definite = any(i.norm == "the" or i.role == "unknown" for i in between) and not counted
+        if summary and not (
+            spec.get("plural") and counted and float(counted[0].data.get("value", 0)) == crops
+        ):
+            continue
         if spec.get("plural") and definite and crops >= 1:
             pass  # "Cavendish bananas on the terraces below the house": where they grow
         elif spec.get("plural"):
@@ -910,13 +926,6 @@ def _plots_of_a_list(items: Sequence[Item]) -> None:
 def _reader_words(name: str) -> frozenset[str]:
     """A list of words one reading pass looks for (``reader_words`` in vocabulary.yaml)."""
     return frozenset(str(word) for word in vocabulary()["reader_words"][name])
-
-
-def _is_scenery(item: Item) -> bool:
-    """A word for scenery ("tracks", "tractors", "sheds"), not for plants or plots."""
-    return item.role in ("filler", "non_agricultural") and bool(
-        item.data.get("scenery") or item.senses_of("scenery")
-    )
 
 
 def _day_of_month(item: Item) -> bool:

@@ -65,6 +65,21 @@ def read_relations(
                 )
             )
             continue
+        if (
+            link.role == "trailer"
+            and not clause.mentions
+            and position
+            and not clauses[position - 1].mentions
+            and any(i.scenery for i in clauses[position - 1].items)
+        ):
+            # "..., with the village road running along the east side": the scenery
+            # is placed, not a field
+            trace.append(
+                TraceStep(
+                    stage="decompose", subject=link.raw, detail="relative to scenery: not used"
+                )
+            )
+            continue
         # each field once, where last named ("blood oranges (Moro)" names one twice)
         before = _last_named([m for c in clauses[:position] for m in c.named])
         # a pronoun's clause ("north of it") names no field of its own after the word
@@ -113,6 +128,24 @@ def read_relations(
                 continue
         if link.role == "trailer" and str(link.data.get("value")) in _TOWARDS:
             relations += _directed_row(clauses, position, members, link, trace, warnings)
+            continue
+        if _one_and_the_other(clauses, position) and link.role == "relation":
+            # "bananas, 2 plots, one above the other": the two named last, the first
+            # named on the relation's side
+            kind = link.data["value"]
+            if len(before) >= 2:
+                relations.extend(_pair(kind, before[-2], (before[-1],), members, link, trace))
+            elif (
+                before
+                and len(fields := members.get(id(before[-1]), [])) == 2
+                and kind in get_args(RelationKind)
+            ):
+                # "two wheat plots, one north of the other"
+                relations.append(
+                    RelationIntent(
+                        kind=kind, subject=fields[0], objects=(fields[1],), text=link.raw
+                    )
+                )
             continue
         listed = _listed_middle(clauses, position, link)
         if listed is not None:
@@ -225,6 +258,19 @@ def _then_chain(
             _pair("between", fields[1], (fields[0], fields[2]), members, link_item, trace)
         )
     return relations
+
+
+def _one_and_the_other(clauses: Sequence[Clause], position: int) -> bool:
+    """Whether the relation at ``position`` is said as "one above the other"."""
+    clause = clauses[position]
+    before = clauses[position - 1] if position else None
+    return (
+        before is not None
+        and not before.mentions
+        and [i.norm for i in before.items] == ["one"]
+        and not clause.mentions
+        and [i.norm for i in clause.items] == ["the other"]
+    )
 
 
 def _last_named(mentions: Sequence[Mention]) -> list[Mention]:

@@ -22,7 +22,14 @@ from agrirecipe.recipe import RelationKind
 from agrirecipe.resolve._intent import RelationIntent
 from agrirecipe.resolve._lexicon import DATA_DIR, Item, Token
 
-__all__ = ["ZoneMatch", "complete_orders", "find_zones", "zone_owners", "zone_relations"]
+__all__ = [
+    "ZoneMatch",
+    "complete_orders",
+    "drop_placed_neighbours",
+    "find_zones",
+    "zone_owners",
+    "zone_relations",
+]
 
 #: Where each zone lies on the north-south and east-west axes (0 first, 2 last).
 _PLACES: dict[str, dict[str, int]] = {
@@ -101,6 +108,7 @@ def zone_relations(fields: Sequence[Sequence[Item]]) -> list[RelationIntent]:
             zones[index] = zone
     if len(set(zones.values())) < 2:
         return []
+    _fill_middle(zones)
     used = {axis for z in zones.values() if z != "middle" for axis in _PLACES[z]}
     middle_axis = "ns" if "ns" in used else "ew"
     places = {
@@ -134,6 +142,21 @@ def zone_relations(fields: Sequence[Sequence[Item]]) -> list[RelationIntent]:
                 for middle in rows[1]
             )
     return relations
+
+
+_OPPOSITE_ZONES = (("north", "south"), ("west", "east"))
+
+
+def _fill_middle(zones: dict[int, str]) -> None:
+    """'the orchard at the north end, then wheat, then strawberries at the south end':
+    fields named between two opposite zones, with no zone of their own, are in the
+    middle (only when no field is said to be in the middle)."""
+    if "middle" in zones.values():
+        return
+    for first, last in itertools.pairwise(sorted(zones)):
+        if {zones[first], zones[last]} in ({*pair} for pair in _OPPOSITE_ZONES):
+            for index in range(first + 1, last):
+                zones[index] = "middle"
 
 
 _HEADS = ("head", "weak_variety", "plot")
@@ -236,4 +259,17 @@ def complete_orders(
     return [
         RelationIntent(kind=kinds[axis], subject=high_index, objects=(low_index,))
         for axis, high_index, low_index in dict.fromkeys(added)
+    ]
+
+
+def drop_placed_neighbours(
+    relations: Sequence[RelationIntent], zoned: Sequence[RelationIntent]
+) -> list[RelationIntent]:
+    """Two fields their zones place on one side of each other are not only 'next to'
+    each other ("the orchard at the north end, then wheat": north of, not beside)."""
+    placed = {frozenset((r.subject, *r.objects)) for r in zoned if r.kind != "between"}
+    return [
+        r
+        for r in relations
+        if r.kind != "next_to" or frozenset((r.subject, *r.objects)) not in placed
     ]

@@ -1,0 +1,76 @@
+"""Placement said the way people say it (issue 8): a count of plots after a comma that
+sums up the crops named, "one above the other", fields named between two opposite
+zones, and a direction that places scenery rather than a field."""
+
+from __future__ import annotations
+
+import pytest
+
+from agrirecipe import generate
+from agrirecipe.recipe import SceneRecipe
+
+
+def recipe(prompt: str) -> SceneRecipe:
+    return generate(prompt, resolver="hybrid").recipe
+
+
+def relations(scene: SceneRecipe) -> set[tuple[str, str, tuple[str, ...]]]:
+    return {(r.kind, r.subject, tuple(r.objects)) for r in scene.relations}
+
+
+@pytest.mark.parametrize(
+    ("prompt", "varieties"),
+    [
+        (
+            "dwarf cavendish & lady finger bananas, 2 plots, one above the other",
+            ["Cavendish", "Lady Finger"],
+        ),
+        ("Gala and Fuji apples, two blocks, each 1 ha", ["Gala", "Fuji"]),
+    ],
+)
+def test_a_count_of_plots_after_the_crops_sums_them_up(prompt: str, varieties: list[str]) -> None:
+    scene = recipe(prompt)
+    assert [f.variety for f in scene.fields] == varieties
+
+
+def test_a_count_that_does_not_sum_up_the_crops_still_asks_for_fields() -> None:
+    scene = recipe("wheat and maize, 3 plots")
+    assert len(scene.fields) == 5
+    assert [f.crop for f in scene.fields[:2]] == ["Wheat", "Maize"]
+
+
+@pytest.mark.parametrize(
+    ("prompt", "kind"),
+    [
+        ("lady finger and cavendish bananas, 2 plots, one above the other", "north_of"),
+        ("a maize field and a carrot field, one next to the other", "next_to"),
+        ("Nantes carrots and Red Baron onions, one west of the other", "west_of"),
+    ],
+)
+def test_one_beside_the_other_relates_the_two_named_in_order(prompt: str, kind: str) -> None:
+    scene = recipe(prompt)
+    first, second = (f.id for f in scene.fields)
+    assert relations(scene) == {(kind, first, (second,))}
+
+
+def test_fields_named_between_two_opposite_zones_are_in_the_middle() -> None:
+    scene = recipe(
+        "Aerial shot from the church tower: the orchard at the north end, then wheat, then "
+        "strawberries at the south end, with the village road running along the east side."
+    )
+    orchard, wheat, strawberries = (f.id for f in scene.fields)
+    found = relations(scene)
+    assert ("north_of", orchard, (wheat,)) in found
+    assert ("north_of", wheat, (strawberries,)) in found
+    # the road is placed on the east side, not the strawberries beside the wheat
+    assert not any(kind in ("east_of", "west_of", "next_to") for kind, _, _ in found)
+
+
+def test_a_field_after_the_last_zone_is_not_put_in_the_middle() -> None:
+    scene = recipe("maize at the top, potatoes in the middle, carrots at the bottom, then onions")
+    maize, potatoes, carrots, onions = (f.id for f in scene.fields)
+    found = relations(scene)
+    assert {("north_of", maize, (potatoes,)), ("north_of", potatoes, (carrots,))} <= found
+    assert not any(
+        onions in (subject, *objects) for kind, subject, objects in found if kind == "north_of"
+    )
