@@ -234,13 +234,20 @@ def test_a_plot_that_the_rows_fill_has_no_planted_block() -> None:
     assert field.row_count == 10
 
 
-def test_a_field_sized_like_a_planting_grid_is_refused_with_the_way_to_say_it() -> None:
+def test_a_size_that_fits_the_crops_spacing_is_its_planting_grid() -> None:
     prompt = "Stone fruit along the north edge, citrus along the south; both blocks 4 m x 2 m"
+    for text in (prompt, prompt.replace("4 m x 2 m", "planted at 4 m x 2 m")):
+        scene = recipe(text)
+        assert [(f.agronomy.row_spacing_m, f.agronomy.in_row_spacing_m) for f in scene.fields] == [
+            (4.0, 2.0),
+            (4.0, 2.0),
+        ]
+        assert all(f.geometry.size_m[0] > 4.0 for f in scene.fields)
+
+
+def test_a_field_too_small_for_its_crop_and_no_grid_of_it_is_refused_with_the_way_to_say_it() -> (
+    None
+):
     with pytest.raises(PromptError, match="too small for one") as error:
-        recipe(prompt)
-    assert "planted at 4 m x 2 m" in (error.value.hint or "")
-    scene = recipe(prompt.replace("4 m x 2 m", "planted at 4 m x 2 m"))
-    assert [(f.agronomy.row_spacing_m, f.agronomy.in_row_spacing_m) for f in scene.fields] == [
-        (4.0, 2.0),
-        (4.0, 2.0),
-    ]
+        recipe("a 1 m x 1 m Valencia orange orchard")
+    assert "planted at 1 m x 1 m" in (error.value.hint or "")

@@ -24,6 +24,8 @@ from agrirecipe.resolve._intent import (
     FieldIntent,
     Hemisphere,
     ResolveContext,
+    RowSpec,
+    SizeIntent,
     TraceStep,
 )
 from agrirecipe.resolve._lexicon import Item
@@ -35,6 +37,11 @@ __all__ = [
     "describe_intent",
     "give_respectively",
 ]
+
+#: The largest side a planting grid said like a size can have ("4.5 x 2.5 m").
+_GRID_MAX_M = 12.0
+#: Stated spacings that leave no room for a grid said like a size.
+_SPACED = frozenset({"row_spacing_m", "in_row_spacing_m", "bed_width_m", "plants_per_ha"})
 
 #: Roles of the words that describe a field (not name it).
 ATTRIBUTE_ROLES = (
@@ -177,7 +184,6 @@ class FieldReading:
         health: HealthState | None = health_of(member.items, text)
         stage, season, health = self._cues(member, text, stage, season, health)
         sizes = [item.data["size"] for item in member.items if item.role == "size"]
-        size = single_size(sizes, text)
         rows = row_spec(member.items, text)
         interpretations = member.interpretations or []
         strong = [i for i in interpretations if not i[2]] or []
@@ -202,6 +208,8 @@ class FieldReading:
             options = deciduous or options
         if crop is None and len(options) == 1:
             crop = options[0]
+        sizes, rows = self._planting_grid(sizes, rows, (crop,) if crop else options, text)
+        size = single_size(sizes, text)
         heads = [h for h in member.mention.heads if h.role in ("head", "plot")]
         mention_words = " ".join(h.raw for h in heads) or None
         noun = plot.get("noun") if plot else None
@@ -221,6 +229,49 @@ class FieldReading:
             crop_options=options if crop is None else (),
             distinct_group=member.group,
         )
+
+    def _planting_grid(
+        self,
+        sizes: list[SizeIntent],
+        rows: RowSpec | None,
+        crops: Sequence[str],
+        text: str,
+    ) -> tuple[list[SizeIntent], RowSpec | None]:
+        """'Cripps Pink 3.4 x 1.0 m, 18 rows', 'Savoy cabbage, 60 x 40 cm': two lengths
+        that fit the crop's row and plant spacing, and no field, are its planting grid
+        (rows that far apart, plants that far apart in the row), not the field's size."""
+        if not crops or (rows is not None and _SPACED & rows.stated().keys()):
+            return sizes, rows
+        for size in sizes:
+            width, length = size.width_m, size.length_m
+            if width is None or length is None or max(width, length) > _GRID_MAX_M:
+                continue
+            if all(self._fits_grid(crop, width, length) for crop in crops):
+                said = rows.stated() if rows is not None else {}
+                grid = RowSpec(
+                    **said,
+                    row_spacing_m=width,
+                    in_row_spacing_m=length,
+                    text="; ".join(t for t in (rows.text if rows else "", size.text) if t),
+                )
+                self.trace.append(
+                    TraceStep(
+                        stage="decompose",
+                        subject=size.text,
+                        detail=f"the planting grid of {text!r} (rows {width:g} m apart, "
+                        f"plants {length:g} m apart), not its size",
+                    )
+                )
+                return [s for s in sizes if s is not size], grid
+        return sizes, rows
+
+    def _fits_grid(self, crop: str, row: float, plant: float) -> bool:
+        planting = self.context.knowledge.crop_file(crop).planting
+        rows_low, rows_high = planting.row_spacing_m.range or (planting.row_spacing_m.value,) * 2
+        plants_low, plants_high = (
+            planting.in_row_spacing_m.range or (planting.in_row_spacing_m.value,) * 2
+        )
+        return rows_low / 2 <= row <= rows_high * 2 and plants_low / 2 <= plant <= plants_high * 2
 
     def _cues(
         self,

@@ -1,0 +1,61 @@
+"""Engineering text of blind set g7 (issue 8): planting grids said like sizes ("Cripps
+Pink 3.4 x 1.0 m, 18 rows", "Savoy cabbage, 60 x 40 cm")."""
+
+from __future__ import annotations
+
+import pytest
+
+from agrirecipe import generate
+from agrirecipe.recipe import SceneRecipe
+
+
+def recipe(prompt: str) -> SceneRecipe:
+    return generate(prompt, resolver="hybrid").recipe
+
+
+@pytest.mark.parametrize(
+    ("prompt", "grids"),
+    [
+        (
+            "Savoy cabbage, 60 x 40 cm, 30 rows of 50 m, heads ready for cutting, November.",
+            [(0.6, 0.4)],
+        ),
+        (
+            "Cripps Pink and Bing blocks for a thermal-camera survey: Cripps Pink 3.4 x 1.0 m, "
+            "18 rows; Bing 4.6 x 2.4 m, 10 rows; Bing on the south side.",
+            [(3.4, 1.0), (4.6, 2.4)],
+        ),
+        (
+            "Next to a Granny Smith block (3.5 m x 1 m, 20 rows) put a Cabernet vineyard.",
+            [(3.5, 1.0), None],
+        ),
+    ],
+)
+def test_a_size_that_fits_the_crops_spacing_is_its_planting_grid(
+    prompt: str, grids: list[tuple[float, float] | None]
+) -> None:
+    scene = recipe(prompt)
+    assert len(scene.fields) == len(grids)
+    for field, grid in zip(scene.fields, grids, strict=True):
+        if grid is None:
+            continue
+        assert (field.agronomy.row_spacing_m, field.agronomy.in_row_spacing_m) == grid
+        assert {"row_spacing", "in_row_spacing"} <= set(field.stated)
+        assert "size" not in field.stated
+        assert min(field.geometry.size_m) > grid[0] * 5
+
+
+def test_a_grid_beside_a_shared_size_is_not_a_second_size() -> None:
+    scene = recipe(
+        "two veg plots in a north-south line, each 15 x 30 m: beef tomatoes at the north "
+        "end (1.5 m x 0.5 m), January King cabbage at the south end (0.75 x 0.45 m)."
+    )
+    assert [f.geometry.size_m for f in scene.fields] == [(15.0, 30.0), (15.0, 30.0)]
+    assert [f.agronomy.row_spacing_m for f in scene.fields] == [1.5, 0.75]
+
+
+@pytest.mark.parametrize("prompt", ["a 5 x 10 m lettuce plot", "a 10 x 12 m carrot plot"])
+def test_a_small_plot_that_is_no_spacing_of_its_crop_stays_its_size(prompt: str) -> None:
+    (field,) = recipe(prompt).fields
+    assert "size" in field.stated
+    assert "row_spacing" not in field.stated
