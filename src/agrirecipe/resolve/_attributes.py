@@ -32,8 +32,8 @@ def values_of(
 ) -> list[str]:
     values: list[str] = []
     for item in items:
-        if item.role not in roles:
-            continue
+        if item.role not in roles or item.data.get("negated"):
+            continue  # "no flowers yet", "not in ear yet": not that stage
         if item.role == "month":
             values.append(month_season(int(item.data["value"]), hemisphere))
         else:

@@ -29,6 +29,8 @@ class Cue:
     attribute: str
     value: str
     deciduous_only: bool = False
+    #: Says the attribute only when no other cue of the field does ("knee high").
+    weak: bool = False
 
 
 @dataclass(frozen=True, slots=True)
@@ -46,7 +48,12 @@ def _table() -> tuple[tuple[str, Cue], ...]:
     entries: list[tuple[str, Cue]] = []
     for attribute in _ATTRIBUTES:
         for value, phrases in (data.get(attribute) or {}).items():
-            if isinstance(phrases, dict):
+            if value == "weak":
+                for weak_value, weak_phrases in phrases.items():
+                    entries.extend(
+                        (str(p), Cue(attribute, str(weak_value), weak=True)) for p in weak_phrases
+                    )
+            elif isinstance(phrases, dict):
                 for phrase in phrases.get("deciduous", ()):
                     entries.append((str(phrase), Cue(attribute, str(value), True)))
             else:
@@ -78,9 +85,15 @@ def apply_cues(
     values: dict[str, str] = {}
     warnings: list[str] = []
     used: list[str] = []
-    for item in sorted((i for i in items if "cue" in i.data), key=lambda i: i.start):
+    # "not in ear yet", "no flowers": a negated cue says nothing
+    cued = sorted(
+        (i for i in items if "cue" in i.data and not i.data.get("negated")),
+        key=lambda i: i.start,
+    )
+    strong = {i.data["cue"].attribute for i in cued if not i.data["cue"].weak}
+    for item in cued:
         cue: Cue = item.data["cue"]
-        if cue.deciduous_only and deciduous is False:
+        if (cue.deciduous_only and deciduous is False) or (cue.weak and cue.attribute in strong):
             continue
         said = stated.get(cue.attribute)
         if said is not None:

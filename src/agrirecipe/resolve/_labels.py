@@ -37,6 +37,8 @@ _BEFORE_REFERENCE = (
     r"(?:of|to|from|beside|besides|by|and|than|next to|alongside|between|put|place|with)"
 )
 
+#: What comes before a label that opens a sentence.
+_SENTENCE_START = re.compile(r"(?:^|[.;:!?])\s*$")
 #: The items a crop phrase keeps ("Jonagored apples"): crop, variety and category words.
 _NAMING = ("crop", "variety", "category")
 
@@ -52,15 +54,19 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
         [*_DEFINITION.finditer(text), *_BARE_DEFINITION.finditer(text)],
         key=lambda m: m.start(),
     )
-    if len(definitions) < 2:
-        return text, []
     names: dict[str, str] = {}
     for match in definitions:
         label = match.group("label").upper()
         phrase = _crop_phrase(text[match.end() :], tag)
         if phrase and label not in names:
             names[label] = phrase
-    if len(names) < 2:
+    if len(names) < 2 and not (
+        # "Field 4, the one over the ditch: Russet spuds": one label opening a sentence
+        len(definitions) == 1
+        and names
+        and definitions[0].group("mark") != "="
+        and _SENTENCE_START.search(text[: definitions[0].start()])
+    ):
         return text, []
     notes: list[str] = []
     # Drop the definitions (last first, so offsets stay valid), keeping their mark.

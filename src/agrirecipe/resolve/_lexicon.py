@@ -442,6 +442,7 @@ def _build_lexicon(hierarchy: Hierarchy, knowledge: KnowledgeBase, crop_names: b
     lexicon = Lexicon()
     add = lexicon.add
     weak_words = {normalise(w) for w in vocab["weak_variety_words"]}
+    strong_plurals = {normalise(w) for w in vocab["strong_variety_plurals"]}
 
     # Vocabulary first, hierarchy names after: both senses are kept for a shared phrase.
     for key, kind in _PLAIN_LISTS.items():
@@ -499,9 +500,17 @@ def _build_lexicon(hierarchy: Hierarchy, knowledge: KnowledgeBase, crop_names: b
             for variety in crop.varieties:
                 for phrase in (variety.name, *variety.aliases):
                     weak = normalise(phrase) in weak_words
-                    lexicon.add_with_plurals(
-                        phrase, Sense("variety", variety.name, crop=crop.name, weak=weak)
-                    )
+                    sense = Sense("variety", variety.name, crop=crop.name, weak=weak)
+                    if weak and normalise(phrase) in strong_plurals:
+                        lexicon.add(phrase, sense)
+                        for plural in _plurals(normalise(phrase)):
+                            lexicon.add(
+                                plural,
+                                Sense("variety", variety.name, crop=crop.name),
+                                derived=True,
+                            )
+                    else:
+                        lexicon.add_with_plurals(phrase, sense)
                 # "Nantes carrots": the variety followed by its crop's name.
             _add_colour_varieties(lexicon, crop, vocab)
     lexicon.prepare_fuzzy(

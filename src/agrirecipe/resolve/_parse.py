@@ -184,7 +184,10 @@ class PromptReader(FieldReading):
         _measures_are_not_counts(items)
         _colours_are_not_crops(items, text)
         _past_and_other_readiness(items)
+        _negated_looks(items)
         _plots_of_a_list(items)
+        _plot_words_of_other_things(items)
+        _plot_numbers_are_names(items)
         _totals_are_not_sizes(items)
         _respective_sizes(items)
         self._reject_scenery(items)
@@ -847,6 +850,37 @@ def _after_list_plots(clauses: Sequence[Clause], position: int) -> bool:
         for clause in clauses[_sentence_start(clauses, position) : position + 1]
         for i in clause.items
     )
+
+
+def _negated_looks(items: Sequence[Item]) -> None:
+    """'not in ear yet', 'no flowers yet', 'no spots on the leaves': a stage word or a
+    visual cue right after a negation says what the field is not, so it says nothing."""
+    for negation, item in itertools.pairwise(items):
+        if negation.role == "negation" and (item.role == "stage" or "cue" in item.data):
+            item.data["negated"] = True
+
+
+def _plot_numbers_are_names(items: Sequence[Item]) -> None:
+    """'in plot 2', 'Field 4 is ...': a number right after one plot names it, it does
+    not count fields (a count comes before its noun)."""
+    for index, (item, number) in enumerate(itertools.pairwise(items)):
+        spec = item.data.get("value") if item.role == "plot" else None
+        if not isinstance(spec, dict) or spec.get("plural") or number.role != "number":
+            continue
+        if not number.norm.isdigit():
+            continue
+        after = items[index + 2] if index + 2 < len(items) else None
+        if after is None or after.role not in ("head", "plot", "weak_variety", "size", "geometry"):
+            number.role = "filler"
+            number.data["label"] = True
+
+
+def _plot_words_of_other_things(items: Sequence[Item]) -> None:
+    """'to compare planting systems': a plot word between two words the reader does not
+    know is part of their phrase, not a field."""
+    for before, item, after in zip(items, items[1:], items[2:], strict=False):
+        if item.role == "plot" and before.role == after.role == "unknown":
+            item.role = "filler"
 
 
 def _plots_of_a_list(items: Sequence[Item]) -> None:
