@@ -76,6 +76,7 @@ def test_a_leading_direction_orders_the_list_after_it() -> None:
     assert {(r.kind, r.subject, r.objects) for r in scene.relations} == {
         ("west_of", ids[0], (ids[1],)),
         ("west_of", ids[1], (ids[2],)),
+        ("between", ids[1], (ids[0], ids[2])),
     }
 
 
@@ -649,6 +650,7 @@ def test_a_row_in_the_order_named_towards_the_east(prompt: str) -> None:
     assert relations(recipe(prompt)) == {
         ("west_of", "Lettuce", ("Potato",)),
         ("west_of", "Potato", ("Tomato",)),
+        ("between", "Potato", ("Lettuce", "Tomato")),
     }
 
 

@@ -739,6 +739,7 @@ def test_placements_around_a_field_named_first() -> None:
     assert _relations(recipe) == {
         ("north_of", "Wheat", ("Apple",)),
         ("south_of", "Maize", ("Apple",)),
+        ("between", "Apple", ("Wheat", "Maize")),  # implied: one on each side
     }
 
 

@@ -74,3 +74,40 @@ def test_a_field_after_the_last_zone_is_not_put_in_the_middle() -> None:
     assert not any(
         onions in (subject, *objects) for kind, subject, objects in found if kind == "north_of"
     )
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "Wide shot from the top of the water tower: potatoes closest to the camera, then a band "
+        "of cabbages, then maize furthest back, each block separated by a grassy track.",
+        "Looking down from the pergola: Riesling on the terrace nearest us, Cabernet in the "
+        "middle and Pinot Noir furthest out.",
+        "Panorama from the silo: Walla Walla onions in the west field, Imperator carrots in the "
+        "middle one and Danvers carrots in the east field.",
+    ],
+)
+def test_the_field_named_between_the_near_and_the_far_one_is_between_them(prompt: str) -> None:
+    scene = recipe(prompt)
+    first, middle, last = (f.id for f in scene.fields)
+    assert ("between", middle, (first, last)) in relations(scene)
+    # a photo's depth is no compass side
+    assert not any(
+        kind == "north_of" and middle in (subject, *objects)
+        for kind, subject, objects in relations(scene)
+        if "west field" not in prompt
+    )
+
+
+def test_a_photo_looking_east_keeps_its_compass_order() -> None:
+    scene = recipe(
+        "Looking east from the barn roof: potatoes closest to me, then the wheat, then the "
+        "maize right up against the woods at the far east end."
+    )
+    potatoes, wheat, maize = (f.id for f in scene.fields)
+    assert {("west_of", potatoes, (wheat,)), ("west_of", wheat, (maize,))} <= relations(scene)
+
+
+def test_one_field_is_not_two_sides_of_another() -> None:
+    scene = recipe("Gala in between Gala , Gala")
+    assert not any(kind == "between" for kind, _, _ in relations(scene))

@@ -450,6 +450,8 @@ def _pair(
     )
     if kind == "between":
         if objects[0] is objects[1]:
+            if len(object_fields[0]) < 2:
+                return []  # "Gala in between Gala, Gala": one field is not two sides
             pair = (object_fields[0][0], object_fields[0][1])
         else:
             pair = (object_fields[0][0], object_fields[1][0])

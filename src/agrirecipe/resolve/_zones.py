@@ -41,6 +41,9 @@ _PLACES: dict[str, dict[str, int]] = {
     "northeast": {"ns": 0, "ew": 2},
     "southwest": {"ns": 2, "ew": 0},
     "southeast": {"ns": 2, "ew": 2},
+    # a photo's depth: only "between" is read from it
+    "near": {"depth": 0},
+    "far": {"depth": 2},
 }
 _ZONES = (*_PLACES, "middle")
 
@@ -89,34 +92,52 @@ def find_zones(tokens: Sequence[Token], claimed: Sequence[bool] = ()) -> list[Zo
             last = next((i for i, s in enumerate(starts) if s >= end), len(tokens))
             if first is None or any(taken[first:last]):
                 continue
+            if first and tokens[first - 1].norm == "from" and zone != "order":
+                continue  # "shot from the top of the water tower": where the photo is taken
             if zone != "order":
                 found.append(ZoneMatch(zone, first, last))
             for index in range(first, last):
                 taken[index] = True
+    if any(m.zone in _PLACES and "depth" not in _PLACES[m.zone] for m in found):
+        # "looking east ...: potatoes closest to me": the compass places, not the depth
+        found = [m for m in found if m.zone not in ("near", "far")]
     sides = {m.zone for m in found if m.zone != "middle"}
     if len(sides) < 2 and not (sides and any(m.zone == "middle" for m in found)):
         return []
     return sorted(found, key=lambda m: m.first)
 
 
+def _zone_of(items: Sequence[Item]) -> str | None:
+    """A field's zone: a compass one before a photo's depth ("closest to me at the south
+    end" is south)."""
+    zones = [str(i.data["zone"]) for i in items if i.role == "zone"]
+    return next((z for z in zones if z not in ("near", "far")), zones[0] if zones else None)
+
+
 def zone_relations(fields: Sequence[Sequence[Item]]) -> list[RelationIntent]:
     """Relations between the fields of neighbouring zones (by field index)."""
     zones: dict[int, str] = {}
     for index, items in enumerate(fields):
-        zone = next((str(i.data["zone"]) for i in items if i.role == "zone"), None)
+        zone = _zone_of(items)
         if zone is not None:
             zones[index] = zone
     if len(set(zones.values())) < 2:
         return []
     _fill_middle(zones)
     used = {axis for z in zones.values() if z != "middle" for axis in _PLACES[z]}
-    middle_axis = "ns" if "ns" in used else "ew"
-    places = {
+    middle_axis: str = (
+        next(axis for axis in ("ns", "ew") if axis in used) if used - {"depth"} else "depth"
+    )
+    places: dict[int, dict[str, int]] = {
         index: {middle_axis: 1} if zone == "middle" else _PLACES[zone]
         for index, zone in zones.items()
     }
     relations: list[RelationIntent] = []
-    axes: tuple[tuple[str, RelationKind], ...] = (("ns", "north_of"), ("ew", "west_of"))
+    axes: tuple[tuple[str, RelationKind], ...] = (  # (axis, kind of its order)
+        ("ns", "north_of"),
+        ("ew", "west_of"),
+        ("depth", "between"),  # (only "between": a photo's depth is no compass side)
+    )
     for axis, kind in axes:
         across = "ew" if axis == "ns" else "ns"
         rows: dict[int, list[int]] = {}
@@ -124,7 +145,7 @@ def zone_relations(fields: Sequence[Sequence[Item]]) -> list[RelationIntent]:
             if axis in place:
                 rows.setdefault(place[axis], []).append(index)
         order = sorted(rows)
-        for upper, lower in itertools.pairwise(order):
+        for upper, lower in itertools.pairwise(order if axis != "depth" else ()):
             for subject in rows[upper]:
                 # "NW quarter" lies north of the SW one, the one across on the other axis
                 other = next(
@@ -144,7 +165,7 @@ def zone_relations(fields: Sequence[Sequence[Item]]) -> list[RelationIntent]:
     return relations
 
 
-_OPPOSITE_ZONES = (("north", "south"), ("west", "east"))
+_OPPOSITE_ZONES = (("north", "south"), ("west", "east"), ("near", "far"))
 
 
 def _fill_middle(zones: dict[int, str]) -> None:
@@ -226,7 +247,7 @@ def complete_orders(
         edges["ns" if relation.kind in ("north_of", "south_of") else "ew"].add(pair)
     zones: dict[int, str] = {}
     for index, items in enumerate(fields):
-        zone = next((str(i.data["zone"]) for i in items if i.role == "zone"), None)
+        zone = _zone_of(items)
         if zone is not None:
             zones[index] = zone
     added: list[tuple[str, int, int]] = []
@@ -256,10 +277,23 @@ def complete_orders(
                     if (middle, bottom) in edges[axis] and not related(axis, top, middle):
                         added.append((axis, top, middle))
     kinds: dict[str, RelationKind] = {"ns": "north_of", "ew": "west_of"}
-    return [
+    completed = [
         RelationIntent(kind=kinds[axis], subject=high_index, objects=(low_index,))
         for axis, high_index, low_index in dict.fromkeys(added)
     ]
+    # "onions in the west field, Imperator in the middle one and Danvers in the east
+    # field": a field with one field on each side of it on one axis is between them
+    middles = {r.subject for r in relations if r.kind == "between"}
+    for axis in ("ns", "ew"):
+        for middle in range(len(fields)):
+            before = [a for a, b in edges[axis] if b == middle]
+            after = [b for a, b in edges[axis] if a == middle]
+            if len(before) == 1 and len(after) == 1 and middle not in middles:
+                middles.add(middle)
+                completed.append(
+                    RelationIntent(kind="between", subject=middle, objects=(before[0], after[0]))
+                )
+    return completed
 
 
 def drop_placed_neighbours(
