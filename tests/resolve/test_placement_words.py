@@ -111,3 +111,54 @@ def test_a_photo_looking_east_keeps_its_compass_order() -> None:
 def test_one_field_is_not_two_sides_of_another() -> None:
     scene = recipe("Gala in between Gala , Gala")
     assert not any(kind == "between" for kind, _, _ in relations(scene))
+
+
+def relation_crops(scene: SceneRecipe) -> set[tuple[str, str, tuple[str, ...]]]:
+    name = {f.id: f.variety for f in scene.fields}
+    return {(r.kind, name[r.subject], tuple(name[o] for o in r.objects)) for r in scene.relations}
+
+
+@pytest.mark.parametrize(
+    ("prompt", "expected"),
+    [
+        (
+            "north 2 south: wheat then maize then spuds",
+            {("north_of", "Winter Wheat", ("Dent",)), ("north_of", "Dent", ("Bintje",))},
+        ),
+        (
+            "Nantes carrots hug the north boundary, the Sturon onions take the south end, and "
+            "there's Cos lettuce in between.",
+            {("between", "Romaine", ("Nantes", "Sturon"))},
+        ),
+        (
+            "Padrón peppers on the west side, Cayenne on the east side, and a sweetcorn patch "
+            "south of both.",
+            {("south_of", "Sweet Corn", ("Padron",)), ("south_of", "Sweet Corn", ("Cayenne",))},
+        ),
+        (
+            "tomatos then peppers then lettuce, each one beside the last",
+            {("next_to", "Roma", ("California Wonder",))},
+        ),
+        (
+            "The Jonagold orchard is just north of the farmhouse, and directly south of the "
+            "orchard, across the lane, there's a 3 hectare block of Bintje potatoes.",
+            {("south_of", "Bintje", ("Jonagold",))},
+        ),
+    ],
+)
+def test_farm_placements_said_in_everyday_words(
+    prompt: str, expected: set[tuple[str, str, tuple[str, ...]]]
+) -> None:
+    found = relation_crops(recipe(prompt))
+    # "next to" reads both ways
+    found |= {(k, o[0], (s,)) for k, s, o in found if k == "next_to"}
+    assert expected <= found
+
+
+def test_a_crop_in_the_north_orchard_is_placed_not_doubled() -> None:
+    scene = recipe(
+        "Durondeau pears in the north orchard, and below them to the south a field of "
+        "Centenary strawberries, with beehives along the boundary."
+    )
+    assert [f.variety for f in scene.fields] == ["Durondeau", "Malling Centenary"]
+    assert ("north_of", "Durondeau", ("Malling Centenary",)) in relation_crops(scene)

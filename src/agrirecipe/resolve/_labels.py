@@ -116,11 +116,21 @@ _LEADING = re.compile(
 
 
 def place_leading_directions(text: str) -> str:
-    """``text`` with "the east plot is X" written "X in the eastern block"."""
-    return _LEADING.sub(
+    """``text`` with "the east plot is X" written "X in the eastern block", and "X in the
+    north orchard" written "X in the north block" (where X is, not one more field)."""
+    text = _LEADING.sub(
         lambda m: f"{m.group('rest').rstrip()} in the {_SIDES[m.group('side').lower()]}ern block",
         text,
     )
+    return _IN_SIDE_PLOT.sub(lambda m: f"{m.group('at')} the {m.group('side').lower()} block", text)
+
+
+# "Durondeau pears in the north orchard": where the pears are
+_IN_SIDE_PLOT = re.compile(
+    r"\b(?P<at>(?i:in|on))\s+(?i:the)\s+(?P<side>(?i:north|south|east|west))(?i:ern)?\s+"
+    r"(?i:orchard|vineyard|paddock|grove|plantation|patch|strip)\b"
+    r"(?!\s+(?i:of|is|has|are|with)\b)"
+)
 
 
 # "the top field", "the bottom plot": north and south, as zones read them

@@ -168,6 +168,17 @@ def read_relations(
         if position in directed and kind == "next_to":
             kind = str(clauses[directed[position]].link.data["value"])  # type: ignore[union-attr]
         relations.extend(_pair(kind, subject, objects, members, link, trace))
+        said = " ".join(i.norm for i in clause.items)
+        if (
+            pronoun
+            and said in _THE_TWO
+            and kind != "between"
+            and len(before) >= 3
+            and subject is before[-1]
+            and objects == (before[-2],)
+        ):
+            # "Padron on the west side, Cayenne on the east side, and corn south of both"
+            relations.extend(_pair(kind, subject, (before[-3],), members, link, trace))
     relations += _across_landmarks(landmarks, members, trace)
     related = {frozenset((r.subject, *r.objects)) for r in relations if len(r.objects) == 1}
     relations += _then_chain(clauses, members, related, trace)
@@ -348,7 +359,16 @@ def _fronted(clauses: Sequence[Clause], position: int) -> tuple[Mention, Mention
     if len(clause.mentions) >= 2:
         subject, target = clause.mentions[1], clause.mentions[0]
     else:
-        following = clauses[position + 1] if position + 1 < len(clauses) else None
+        after = position + 1
+        while (
+            after + 1 < len(clauses)
+            and not clauses[after].mentions
+            and clauses[after].link is not None
+            and clauses[after].link.norm == ","  # type: ignore[union-attr]
+            and all(i.role in ("filler", "side", "of") for i in clauses[after].items)
+        ):
+            after += 1  # "south of the orchard, across the lane, there's ...": scenery between
+        following = clauses[after] if after < len(clauses) else None
         if (
             following is None
             or following.link is None
