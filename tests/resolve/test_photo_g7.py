@@ -111,3 +111,39 @@ def test_a_plot_word_inside_an_unknown_phrase_is_not_a_field() -> None:
 def test_damage_in_patches_is_not_more_fields() -> None:
     scene = recipe("wheat with yellow rust in patches, and a maize field")
     assert [(f.crop, f.health) for f in scene.fields] == [("Wheat", "Ill"), ("Maize", "Healthy")]
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "Apple trees in full pink-white blossom. Frost on the grass and the pruning crew's van "
+        "by the gate.",
+        "1 ha of maize and 1 ha of wheat, the two blocks adjacent with only a 6 m grass track "
+        "separating them.",
+    ],
+)
+def test_grass_that_is_ground_or_a_track_is_scenery(prompt: str) -> None:
+    assert all(f.crop != "Grass" for f in recipe(prompt).fields)
+
+
+def test_all_before_a_plain_word_stresses_it_and_shares_nothing() -> None:
+    wheat, maize = recipe(
+        "Shot across our wheat in May, all green and even, drilled at 12.5 cm with the rows "
+        "running east to west. Beside it is a field of flint corn that has only just emerged."
+    ).fields
+    assert wheat.agronomy.row_spacing_m == 0.125
+    assert "row_spacing" not in maize.stated
+    both = recipe("wheat and maize, all in flower").fields
+    assert [f.stage for f in both] == ["Reproductive", "Reproductive"]
+
+
+def test_fruit_a_member_is_bent_with_is_its_own_and_the_list_goes_on() -> None:
+    scene = recipe(
+        "Two blocks next to each other in this shot. Conference pears on one side, branches "
+        "bent with fruit that's clearly ready to pick, and Kordia cherries on the other, whose "
+        "leaves are riddled with holes from some pest."
+    )
+    assert [(f.variety, f.stage, f.health) for f in scene.fields] == [
+        ("Conference", "Maturation", "Healthy"),
+        ("Kordia", scene.fields[1].stage, "Ill"),
+    ]

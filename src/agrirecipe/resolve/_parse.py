@@ -185,6 +185,7 @@ class PromptReader(FieldReading):
         _colours_are_not_crops(items, text)
         _past_and_other_readiness(items)
         _negated_looks(items)
+        _all_as_intensifier(items)
         _plots_of_a_list(items)
         _plot_words_of_other_things(items)
         _plot_numbers_are_names(items)
@@ -850,6 +851,26 @@ def _after_list_plots(clauses: Sequence[Clause], position: int) -> bool:
         for clause in clauses[_sentence_start(clauses, position) : position + 1]
         for i in clause.items
     )
+
+
+#: Words after "all" that carry what is said of all fields ("all in flower", "all are ill").
+_ALL_CARRIERS = frozenset(
+    {"in", "at", "on", "of", "with", "the", "are", "is", "were", "was", "have", "look", "looking"}
+)
+
+
+def _all_as_intensifier(items: Sequence[Item]) -> None:
+    """'our wheat, all green and even, drilled at 12.5 cm': "all" before a plain word
+    stresses it; it does not say the rest of the sentence of every field."""
+    for index, item in enumerate(items[:-1]):
+        following = items[index + 1]
+        if item.role != "all" or item.norm != "all" or following.role not in ("filler", "unknown"):
+            continue
+        if following.norm in _ALL_CARRIERS or not following.norm.isalpha():
+            continue
+        beyond = items[index + 2] if index + 2 < len(items) else None
+        if beyond is None or beyond.role not in ATTRIBUTE_ROLES:
+            item.role = "filler"
 
 
 def _negated_looks(items: Sequence[Item]) -> None:

@@ -324,8 +324,10 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
                 all(_member_detail(i) for i in clause.items)
                 # "Jalapeños hanging dark and shiny", "Spelt furthest away and gone the
                 # colour of straw": words about the member, joined by "and"
+                # "Conference pears on one side, branches bent with fruit, ...": or by a
+                # comma
                 or (
-                    clause.link.role == "conjunction"
+                    (clause.link.role == "conjunction" or clause.link.norm == ",")
                     and all(
                         i.role in ("unknown", "filler", "of", "cue", "stage", "health")
                         for i in clause.items
@@ -953,6 +955,7 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
             _fruit_of_named_crop(mention, clauses[:position])
             or _part_of_named_crop(mention, clauses[:position])
             or _held_by_scenery(clause, mention)
+            or (others_before and _bare_part_after_with(clause, mention))
         )
         if own_fruit:
             listed, described = False, True
@@ -1023,6 +1026,20 @@ def _part_of_named_crop(mention: Mention, before: Sequence[Clause]) -> bool:
     crops = strong_crops(mention)
     named = {c for clause in before for m in clause.mentions for c in strong_crops(m)}
     return bool(crops) and crops <= named
+
+
+def _bare_part_after_with(clause: Clause, mention: Mention) -> bool:
+    """ "branches bent with fruit", "heavy with berries": a bare word for the fruit (no
+    crop, no count) after "with" or "of", once a field is named, is that field's fruit."""
+    if mention.count is not None or strong_crops(mention):
+        return False
+    if not all(h.norm in _plant_part_words() for h in mention.heads):
+        return False
+    if any(i.role == "plot" for i in clause.items):
+        return False  # "a plot full of fruit" asks for a field of fruit
+    head = min(h.start for h in mention.heads)
+    before = [i for i in clause.items if i.end <= head]
+    return bool(before) and before[-1].role == "of"
 
 
 def _held_by_scenery(clause: Clause, mention: Mention) -> bool:
