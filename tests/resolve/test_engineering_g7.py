@@ -59,3 +59,50 @@ def test_a_small_plot_that_is_no_spacing_of_its_crop_stays_its_size(prompt: str)
     (field,) = recipe(prompt).fields
     assert "size" in field.stated
     assert "row_spacing" not in field.stated
+
+
+@pytest.mark.parametrize(
+    ("prompt", "expected"),
+    [
+        (
+            "carrot plot for a weed-detection dataset — 20 ridges at 75 cm centres, 2 rows per "
+            "ridge, one carrot every 2 cm, ridge length 50 m, 5 m headland",
+            {"row_length_m": 50.0, "in_row_spacing_m": 0.02, "headland_m": 5.0},
+        ),
+        (
+            "popping corn for a tassel-detection model — 20 rows of 90 m on 76 cm, 6 plants per "
+            "metre of row",
+            {"row_spacing_m": 0.76, "row_length_m": 90.0},
+        ),
+        (
+            "Ladyfinger bananas, 1,111 plants per hectare (3 x 3 m), 250 plants, young plants.",
+            {"row_spacing_m": 3.0, "in_row_spacing_m": 3.0},
+        ),
+    ],
+)
+def test_row_measures_said_the_engineers_way(prompt: str, expected: dict[str, float]) -> None:
+    (field,) = recipe(prompt).fields
+    stated = {
+        "row_length_m": field.row_length_m,
+        "row_spacing_m": field.agronomy.row_spacing_m,
+        "in_row_spacing_m": field.agronomy.in_row_spacing_m,
+        "headland_m": field.geometry.headland_m,
+    }
+    for key, value in expected.items():
+        assert stated[key] == pytest.approx(value, rel=0.01), key
+
+
+def test_counted_beds_and_single_rows_of_a_crop_are_its_geometry() -> None:
+    lettuce, cabbage = recipe(
+        "For a weeding-robot trial put lettuce and cabbage side by side: 8 lettuce beds, 1.2 m "
+        "wide centre to centre, 3 rows per bed; 10 single cabbage rows 60 cm apart. Everything "
+        "40 m long."
+    ).fields
+    assert (lettuce.crop, lettuce.agronomy.row_spacing_m, lettuce.agronomy.rows_per_bed) == (
+        "Lettuce",
+        1.2,
+        3,
+    )
+    assert (cabbage.crop, cabbage.agronomy.row_spacing_m) == ("Cabbage", 0.6)
+    assert {"beds", "bed_width"} <= set(lettuce.stated)
+    assert "rows" in cabbage.stated

@@ -508,9 +508,9 @@ def strip_geometry(request: str) -> tuple[str, list[tuple[int, GeometryMatch]]]:
 #: only before a measure, since "two strawberry beds" may be two plots).
 _COUNTED_CROP_ROWS = re.compile(
     r"(?<![\w.,])(?P<n>\d+|(?i:two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|"
-    r"fifteen|twenty|thirty|forty|fifty|sixty))\s+"
+    r"fifteen|twenty|thirty|forty|fifty|sixty))\s+(?P<mod>(?i:single|double|twin)\s+)?"
     r"(?P<words>[A-Za-z][\w'’-]*(?:\s+[A-Za-z][\w'’-]*)?)\s+"
-    r"(?P<noun>(?i:rows|ridges|drills|beds(?=\s*(?:,\s*)?(?:at|on|of|x|by|with|spaced|each)\s)))\b"
+    r"(?P<noun>(?i:rows|ridges|drills|beds(?=\s*(?:,\s*)?(?:(?:at|on|of|x|by|with|spaced|each)\s|\d))))\b"
 )
 
 
@@ -530,7 +530,8 @@ def hoist_counted_crops(text: str, tag: Callable[[str], Sequence[Any]]) -> str:
             words = match.group("words")
             if not names_a_crop(words):
                 return match.group(0)
-            return f"{words} in {match.group('n')} {match.group('noun')}" + tail.format(
+            modifier = match.groupdict().get("mod") or ""  # "10 single cabbage rows"
+            return f"{words} in {match.group('n')} {modifier}{match.group('noun')}" + tail.format(
                 **match.groupdict()
             )
 

@@ -722,6 +722,16 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
             and each.norm in ("each", "apiece")
         ):
             first.role = plot.role = "filler"
+    # "one carrot every 2 cm": one plant of the crop, every so far along the row
+    for first, head, spacing in zip(items, items[1:], items[2:], strict=False):
+        if (
+            first.role == "number"
+            and first.norm in ("one", "1", "a", "an")
+            and head.role in ("head", "weak_variety")
+            and spacing.role == "geometry"
+            and any(m.key == "in_row_spacing_m" for m in spacing.data["geometry"])
+        ):
+            first.role = "filler"
     # "between the two tracks", "three tractors": a number before scenery counts it
     for item, following in itertools.pairwise(items):
         if item.role == "number" and item.norm not in ("a", "an") and following.scenery:
