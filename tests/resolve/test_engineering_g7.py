@@ -106,3 +106,37 @@ def test_counted_beds_and_single_rows_of_a_crop_are_its_geometry() -> None:
     assert (cabbage.crop, cabbage.agronomy.row_spacing_m) == ("Cabbage", 0.6)
     assert {"beds", "bed_width"} <= set(lettuce.stated)
     assert "rows" in cabbage.stated
+
+
+def test_measures_in_the_plots_a_list_is_grown_in_are_each_plots() -> None:
+    scene = recipe(
+        "Blight camera variety trial: Fontane, Agria and Bintje in three 9-row strips (75 cm "
+        "rows, 33 cm in-row, 40 m long), Fontane in the middle between the other two. Late "
+        "blight is showing on the Bintje only."
+    )
+    assert [(f.variety, f.row_count, f.health) for f in scene.fields] == [
+        ("Fontane", 9, "Healthy"),
+        ("Agria", 9, "Healthy"),
+        ("Bintje", 9, "Ill"),
+    ]
+
+
+def test_rows_on_each_ridge_stay_with_their_member() -> None:
+    carrots, onions = recipe(
+        "Hoeing-robot plots: 12 ridges of Nantes carrots (75 cm ridges, 2 rows on each) and 12 "
+        "beds of Sturon onions (1.5 m beds, 4 rows per bed). Ridges and beds all 80 m long; "
+        "onions on the west side of the carrots."
+    ).fields
+    assert (carrots.agronomy.row_spacing_m, carrots.agronomy.rows_per_bed) == (0.75, 2)
+    assert (onions.agronomy.row_spacing_m, onions.agronomy.rows_per_bed) == (1.5, 4)
+    assert [f.row_length_m for f in (carrots, onions)] == [pytest.approx(80.0)] * 2
+
+
+def test_a_sentence_opening_with_rows_after_two_fields_is_said_of_both() -> None:
+    scene = recipe(
+        "Two onion plots for a bulb-sizing camera: Red Baron, 25 rows at 30 cm, bulbs every 8 "
+        "cm; Walla Walla, 20 rows at 35 cm, bulbs every 10 cm. Rows 30 m, Walla Walla south of "
+        "Red Baron, both mature."
+    )
+    assert [f.row_length_m for f in scene.fields] == [pytest.approx(30.0)] * 2
+    assert [f.row_count for f in scene.fields] == [25, 20]

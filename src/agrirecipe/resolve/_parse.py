@@ -54,7 +54,7 @@ from agrirecipe.resolve._fields import (
     describe_intent,
     give_respectively,
 )
-from agrirecipe.resolve._geometry import find_geometry, hoist_counted_crops
+from agrirecipe.resolve._geometry import find_geometry, geometry_nouns, hoist_counted_crops
 from agrirecipe.resolve._intent import (
     FieldIntent,
     Hemisphere,
@@ -92,6 +92,7 @@ from agrirecipe.resolve._structure import (
     drop_negated,
     merge_appositive_plots,
     merge_coreferences,
+    per_bed,
     promote_weak_varieties,
     raise_conflicts,
     share_counted_fields,
@@ -188,6 +189,7 @@ class PromptReader(FieldReading):
         _all_as_intensifier(items)
         _plots_of_a_list(items)
         _plot_words_of_other_things(items)
+        _row_words_of_every_field(items)
         _plot_numbers_are_names(items)
         _totals_are_not_sizes(items)
         _respective_sizes(items)
@@ -585,9 +587,12 @@ class PromptReader(FieldReading):
                 geometry = [i for i in geometry if i not in listed]
             if geometry and (
                 _shared_by_all(clauses, position)
+                or _opens_with_rows(clauses, position)
                 or _shared_by_all_after(clauses, position)
                 # "8 rows each at 1.5 m": "each" inside the measure itself
-                or any(t.norm in ("each", "both") for i in geometry for t in i.tokens)
+                or any(
+                    t.norm in ("each", "both") for i in geometry if not per_bed(i) for t in i.tokens
+                )
             ):
                 # "A, B and C, each 20 x 30 m, rows at 90°": still about each of them;
                 # "two lettuce plots (10 rows each, 35 cm row spacing)": each of those
@@ -906,6 +911,28 @@ def _plot_numbers_are_names(items: Sequence[Item]) -> None:
             number.data["label"] = True
 
 
+def _row_words_of_every_field(items: Sequence[Item]) -> None:
+    """'Ridges and beds all 80 m long', 'Beds all 1.5 m': a sentence about the rows or beds
+    of the fields named before, not a field of beds."""
+    nouns = geometry_nouns()
+    start = 0
+    for index, item in enumerate(items):
+        if item.role == "separator" and item.norm in _SENTENCE_MARKS:
+            start = index + 1
+            continue
+        if index != start or not any(i.role in ("head", "plot") for i in items[:start]):
+            continue
+        end = index
+        while end < len(items) and (
+            items[end].norm in nouns or (items[end].role == "conjunction" and end > index)
+        ):
+            end += 1
+        if end > index and end < len(items) and items[end].role == "all":
+            for noun in items[index:end]:
+                if noun.role != "conjunction":
+                    noun.role = "filler"
+
+
 def _plot_words_of_other_things(items: Sequence[Item]) -> None:
     """'to compare planting systems': a plot word between two words the reader does not
     know is part of their phrase, not a field."""
@@ -933,7 +960,7 @@ def _plots_of_a_list(items: Sequence[Item]) -> None:
             cursor < len(items)
             and len(between) < 3
             and (
-                items[cursor].role in ("number", "size", "unknown")
+                items[cursor].role in ("number", "size", "unknown", "geometry")
                 or items[cursor].norm in _reader_words("plot_adjectives")
                 or (
                     items[cursor].role in ("relation", "trailer")
@@ -985,6 +1012,9 @@ def _plots_of_a_list(items: Sequence[Item]) -> None:
         plot.data["list_plots"] = True
         for word in counted:
             word.role = "filler"
+        for word in between:
+            if word.role == "geometry":
+                word.data["of_each_plot"] = True
 
 
 @functools.cache
@@ -996,6 +1026,20 @@ def _reader_words(name: str) -> frozenset[str]:
 def _day_of_month(item: Item) -> bool:
     value = item.data.get("value")
     return isinstance(value, float) and value.is_integer() and 1 <= value <= 31
+
+
+def _opens_with_rows(clauses: Sequence[Clause], position: int) -> bool:
+    """Whether a measure clause opens a sentence with the rows' or beds' word after two or
+    more fields ("...; Walla Walla, 20 rows at 35 cm. Rows 30 m, ..."): every field's rows."""
+    clause = clauses[position]
+    if clause.mentions or not clause.items or clause.items[0].role != "geometry":
+        return False
+    if clause.link is None or clause.link.norm not in _SENTENCE_MARKS:
+        return False
+    first = clause.items[0].tokens[0].norm
+    named = {id(m): m for c in clauses[:position] for m in c.mentions}.values()
+    fields = sum(max(len({id(r) for r in m.refinements}), m.count or 1) for m in named)
+    return first in geometry_nouns() and fields >= 2
 
 
 def _shared_by_all(clauses: Sequence[Clause], position: int) -> bool:
@@ -1100,7 +1144,12 @@ def _share_each_measures(clauses: Sequence[Clause]) -> None:
         for mention in clause.mentions[-1:]:
             # "150 trees each at 7 m x 4 m": the whole measure, said for every one
             measures = [i for i in mention.items if i.role == "geometry"]
-            if not any(t.norm in ("each", "both") for i in measures for t in i.tokens):
+            if not any(
+                t.norm in ("each", "both") for i in measures if not per_bed(i) for t in i.tokens
+            ):
+                # "Fontane, Agria and Bintje in three 9-row strips": each plot's rows
+                measures = [i for i in measures if i.data.get("of_each_plot")]
+            if not measures:
                 continue
             for other in _sentence_fields(clauses, position):
                 if other is not mention:

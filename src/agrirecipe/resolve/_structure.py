@@ -31,6 +31,7 @@ __all__ = [
     "dissolve_plant_parts",
     "drop_negated",
     "merge_coreferences",
+    "per_bed",
     "promote_weak_varieties",
     "raise_conflicts",
     "share_counted_fields",
@@ -353,7 +354,8 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             # own details; the listing goes on after them.
             clause.refined_parent = parent
             # "field corn, flint corn and popping corn, 8 rows each at 76 cm": for them all
-            shared = any(t.norm in _EACH for i in clause.items for t in i.tokens)
+            # ("75 cm ridges, 2 rows on each": each ridge, not each member)
+            shared = any(t.norm in _EACH for i in clause.items if not per_bed(i) for t in i.tokens)
             # "Two strawberry plots of 10 beds each, Elsanta and Albion, beds 1.3 m ...":
             # measures after the last member of a full list describe them all
             ended = (
@@ -534,6 +536,11 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             last = clause.mentions[-1]
             parent = last if (last.count or 1) >= 2 else None
     return top
+
+
+def per_bed(item: Item) -> bool:
+    """A measure whose "each" is each bed's ("2 rows on each")."""
+    return item.role == "geometry" and any(m.key == "rows_per_bed" for m in item.data["geometry"])
 
 
 def _describes_plants(mentions: Sequence[Mention]) -> bool:
