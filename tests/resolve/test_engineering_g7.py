@@ -140,3 +140,28 @@ def test_a_sentence_opening_with_rows_after_two_fields_is_said_of_both() -> None
     )
     assert [f.row_length_m for f in scene.fields] == [pytest.approx(30.0)] * 2
     assert [f.row_count for f in scene.fields] == [25, 20]
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "Mildew detection test: two vineyard blocks of 0.5 ha each, 4,000 vines/ha on 2.5 m "
+        "rows. The north block has downy mildew, the south block is clean.",
+        "two vineyard blocks of 0.5 ha each, 4,000 vines/ha on 2.5 m rows. One to the north "
+        "has downy mildew, the other to the south is clean.",
+    ],
+)
+def test_two_members_told_apart_by_their_side(prompt: str) -> None:
+    scene = recipe(prompt)
+    north, south = scene.fields
+    assert (north.health, south.health) == ("Ill", "Healthy")
+    assert [f.geometry.area_m2() for f in scene.fields] == [pytest.approx(5000.0)] * 2
+    assert [f.agronomy.in_row_spacing_m for f in scene.fields] == [pytest.approx(1.0)] * 2
+    assert ("north_of", north.id, (south.id,)) in {
+        (r.kind, r.subject, r.objects) for r in scene.relations
+    }
+
+
+def test_a_plot_named_by_its_side_and_a_crop_is_still_that_crop() -> None:
+    east, west = recipe("the east plot is Bintje, the west plot Fontane").fields
+    assert (east.variety, west.variety) == ("Bintje", "Fontane")

@@ -562,6 +562,8 @@ _MANY_OF_A_CROP = re.compile(
     r"(?<![\w.,])(?P<n>\d{1,3}(?:,\d{3})+|\d{2,})\s+"
     r"(?P<words>[A-Za-z][\w'’-]*(?:\s+[A-Za-z][\w'’-]*)?)\b"
     r"(?!\s+(?:trees|tree|plants|plant|vines|vine|bushes|bush|stems|heads|rows|beds|ridges))"
+    # ("4,000 vines/ha", "3,000 trees per hectare": a density, read as one)
+    r"(?!\s*(?:/|(?i:per|an?)\s+(?i:ha|hectare|acre|m2|m²|square)))"
 )
 #: "12 beds of Sturon and 12 of Red Baron": the second count is of the same beds.
 _ELLIPTIC_COUNT = re.compile(

@@ -19,6 +19,7 @@ from collections.abc import Callable, Sequence
 from agrirecipe.resolve._lexicon import Item, tokenize
 
 __all__ = [
+    "place_compass_members",
     "place_leading_directions",
     "place_neighbouring_plots",
     "place_trailing_directions",
@@ -131,6 +132,40 @@ _IN_SIDE_PLOT = re.compile(
     r"(?i:orchard|vineyard|paddock|grove|plantation|patch|strip)\b"
     r"(?!\s+(?i:of|is|has|are|with)\b)"
 )
+
+
+# "The north block has downy mildew, the south block is clean": two members told apart
+# by their side, described, not named
+_COMPASS_MEMBER = re.compile(
+    r"\b(?P<the>(?i:the))\s+(?P<side>(?i:north|south|east|west))(?i:ern)?\s+"
+    r"(?i:block|plot|field|one|strip|vineyard|orchard|half|bed|paddock|grove|patch)\b"
+    r"(?=\s+(?i:has|is|shows|looks|was|carries|got|has got|with)\b(?P<rest>[^,;.]*))"
+)
+_OPPOSITE_SIDES = {"north": "south", "south": "north", "east": "west", "west": "east"}
+
+
+def place_compass_members(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
+    """``text`` with "the north block has X, the south block is Y" written "one to the
+    north has X, the other to the south is Y" when X and Y name no crop (two members of a
+    counted plot, told apart by side; "the east plot is Bintje" is left to name a field)."""
+    matches = list(_COMPASS_MEMBER.finditer(text))
+    if len(matches) != 2:
+        return text
+    first, second = matches
+    sides = first.group("side").lower(), second.group("side").lower()
+    if _OPPOSITE_SIDES[sides[0]] != sides[1]:
+        return text
+    if any(item.has(*_NAMING) for m in matches for item in tag(m.group("rest"))):
+        return text
+    one = "One" if first.group("the")[0].isupper() else "one"
+    other = "The other" if second.group("the")[0].isupper() else "the other"
+    return (
+        text[: first.start()]
+        + f"{one} to the {sides[0]}"
+        + text[first.end() : second.start()]
+        + f"{other} to the {sides[1]}"
+        + text[second.end() :]
+    )
 
 
 # "the top field", "the bottom plot": north and south, as zones read them

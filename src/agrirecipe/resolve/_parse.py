@@ -64,6 +64,7 @@ from agrirecipe.resolve._intent import (
     TraceStep,
 )
 from agrirecipe.resolve._labels import (
+    place_compass_members,
     place_leading_directions,
     place_neighbouring_plots,
     place_trailing_directions,
@@ -159,6 +160,7 @@ class PromptReader(FieldReading):
             )
         text = spread_value_lists(expand_casual(prompt))
         text, labels = resolve_labels(text, lambda phrase: self.lexicon.tag(tokenize(phrase)))
+        text = place_compass_members(text, lambda phrase: self.lexicon.tag(tokenize(phrase)))
         text = place_trailing_directions(place_leading_directions(text))
         text = place_neighbouring_plots(text)
         text = hoist_counted_crops(text, lambda phrase: self.lexicon.tag(tokenize(phrase)))

@@ -376,13 +376,14 @@ def _validate(intent: SceneIntent, context: ResolveContext) -> None:
     hierarchy = context.hierarchy
     # "the": references to labelled fields are spelled "the <crop>" ("north of A");
     # "in": "12 maize rows" is read as "maize in 12 rows"; "plants": "150 Pink Lady" as
-    # "150 Pink Lady plants"
+    # "150 Pink Lady plants"; "one", "other": "the north block has ..., the south block
+    # ..." is read as "one ..., the other ..."
     expanded = expand_casual(intent.prompt)
     prompt_words = (
         _words(intent.prompt)
         | _words(expanded)
         | _words(spread_value_lists(expanded))
-        | {"the", "in", "plants"}
+        | {"the", "in", "plants", "one", "other"}
     )
     for index, field in enumerate(intent.fields):
         path = f"fields[{index}]"

@@ -159,7 +159,7 @@ def read_relations(
         else:
             # "pears on the north block, bananas ...": a trailer right after a field
             # places that field ("..., and to the north, pears" places the one after).
-            attached = position > 0 and bool(clauses[position - 1].mentions)
+            attached = position > 0 and bool(clauses[position - 1].named)
             pairs = _relation_mentions(link, before, after, pronoun=pronoun, attached=attached)
         if pairs is None:
             warnings.append(f"ignored {link.raw!r}: it needs a field on each side")

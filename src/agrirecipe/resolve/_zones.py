@@ -288,7 +288,12 @@ def complete_orders(
         for middle in range(len(fields)):
             before = [a for a, b in edges[axis] if b == middle]
             after = [b for a, b in edges[axis] if a == middle]
-            if len(before) == 1 and len(after) == 1 and middle not in middles:
+            if (
+                len(before) == 1
+                and len(after) == 1
+                and len({middle, before[0], after[0]}) == 3
+                and middle not in middles
+            ):
                 middles.add(middle)
                 completed.append(
                     RelationIntent(kind="between", subject=middle, objects=(before[0], after[0]))
