@@ -155,7 +155,7 @@ def test_two_members_told_apart_by_their_side(prompt: str) -> None:
     scene = recipe(prompt)
     north, south = scene.fields
     assert (north.health, south.health) == ("Ill", "Healthy")
-    assert [f.geometry.area_m2() for f in scene.fields] == [pytest.approx(5000.0)] * 2
+    assert [f.geometry.area_m2 for f in scene.fields] == [pytest.approx(5000.0)] * 2
     assert [f.agronomy.in_row_spacing_m for f in scene.fields] == [pytest.approx(1.0)] * 2
     assert ("north_of", north.id, (south.id,)) in {
         (r.kind, r.subject, r.objects) for r in scene.relations
