@@ -165,3 +165,27 @@ def test_two_members_told_apart_by_their_side(prompt: str) -> None:
 def test_a_plot_named_by_its_side_and_a_crop_is_still_that_crop() -> None:
     east, west = recipe("the east plot is Bintje, the west plot Fontane").fields
     assert (east.variety, west.variety) == ("Bintje", "Fontane")
+
+
+def test_a_field_named_again_as_the_object_of_a_relation_is_that_field() -> None:
+    scene = recipe(
+        "For the headland-turning test: maize with 12 m headlands and 0.75 m rows, and potatoes "
+        "with 9 m headlands and 0.9 m rows; maize north of potatoes, each 2 ha."
+    )
+    maize, potatoes = scene.fields
+    assert (maize.geometry.headland_m, potatoes.geometry.headland_m) == (12.0, 9.0)
+    assert [f.geometry.area_m2 for f in scene.fields] == [pytest.approx(20000.0)] * 2
+    assert [(r.kind, r.subject, r.objects) for r in scene.relations] == [
+        ("north_of", maize.id, (potatoes.id,))
+    ]
+
+
+def test_plots_in_a_row_from_west_to_east_are_an_order_not_a_row_direction() -> None:
+    scene = recipe(
+        "GNSS guidance test: four 20 m x 20 m plots in a row from west to east – potatos, "
+        "cabbage, onions, carrots."
+    )
+    ids = [f.id for f in scene.fields]
+    found = {(r.kind, r.subject, r.objects) for r in scene.relations}
+    assert {("west_of", a, (b,)) for a, b in zip(ids, ids[1:], strict=False)} <= found
+    assert all("row_direction" not in f.stated for f in scene.fields)

@@ -1197,6 +1197,21 @@ def merge_coreferences(
         ]
         if repeated and _related_to(clauses, clause, repeated[0]):
             repeated = []  # "Valencia oranges next to Valencia oranges": two fields
+        if (
+            not repeated
+            and clause.index - 1 in merged
+            and clause.link is not None
+            and clause.link.role in ("relation", "between")
+            and mention.count is None
+            and (own_crops := strong_crops(mention))
+        ):
+            # "...; maize north of potatoes": a field named again, placed against another
+            # named again
+            repeated = [
+                k
+                for k in reversed(kept)
+                if strong_crops(k) == own_crops and k.count is None and not k.refinements
+            ][:1]
         anaphoric = (
             (mention.count is None or summary)
             # "jonagored apples AND fuji apples, 2 separate blocks": still those two
