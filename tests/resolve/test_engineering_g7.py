@@ -3,6 +3,8 @@ Pink 3.4 x 1.0 m, 18 rows", "Savoy cabbage, 60 x 40 cm")."""
 
 from __future__ import annotations
 
+import itertools
+
 import pytest
 
 from agrirecipe import generate
@@ -187,5 +189,5 @@ def test_plots_in_a_row_from_west_to_east_are_an_order_not_a_row_direction() -> 
     )
     ids = [f.id for f in scene.fields]
     found = {(r.kind, r.subject, r.objects) for r in scene.relations}
-    assert {("west_of", a, (b,)) for a, b in zip(ids, ids[1:], strict=False)} <= found
+    assert {("west_of", a, (b,)) for a, b in itertools.pairwise(ids)} <= found
     assert all("row_direction" not in f.stated for f in scene.fields)
