@@ -191,3 +191,18 @@ def test_plots_in_a_row_from_west_to_east_are_an_order_not_a_row_direction() -> 
     found = {(r.kind, r.subject, r.objects) for r in scene.relations}
     assert {("west_of", a, (b,)) for a, b in itertools.pairwise(ids)} <= found
     assert all("row_direction" not in f.stated for f in scene.fields)
+
+
+def test_rows_of_the_same_length_copy_the_row_length_before() -> None:
+    gala, pears = recipe(
+        "Gala, 3.5 m x 1.0 m, 20 rows of 100 m. Conference pears, 3.75 m between rows and "
+        "1.25 m between trees, 16 rows of the same length."
+    ).fields
+    assert gala.row_length_m == pytest.approx(100.0)
+    assert pears.row_length_m == pytest.approx(100.0)
+    assert "row_length" in pears.stated
+
+
+def test_a_measure_said_in_both_blocks_in_its_own_clause_is_both_blocks() -> None:
+    scene = recipe("Gala and Conference pears. Rows run east-west in both blocks.")
+    assert [f.geometry.rotation_deg for f in scene.fields] == [-90.0, -90.0]

@@ -589,6 +589,8 @@ class PromptReader(FieldReading):
                 geometry = [i for i in geometry if i not in listed]
             if geometry and (
                 _shared_by_all(clauses, position)
+                # "Rows run east-west in both blocks": said of both in its own clause
+                or any(i.role == "all" and i.norm in ("both", "each") for i in clause.items)
                 or _opens_with_rows(clauses, position)
                 or _shared_by_all_after(clauses, position)
                 # "8 rows each at 1.5 m": "each" inside the measure itself
@@ -1228,11 +1230,12 @@ _SPACINGS = ("row_spacing_m", "in_row_spacing_m", "bed_width_m", "rows_per_bed",
 def _same_spacing(intent: FieldIntent, before: FieldIntent, words: Sequence[Item]) -> FieldIntent:
     """'Kordia, 10 rows at 4.6 m ...; Regina, same spacing, 8 rows': the spacings of the
     field before, except those this field states itself; 'rows in the same direction':
-    its rows' bearing."""
+    its rows' bearing; '16 rows of the same length': its rows' length."""
     if before.rows is None:
         return intent
     direction = any(w in i.norm for i in words for w in ("direction", "orientation"))
-    keys = ("row_bearing_deg",) if direction else _SPACINGS
+    length = any(w in i.norm for i in words for w in ("length", "long"))
+    keys = ("row_bearing_deg",) if direction else ("row_length_m",) if length else _SPACINGS
     copied = {k: getattr(before.rows, k) for k in keys if getattr(before.rows, k) is not None}
     if not copied:
         return intent
