@@ -21,12 +21,15 @@ step  pass                                        module (data)
       scenery and purpose words                   cues.yaml, scenery.yaml, ...)
 6     typos and unseen names                      the strategy's reader
 7     each phrase's role; latitudes; sizes        ``_scan``
+7b    what single words are in their place        ``_words`` (vocabulary.yaml
+      (counts that are not, labels, negations)    ``reader_words``)
 8     scenery-only prompts, unknown crops         ``PromptReader._reject_*``
 9     clauses and mentions                        ``_decompose``
 10    counts, corrections, descriptions,          ``_structure``
       shared attributes, refinements,
       back-references
-11    head-less clauses' words to their fields    ``PromptReader._attach_loose``
+11    head-less clauses' words to their fields    ``PromptReader._attach_loose``,
+      (which fields a measure is said of)         ``_measures``
 12    fields of each mention, their attributes    ``_fields``
       (stated, else visual cues), sizes, rows
 13    relations between fields; zone order        ``_relations``, ``_zones``
@@ -35,8 +38,6 @@ step  pass                                        module (data)
 
 from __future__ import annotations
 
-import functools
-import itertools
 from collections.abc import Callable, Sequence
 
 from agrirecipe._errors import PromptError, UnknownCropError
@@ -54,12 +55,10 @@ from agrirecipe.resolve._fields import (
     describe_intent,
     give_respectively,
 )
-from agrirecipe.resolve._geometry import find_geometry, geometry_nouns, hoist_counted_crops
+from agrirecipe.resolve._geometry import find_geometry, hoist_counted_crops
 from agrirecipe.resolve._intent import (
-    FieldIntent,
     Hemisphere,
     ResolveContext,
-    RowSpec,
     SceneIntent,
     TraceStep,
 )
@@ -76,12 +75,24 @@ from agrirecipe.resolve._lexicon import (
     OtherCrop,
     Sense,
     Token,
-    number_value,
     tokenize,
     vocabulary,
 )
 from agrirecipe.resolve._lists import spread_value_lists
-from agrirecipe.resolve._relations import PRONOUNS, coordinated, listing, read_relations
+from agrirecipe.resolve._measures import (
+    after_list_plots,
+    bracketed_by,
+    in_a_sentence_of_measures,
+    opens_with_rows,
+    parallel_fields,
+    parallel_spacing,
+    same_spacing,
+    sentence_fields,
+    share_each_measures,
+    shared_by_all,
+    shared_by_all_after,
+)
+from agrirecipe.resolve._relations import PRONOUNS, coordinated, read_relations
 from agrirecipe.resolve._scan import assign_roles, read_heights, read_latitude, read_sizes
 from agrirecipe.resolve._structure import (
     apply_corrections,
@@ -101,6 +112,7 @@ from agrirecipe.resolve._structure import (
     share_trailing_attributes,
     strong_crops,
 )
+from agrirecipe.resolve._words import purpose_diseases, read_words, reader_words
 from agrirecipe.resolve._zones import (
     complete_orders,
     drop_placed_neighbours,
@@ -181,20 +193,10 @@ class PromptReader(FieldReading):
         items, steps = self.unknown_words(items, self.lexicon)
         self.trace.extend(steps)
         assign_roles(items)
-        _purpose_diseases(items, text)
+        purpose_diseases(items, text)
         prompt_latitude, latitude_text, items = read_latitude(text, items)
         items = read_sizes(read_heights(items))
-        _measures_are_not_counts(items)
-        _colours_are_not_crops(items, text)
-        _past_and_other_readiness(items)
-        _negated_looks(items)
-        _all_as_intensifier(items)
-        _plots_of_a_list(items)
-        _plot_words_of_other_things(items)
-        _row_words_of_every_field(items)
-        _plot_numbers_are_names(items)
-        _totals_are_not_sizes(items)
-        _respective_sizes(items)
+        read_words(items, text)
         self._reject_scenery(items)
         self._reject_other_crops(items)
         builder = MentionBuilder(self.crop_categories)
@@ -229,7 +231,7 @@ class PromptReader(FieldReading):
             if not clause.mentions and any(i.scenery for i in clause.loose):
                 clause.loose = [i for i in clause.loose if i.role != "zone"]
         scene_items = self._attach_loose(clauses, mentions)
-        _share_each_measures(clauses)
+        share_each_measures(clauses)
         for mention in mentions:
             for sub in (mention, *mention.refinements):
                 resolve_weak_varieties(sub)
@@ -265,8 +267,8 @@ class PromptReader(FieldReading):
                 intents[index] = intents[index].model_copy(update={"size": intents[index - 1].size})
             same = [i for i in fields[index].items if i.role == "same_spacing"]
             if same:
-                intents[index] = _same_spacing(intents[index], intents[index - 1], same)
-            intents[index] = _parallel_spacing(
+                intents[index] = same_spacing(intents[index], intents[index - 1], same)
+            intents[index] = parallel_spacing(
                 intents[index], intents[index - 1], fields[index].items
             )
         for index, intent in enumerate(intents):
@@ -448,7 +450,7 @@ class PromptReader(FieldReading):
                 hint="name a crop, a variety or a kind of field, e.g. " + _EXAMPLES,
             )
         scenery = [i.raw for i in items if i.scenery]
-        if scenery and all(c.norm in _reader_words("only_a_scene") for c in containers):
+        if scenery and all(c.norm in reader_words("only_a_scene") for c in containers):
             # "a drone survey scene over the yard: two tractors, a sprayer and the shed"
             raise PromptError(
                 f"{NOTHING_FOUND}: only scenery ({', '.join(repr(w) for w in scenery[:5])})",
@@ -500,13 +502,13 @@ class PromptReader(FieldReading):
                         sub.items.extend(i for i in others if i.role not in roles)
                 continue
             alls = [i for i in attributes if i.role == "all"]
-            if says_all and after and all(i.norm in _reader_words("here_everywhere") for i in alls):
+            if says_all and after and all(i.norm in reader_words("here_everywhere") for i in alls):
                 # "Field A - Russet potatoes, blight everywhere. Field B - ...": everywhere
                 # in the field just named, when more fields follow
                 attributes = [i for i in attributes if i.role != "all"]
                 says_all = False
             if says_all:
-                owner = _bracketed_by(clauses, position)  # "two lettuce plots (10 rows each"
+                owner = bracketed_by(clauses, position)  # "two lettuce plots (10 rows each"
                 (owner.items if owner is not None else scene).extend(attributes)
                 continue
             several = len(mentions) > 1 or any((m.count or 1) > 1 for m in mentions)
@@ -532,7 +534,7 @@ class PromptReader(FieldReading):
                     # row measures is about every field's rows
                     # ("... Granny Smith. Tall spindle, 3.5 m between rows, trees 1 m
                     # apart, rows 120 m long.": each clause of a sentence of measures)
-                    or _in_a_sentence_of_measures(clauses, position)
+                    or in_a_sentence_of_measures(clauses, position)
                 )
             ):
                 # "A next to B, young plants": closing words about "the plants" describe all.
@@ -573,7 +575,7 @@ class PromptReader(FieldReading):
                 targets = [clauses[position - 1].mentions[-1]]
             elif any(i.data.get("list_plots") for i in clause.items):
                 # "carrots (...) and potatoes (...) in 25 x 60 m plots": the list's plots
-                targets = _sentence_fields(clauses, position)
+                targets = sentence_fields(clauses, position)
             else:
                 targets = coordinated(clauses, position)
                 targets = _past_a_reference(clauses, position, targets)
@@ -588,11 +590,11 @@ class PromptReader(FieldReading):
                 before[-1].items.extend(listed)
                 geometry = [i for i in geometry if i not in listed]
             if geometry and (
-                _shared_by_all(clauses, position)
+                shared_by_all(clauses, position)
                 # "Rows run east-west in both blocks": said of both in its own clause
                 or any(i.role == "all" and i.norm in ("both", "each") for i in clause.items)
-                or _opens_with_rows(clauses, position)
-                or _shared_by_all_after(clauses, position)
+                or opens_with_rows(clauses, position)
+                or shared_by_all_after(clauses, position)
                 # "8 rows each at 1.5 m": "each" inside the measure itself
                 or any(
                     t.norm in ("each", "both") for i in geometry if not per_bed(i) for t in i.tokens
@@ -600,7 +602,7 @@ class PromptReader(FieldReading):
             ):
                 # "A, B and C, each 20 x 30 m, rows at 90°": still about each of them;
                 # "two lettuce plots (10 rows each, 35 cm row spacing)": each of those
-                owner = _bracketed_by(clauses, position)
+                owner = bracketed_by(clauses, position)
                 (owner.items if owner is not None else scene).extend(geometry)
                 if not any(i.role == "all" for i in scene):
                     scene.extend(i for i in clause.items if i.role == "all")
@@ -633,14 +635,14 @@ class PromptReader(FieldReading):
                     for h in t.heads
                 )
             )
-            parallel = _parallel_fields(clauses, position) if geometry else []
+            parallel = parallel_fields(clauses, position) if geometry else []
             if parallel:
                 for target in parallel:
                     target.items.extend(geometry)
                 geometry = []
             # "Durondeau and Bartlett pears in neighbouring blocks, 3.5 m x 1 m": measures
             # said after the plots a list is grown in are each plot's
-            in_plots = len(targets) > 1 and _after_list_plots(clauses, position)
+            in_plots = len(targets) > 1 and after_list_plots(clauses, position)
             for target in targets if shared_by_list or shared_noun or in_plots else targets[-1:]:
                 target.items.extend(geometry)
         return scene
@@ -685,10 +687,6 @@ class PromptReader(FieldReading):
 _ALL_PLANTS = frozenset({"plants", "trees", "vines", "crops", "bushes"})
 
 
-#: Scenery groups whose words name what a request is for ("a blight detection dataset").
-_PURPOSES = frozenset({"robots", "purposes"})
-
-
 def _continues_a_description(clauses: Sequence[Clause], position: int) -> bool:
     """'..., the bananas still small and just planted': words joined by "and" to a
     sentence about a field named before ("the bananas ...") go on describing it."""
@@ -705,97 +703,6 @@ def _continues_a_description(clauses: Sequence[Clause], position: int) -> bool:
     )
 
 
-def _measures_are_not_counts(items: Sequence[Item]) -> None:
-    """ "3.5 m in the pears": a number with a length unit is a measure, never a count of
-    fields (what no size or geometry pattern read stays a filler)."""
-    for item, following in itertools.pairwise(items):
-        if item.role == "number" and following.role == "length_unit":
-            item.role = "filler"
-            item.data["measure"] = True
-    for index in range(1, len(items)):
-        before, item = items[index - 1], items[index]
-        after = items[index + 1] if index + 1 < len(items) else None
-        if (
-            item.role == "number"
-            and item.raw.isdigit()
-            and before.role == "unknown"
-            and before.raw[:1].isupper()
-            and (after is None or after.role not in ("plot", "head", "weak_variety", "category"))
-        ):
-            item.role = "filler"  # "on Gisela 6": a rootstock's or machine's name
-    # "Three pepper varieties, one strip each: ...": how each member is planted
-    for first, plot, each in zip(items, items[1:], items[2:], strict=False):
-        if (
-            first.norm in ("one", "1", "a")
-            and plot.role == "plot"
-            and each.norm in ("each", "apiece")
-        ):
-            first.role = plot.role = "filler"
-    # "one carrot every 2 cm": one plant of the crop, every so far along the row
-    for first, head, spacing in zip(items, items[1:], items[2:], strict=False):
-        if (
-            first.role == "number"
-            and first.norm in ("one", "1", "a", "an")
-            and head.role in ("head", "weak_variety")
-            and spacing.role == "geometry"
-            and any(m.key == "in_row_spacing_m" for m in spacing.data["geometry"])
-        ):
-            first.role = "filler"
-    # "between the two tracks", "three tractors": a number before scenery counts it
-    for item, following in itertools.pairwise(items):
-        if item.role == "number" and item.norm not in ("a", "an") and following.scenery:
-            item.role = "filler"
-            item.data["counts_scenery"] = True
-        elif item.role == "number" and item.norm in ("a", "an") and following.role == "cue":
-            item.role = "filler"  # "a combine already working in the spelt": not a field
-    # "on 20 April", "April 3rd": a day of the month is a date, not a count of fields
-    words = [i for i in items if i.role != "separator" or i.norm not in (",",)]
-    for index, item in enumerate(words):
-        if item.role != "number" or not _day_of_month(item):
-            continue
-        said_before = words[index - 1] if index else None
-        said_after = words[index + 1] if index + 1 < len(words) else None
-        if (said_after is not None and said_after.role == "month") or (
-            said_before is not None
-            and said_before.role == "month"
-            and (
-                said_after is None
-                or said_after.role not in ("plot", "head", "weak_variety", "category")
-            )
-        ):
-            item.role = "filler"
-            item.data["date"] = True
-
-
-def _purpose(item: Item) -> bool:
-    """A word naming what a request is for ("dataset", "test", "survey")."""
-    group = item.data.get("scenery") or next(
-        (sense.value for sense in item.senses_of("scenery")), None
-    )
-    return item.role in ("filler", "non_agricultural") and group in _PURPOSES
-
-
-_SENTENCE_MARKS = frozenset({".", "!", "?", ";"})
-
-
-def _totals_are_not_sizes(items: Sequence[Item]) -> None:
-    """'we farm about 40 ha in total - 25 ha of wheat, ...': a total is not a field's size."""
-    norms = [i.norm for i in items]
-    for index, item in enumerate(items):
-        if item.role != "size":
-            continue
-        after = tuple(norms[index + 1 : index + 3])
-        if any(after[: len(words)] == tuple(words.split()) for words in _reader_words("totals")):
-            item.role = "filler"
-            item.data["total"] = True
-
-
-def _sentence_fields(clauses: Sequence[Clause], position: int) -> list[Mention]:
-    """The fields named in the sentence before clause ``position``, each once."""
-    start = _sentence_start(clauses, position)
-    return list({id(m): m for c in clauses[start:position] for m in c.mentions}.values())
-
-
 def _described_crop(clause: Clause, before: Sequence[Mention]) -> list[Mention]:
     """'The Riesling vineyard ... of the Fuji orchard. Half the vines show mildew': words
     about the plants of one crop go to the last field of that crop ([] if none)."""
@@ -808,446 +715,6 @@ def _described_crop(clause: Clause, before: Sequence[Mention]) -> list[Mention]:
     return fields[-1:]
 
 
-def _colours_are_not_crops(items: Sequence[Item], text: str) -> None:
-    """'striped yellow-orange with rust', 'olive-green velvety patches': a crop word joined
-    by a hyphen to a colour is a colour, not a field (nor an unknown crop)."""
-    for first, second in itertools.pairwise(items):
-        if text[first.end : second.start] != "-":
-            continue
-        for crop, colour in ((first, second), (second, first)):
-            if crop.role in ("head", "other_crop") and colour.norm in _reader_words("colours"):
-                crop.role = "filler"
-                crop.data["colour"] = True
-
-
-def _past_and_other_readiness(items: Sequence[Item]) -> None:
-    """'wire hoops ready for the fleece': not the crop's stage. 'drilled last October;
-    it's May now': a month said as when the crop was sown is not the scene's time (when
-    another time is said)."""
-    times = [i for i in items if i.role in ("month", "season")]
-    for index, item in enumerate(items):
-        following = [i.norm for i in items[index + 1 : index + 4]]
-        if item.role == "stage" and item.norm == "ready" and following[:1] == ["for"]:
-            what = next((word for word in following[1:] if word != "the"), "")
-            if what not in _reader_words("harvests"):
-                item.role = "filler"
-        if item.role != "month" or len(times) < 2:
-            continue
-        before = [i.norm for i in items[max(0, index - 2) : index]]
-        last = before[-1] if before else ""
-        if (
-            last == "last"
-            or last in _reader_words("sown")
-            or (last == "in" and before[0] in _reader_words("sown"))
-        ):
-            item.role = "filler"
-            item.data["sown"] = True
-
-
-def _respective_sizes(items: Sequence[Item]) -> None:
-    """'30x40m and 30x60m respectively': sizes listed before "respectively" are one for
-    each field named before them, in order (``give_respectively`` gives them out)."""
-    for index, item in enumerate(items):
-        if item.norm != "respectively":
-            continue
-        sizes: list[Item] = []
-        for before in reversed(items[:index]):
-            if before.role == "size":
-                sizes.insert(0, before)
-            elif not (
-                before.role == "conjunction" or (before.role == "separator" and before.norm == ",")
-            ):
-                break
-        if len(sizes) >= 2:
-            for place, size in enumerate(sizes):
-                size.data["share"] = (place, len(sizes), sizes[0].start)
-
-
-def _after_list_plots(clauses: Sequence[Clause], position: int) -> bool:
-    """Whether the sentence so far named the plots of a list ("... in adjacent strips")."""
-    return any(
-        i.data.get("list_plots")
-        for clause in clauses[_sentence_start(clauses, position) : position + 1]
-        for i in clause.items
-    )
-
-
-#: Words after "all" that carry what is said of all fields ("all in flower", "all are ill").
-_ALL_CARRIERS = frozenset(
-    {"in", "at", "on", "of", "with", "the", "are", "is", "were", "was", "have", "look", "looking"}
-)
-
-
-def _all_as_intensifier(items: Sequence[Item]) -> None:
-    """'our wheat, all green and even, drilled at 12.5 cm': "all" before a plain word
-    stresses it; it does not say the rest of the sentence of every field."""
-    for index, item in enumerate(items[:-1]):
-        following = items[index + 1]
-        if item.role != "all" or item.norm != "all" or following.role not in ("filler", "unknown"):
-            continue
-        if following.norm in _ALL_CARRIERS or not following.norm.isalpha():
-            continue
-        beyond = items[index + 2] if index + 2 < len(items) else None
-        if beyond is None or beyond.role not in ATTRIBUTE_ROLES:
-            item.role = "filler"
-
-
-def _negated_looks(items: Sequence[Item]) -> None:
-    """'not in ear yet', 'no flowers yet', 'no spots on the leaves': a stage word or a
-    visual cue right after a negation says what the field is not, so it says nothing."""
-    for negation, item in itertools.pairwise(items):
-        if negation.role == "negation" and (item.role == "stage" or "cue" in item.data):
-            item.data["negated"] = True
-
-
-def _plot_numbers_are_names(items: Sequence[Item]) -> None:
-    """'in plot 2', 'Field 4 is ...': a number right after one plot names it, it does
-    not count fields (a count comes before its noun)."""
-    for index, (item, number) in enumerate(itertools.pairwise(items)):
-        spec = item.data.get("value") if item.role == "plot" else None
-        if not isinstance(spec, dict) or spec.get("plural") or number.role != "number":
-            continue
-        if not number.norm.isdigit():
-            continue
-        after = items[index + 2] if index + 2 < len(items) else None
-        if after is None or after.role not in ("head", "plot", "weak_variety", "size", "geometry"):
-            number.role = "filler"
-            number.data["label"] = True
-
-
-def _row_words_of_every_field(items: Sequence[Item]) -> None:
-    """'Ridges and beds all 80 m long', 'Beds all 1.5 m': a sentence about the rows or beds
-    of the fields named before, not a field of beds."""
-    nouns = geometry_nouns()
-    start = 0
-    for index, item in enumerate(items):
-        if item.role == "separator" and item.norm in _SENTENCE_MARKS:
-            start = index + 1
-            continue
-        if index != start or not any(i.role in ("head", "plot") for i in items[:start]):
-            continue
-        end = index
-        while end < len(items) and (
-            items[end].norm in nouns or (items[end].role == "conjunction" and end > index)
-        ):
-            end += 1
-        if end > index and end < len(items) and items[end].role == "all":
-            for noun in items[index:end]:
-                if noun.role != "conjunction":
-                    noun.role = "filler"
-
-
-def _plot_words_of_other_things(items: Sequence[Item]) -> None:
-    """'to compare planting systems': a plot word between two words the reader does not
-    know is part of their phrase, not a field."""
-    for before, item, after in zip(items, items[1:], items[2:], strict=False):
-        if item.role == "plot" and before.role == after.role == "unknown":
-            item.role = "filler"
-
-
-def _plots_of_a_list(items: Sequence[Item]) -> None:
-    """'cabbages and onions in 2 plots', 'Sturon and Walla Walla onions in adjacent
-    6 x 50 m strips': plots a list of crops is grown in are the list's own fields, one
-    each, not more fields (the plot word and its count are read as said of them)."""
-    for index, item in enumerate(items):
-        # "onions and cabbages, 2 plots, ...": the count of plots said after a comma
-        summary = (
-            item.role == "separator"
-            and item.norm == ","
-            and index + 1 < len(items)
-            and items[index + 1].role == "number"
-        )
-        if (item.norm not in ("in", "on") and not summary) or index == 0:
-            continue
-        cursor, between = index + 1, list[Item]()
-        while (
-            cursor < len(items)
-            and len(between) < 3
-            and (
-                items[cursor].role in ("number", "size", "unknown", "geometry")
-                or items[cursor].norm in _reader_words("plot_adjectives")
-                or (
-                    items[cursor].role in ("relation", "trailer")
-                    and items[cursor].norm in _reader_words("plot_adjectives")
-                )
-            )
-        ):
-            between.append(items[cursor])
-            cursor += 1
-        if cursor >= len(items):
-            continue
-        plot = items[cursor]
-        spec = plot.data.get("value") if plot.role == "plot" else None
-        if not isinstance(spec, dict) or spec.get("individual"):
-            continue
-        crops, comma, joined = 0, False, False
-        for before in reversed(items[:index]):
-            if before.role == "separator" and before.norm in _SENTENCE_MARKS:
-                break
-            comma = comma or (before.role == "separator" and crops == 0)
-            named = before.role == "head" and before.has("crop", "variety")
-            if named and not joined:  # "tomatoes (san marzanno)": one crop named
-                crops += 1
-            joined = named or (joined and before.norm in ("(", ")"))
-        counted = [i for i in between if i.role == "number"]
-        followed = cursor + 1 < len(items) and items[cursor + 1].role in ("of", "head")
-        # "on the terraces", "on steep slate terraces": where the crop named grows
-        definite = any(i.norm == "the" or i.role == "unknown" for i in between) and not counted
-        if summary and not (
-            spec.get("plural") and counted and float(counted[0].data.get("value", 0)) == crops
-        ):
-            continue
-        if spec.get("plural") and definite and crops >= 1:
-            pass  # "Cavendish bananas on the terraces below the house": where they grow
-        elif spec.get("plural"):
-            if crops < 2 or (counted and float(counted[0].data.get("value", 0)) != crops):
-                continue
-        elif not (
-            # "Pear trees, 1,000 of them at 3.5 x 1.2 m in a 60 m x 80 m block": the block
-            # the one field named is planted in
-            crops == 1
-            and comma
-            and not followed
-            and any(i.role == "size" for i in between)
-            and all(i.role != "number" or i.norm in ("a", "an", "one") for i in between)
-        ):
-            continue
-        plot.role = "filler"
-        plot.data["list_plots"] = True
-        for word in counted:
-            word.role = "filler"
-        for word in between:
-            if word.role == "geometry":
-                word.data["of_each_plot"] = True
-
-
-@functools.cache
-def _reader_words(name: str) -> frozenset[str]:
-    """A list of words one reading pass looks for (``reader_words`` in vocabulary.yaml)."""
-    return frozenset(str(word) for word in vocabulary()["reader_words"][name])
-
-
-def _day_of_month(item: Item) -> bool:
-    value = item.data.get("value")
-    return isinstance(value, float) and value.is_integer() and 1 <= value <= 31
-
-
-def _opens_with_rows(clauses: Sequence[Clause], position: int) -> bool:
-    """Whether a measure clause opens a sentence with the rows' or beds' word after two or
-    more fields ("...; Walla Walla, 20 rows at 35 cm. Rows 30 m, ..."): every field's rows."""
-    clause = clauses[position]
-    if clause.mentions or not clause.items or clause.items[0].role != "geometry":
-        return False
-    if clause.link is None or clause.link.norm not in _SENTENCE_MARKS:
-        return False
-    first = clause.items[0].tokens[0].norm
-    named = {id(m): m for c in clauses[:position] for m in c.mentions}.values()
-    fields = sum(max(len({id(r) for r in m.refinements}), m.count or 1) for m in named)
-    return first in geometry_nouns() and fields >= 2
-
-
-def _shared_by_all(clauses: Sequence[Clause], position: int) -> bool:
-    """Whether a measure clause continues a run of measures that began with "each" or
-    "both" ("both 10 rows at 3.8 m, a tree every 1.2 m, rows running NW-SE")."""
-    index = position
-    while index > 0:
-        clause = clauses[index]
-        if clause.link is None or not listing(clause.link):
-            return False
-        previous = clauses[index - 1]
-        if previous.mentions:
-            return False
-        # ("Each block is 40 rows x 150 m, rows 2.5 m apart": the "each" clause lent its
-        # words to every field, and the measures after it go with them)
-        if (
-            any(i.role == "all" for i in (*previous.loose, *previous.items))
-            or any(
-                t.norm in ("each", "both")
-                for i in previous.loose
-                if i.role == "geometry"
-                for t in i.tokens
-            )
-            # "8 rows per block, 5 m between rows": measures said per plot
-            or any(
-                a.norm == "per" and b.role == "plot" for a, b in itertools.pairwise(previous.items)
-            )
-        ):
-            return True
-        index -= 1
-    return False
-
-
-_SENTENCE_ENDS = frozenset({".", "!", ";"})
-
-
-def _ends_a_sentence(clause: Clause) -> bool:
-    """Whether the clause begins a new sentence ("...; fruit ready", "... . Rows ...")."""
-    link = clause.link
-    return link is not None and link.norm in _SENTENCE_ENDS
-
-
-def _sentence_start(clauses: Sequence[Clause], position: int) -> int:
-    """The index of the clause that begins the sentence clause ``position`` is in."""
-    start = position
-    while start > 0 and not _ends_a_sentence(clauses[start]):
-        start -= 1
-    return start
-
-
-def _only_measures(clause: Clause) -> bool:
-    """A clause of row measures and words that say nothing of a field ("Tall spindle")."""
-    return not clause.mentions and all(
-        i.role in ("geometry", "filler", "all", "unknown")
-        or (i.role == "number" and i.norm in ("a", "an"))
-        for i in clause.items
-    )
-
-
-def _in_a_sentence_of_measures(clauses: Sequence[Clause], position: int) -> bool:
-    """Whether a clause of measures lies in a sentence that names no field."""
-    clause = clauses[position]
-    if not any(i.role == "geometry" for i in clause.items):
-        return False
-    index = position
-    while True:
-        current = clauses[index]
-        if not _only_measures(current):
-            return False
-        if _ends_a_sentence(current):
-            return True
-        if current.link is None or index == 0:
-            return False
-        index -= 1
-
-
-def _measure_keys(items: Sequence[Item]) -> frozenset[str]:
-    """The geometry keys a field's (or a clause's) words state ("row_spacing_m", ...)."""
-    return frozenset(g.key for i in items if i.role == "geometry" for g in i.data["geometry"])
-
-
-def _parallel_fields(clauses: Sequence[Clause], position: int) -> list[Mention]:
-    """'10 rows of beef tomatoes north of 10 rows of cherry tomatoes, 1.6 m between
-    rows': the fields of the sentence, when each states the same measures, so what
-    follows them in that sentence is about all of them ([] otherwise)."""
-    end = position + 1
-    while end < len(clauses) and not _ends_a_sentence(clauses[end]):
-        if clauses[end].mentions:
-            return []  # a field named later in the sentence takes what comes before it
-        end += 1
-    fields = _sentence_fields(clauses, position)
-    if len(fields) < 2 or any((m.count or 1) > 1 or m.refinements for m in fields):
-        return []
-    keys = [_measure_keys(m.items) for m in fields]
-    return fields if keys[0] and all(k == keys[0] for k in keys) else []
-
-
-def _share_each_measures(clauses: Sequence[Clause]) -> None:
-    """'The Hamlin block ..., Washington Navel the west half: 150 trees each at 7 m x 4 m':
-    a measure said with "each" by the last of a list is every listed field's."""
-    for position, clause in enumerate(clauses):
-        for mention in clause.mentions[-1:]:
-            # "150 trees each at 7 m x 4 m": the whole measure, said for every one
-            measures = [i for i in mention.items if i.role == "geometry"]
-            if not any(
-                t.norm in ("each", "both") for i in measures if not per_bed(i) for t in i.tokens
-            ):
-                # "Fontane, Agria and Bintje in three 9-row strips": each plot's rows
-                measures = [i for i in measures if i.data.get("of_each_plot")]
-            if not measures:
-                continue
-            for other in _sentence_fields(clauses, position):
-                if other is not mention:
-                    said = _measure_keys(other.items)
-                    other.items.extend(i for i in measures if not _measure_keys([i]) & said)
-
-
-def _bracketed_by(clauses: Sequence[Clause], position: int) -> Mention | None:
-    """The field a bracket of measures follows ("two lettuce plots (10 rows each, ...)"),
-    when clause ``position`` lies inside that bracket; None otherwise."""
-    for index in range(position, 0, -1):
-        clause = clauses[index]
-        if clause.mentions or clause.link is None or clause.link.norm == ")":
-            return None
-        if clause.link.norm == "(":
-            before = clauses[index - 1].mentions
-            return before[-1] if before else None
-    return None
-
-
-def _shared_by_all_after(clauses: Sequence[Clause], position: int) -> bool:
-    """Whether a measure clause begins a run of measures that ends with "in both" or "in
-    each" ("rows 6 m apart and trees 3 m apart in both")."""
-    index = position + 1
-    while index < len(clauses):
-        clause = clauses[index]
-        if clause.link is None or not listing(clause.link) or clause.mentions:
-            return False
-        if not clause.items or any(
-            i.role not in ("geometry", "filler", "all") for i in clause.items
-        ):
-            return False
-        if any(i.role == "all" for i in clause.items):
-            return True
-        index += 1
-    return False
-
-
-def _purpose_diseases(items: Sequence[Item], text: str) -> None:
-    """'Late-blight detection dataset', 'a blight-spotting drone': a disease named as what
-    a dataset or robot is for says nothing about the plants' health (scenery words).
-    'Apple-counting scene', 'fruit-detection plots': a crop joined by a hyphen to what a
-    robot does names the task, not a field."""
-    for index, item in enumerate(items):
-        # "for a banana canopy-segmentation dataset": the crop a purpose is about
-        if item.role != "head" or index == 0:
-            continue
-        opener = index - 1
-        if items[opener].norm in ("a", "an", "the", "our", "my") and opener:
-            opener -= 1
-        if items[opener].norm != "for":
-            continue
-        for following in items[index + 1 : index + 5]:
-            if _purpose(following):
-                item.role = "filler"
-                item.data["scenery"] = "purposes"
-                break
-            if following.role not in ("unknown", "filler"):
-                break
-    for item, following in itertools.pairwise(items):
-        if not _purpose(following):
-            continue
-        gap = text[item.end : following.start]
-        named = item.role in ("head", "plot")  # "Apple-counting", "Vineyard-robot"
-        if (item.role == "health" and len(gap) <= 1) or (named and gap == "-"):
-            item.role = "filler"
-            item.data["scenery"] = "purposes"
-
-
-#: What "same spacing" copies from the field before: how its rows and plants are spaced.
-_SPACINGS = ("row_spacing_m", "in_row_spacing_m", "bed_width_m", "rows_per_bed", "plants_per_ha")
-
-
-def _same_spacing(intent: FieldIntent, before: FieldIntent, words: Sequence[Item]) -> FieldIntent:
-    """'Kordia, 10 rows at 4.6 m ...; Regina, same spacing, 8 rows': the spacings of the
-    field before, except those this field states itself; 'rows in the same direction':
-    its rows' bearing; '16 rows of the same length': its rows' length."""
-    if before.rows is None:
-        return intent
-    direction = any(w in i.norm for i in words for w in ("direction", "orientation"))
-    length = any(w in i.norm for i in words for w in ("length", "long"))
-    keys = ("row_bearing_deg",) if direction else ("row_length_m",) if length else _SPACINGS
-    copied = {k: getattr(before.rows, k) for k in keys if getattr(before.rows, k) is not None}
-    if not copied:
-        return intent
-    own = intent.rows
-    if own is not None:
-        copied = {k: v for k, v in copied.items() if getattr(own, k) is None}
-        rows = own.model_copy(update=copied)
-    else:
-        rows = RowSpec(**copied, text="same spacing")
-    return intent.model_copy(update={"rows": rows})
-
-
 def _about_the_others(clause: Clause) -> bool:
     """A clause that opens with 'the others' / 'the rest' and says something of them."""
     first = next((i for i in clause.items if i.role != "filler"), None)
@@ -1257,40 +724,6 @@ def _about_the_others(clause: Clause) -> bool:
         and first.data.get("value") == "rest"
         and any(i.role in ATTRIBUTE_ROLES and i.role != "all" for i in clause.loose)
     )
-
-
-def _parallel_spacing(
-    intent: FieldIntent, before: FieldIntent, items: Sequence[Item]
-) -> FieldIntent:
-    """'Riesling at 1.8 m row spacing and Spätburgunder at 2.0 m': a bare 'at 2.0 m' after
-    a field that said which spacing its 'at' measure was is the same spacing."""
-    lengths = ("row_spacing_m", "in_row_spacing_m", "bed_width_m")
-    own = intent.rows
-    said = [  # what the field before said and this one does not (a shared 'both' is in both)
-        k
-        for k in lengths
-        if before.rows is not None
-        and getattr(before.rows, k) is not None
-        and (own is None or getattr(own, k) is None)
-    ]
-    if len(said) != 1:
-        return intent
-    for first, number, unit in zip(items, items[1:], items[2:], strict=False):
-        if first.norm != "at" or unit.role != "length_unit":
-            continue
-        value = number_value(number.norm)
-        factors = [float(s.value) for s in unit.senses_of("length_unit")]
-        if value is None or value <= 0 or not factors:
-            continue
-        metres = round(value * factors[0], 6)
-        text = f"{first.raw} {number.raw} {unit.raw}"
-        rows = (
-            intent.rows.model_copy(update={said[0]: metres})
-            if intent.rows is not None
-            else RowSpec(**{said[0]: metres}, text=text)
-        )
-        return intent.model_copy(update={"rows": rows})
-    return intent
 
 
 def _past_a_reference(

@@ -1,0 +1,269 @@
+"""Which fields a measure said apart from its field belongs to (issue 8).
+
+Rows, spacings and sizes often stand in a clause of their own: "Gala and Fuji, 40 and 36
+rows respectively", "(75 cm rows, 33 cm in-row, 40 m long)", "Rows 30 m, ...", "rows 6 m
+apart and trees 3 m apart in both", "Regina, same spacing". These helpers tell
+:meth:`~agrirecipe.resolve._parse.PromptReader` whether such a measure is the nearest
+field's, every listed field's, or the field before's again.
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Sequence
+
+from agrirecipe.resolve._decompose import Clause, Mention
+from agrirecipe.resolve._geometry import geometry_nouns
+from agrirecipe.resolve._intent import FieldIntent, RowSpec
+from agrirecipe.resolve._lexicon import Item, number_value
+from agrirecipe.resolve._relations import listing
+from agrirecipe.resolve._structure import per_bed
+from agrirecipe.resolve._words import SENTENCE_MARKS
+
+__all__ = [
+    "after_list_plots",
+    "bracketed_by",
+    "in_a_sentence_of_measures",
+    "opens_with_rows",
+    "parallel_fields",
+    "parallel_spacing",
+    "same_spacing",
+    "sentence_fields",
+    "share_each_measures",
+    "shared_by_all",
+    "shared_by_all_after",
+]
+
+
+def sentence_fields(clauses: Sequence[Clause], position: int) -> list[Mention]:
+    """The fields named in the sentence before clause ``position``, each once."""
+    start = _sentence_start(clauses, position)
+    return list({id(m): m for c in clauses[start:position] for m in c.mentions}.values())
+
+
+def after_list_plots(clauses: Sequence[Clause], position: int) -> bool:
+    """Whether the sentence so far named the plots of a list ("... in adjacent strips")."""
+    return any(
+        i.data.get("list_plots")
+        for clause in clauses[_sentence_start(clauses, position) : position + 1]
+        for i in clause.items
+    )
+
+
+def opens_with_rows(clauses: Sequence[Clause], position: int) -> bool:
+    """Whether a measure clause opens a sentence with the rows' or beds' word after two or
+    more fields ("...; Walla Walla, 20 rows at 35 cm. Rows 30 m, ..."): every field's rows."""
+    clause = clauses[position]
+    if clause.mentions or not clause.items or clause.items[0].role != "geometry":
+        return False
+    if clause.link is None or clause.link.norm not in SENTENCE_MARKS:
+        return False
+    first = clause.items[0].tokens[0].norm
+    named = {id(m): m for c in clauses[:position] for m in c.mentions}.values()
+    fields = sum(max(len({id(r) for r in m.refinements}), m.count or 1) for m in named)
+    return first in geometry_nouns() and fields >= 2
+
+
+def shared_by_all(clauses: Sequence[Clause], position: int) -> bool:
+    """Whether a measure clause continues a run of measures that began with "each" or
+    "both" ("both 10 rows at 3.8 m, a tree every 1.2 m, rows running NW-SE")."""
+    index = position
+    while index > 0:
+        clause = clauses[index]
+        if clause.link is None or not listing(clause.link):
+            return False
+        previous = clauses[index - 1]
+        if previous.mentions:
+            return False
+        # ("Each block is 40 rows x 150 m, rows 2.5 m apart": the "each" clause lent its
+        # words to every field, and the measures after it go with them)
+        if (
+            any(i.role == "all" for i in (*previous.loose, *previous.items))
+            or any(
+                t.norm in ("each", "both")
+                for i in previous.loose
+                if i.role == "geometry"
+                for t in i.tokens
+            )
+            # "8 rows per block, 5 m between rows": measures said per plot
+            or any(
+                a.norm == "per" and b.role == "plot" for a, b in itertools.pairwise(previous.items)
+            )
+        ):
+            return True
+        index -= 1
+    return False
+
+
+_SENTENCE_ENDS = frozenset({".", "!", ";"})
+
+
+def _ends_a_sentence(clause: Clause) -> bool:
+    """Whether the clause begins a new sentence ("...; fruit ready", "... . Rows ...")."""
+    link = clause.link
+    return link is not None and link.norm in _SENTENCE_ENDS
+
+
+def _sentence_start(clauses: Sequence[Clause], position: int) -> int:
+    """The index of the clause that begins the sentence clause ``position`` is in."""
+    start = position
+    while start > 0 and not _ends_a_sentence(clauses[start]):
+        start -= 1
+    return start
+
+
+def _only_measures(clause: Clause) -> bool:
+    """A clause of row measures and words that say nothing of a field ("Tall spindle")."""
+    return not clause.mentions and all(
+        i.role in ("geometry", "filler", "all", "unknown")
+        or (i.role == "number" and i.norm in ("a", "an"))
+        for i in clause.items
+    )
+
+
+def in_a_sentence_of_measures(clauses: Sequence[Clause], position: int) -> bool:
+    """Whether a clause of measures lies in a sentence that names no field."""
+    clause = clauses[position]
+    if not any(i.role == "geometry" for i in clause.items):
+        return False
+    index = position
+    while True:
+        current = clauses[index]
+        if not _only_measures(current):
+            return False
+        if _ends_a_sentence(current):
+            return True
+        if current.link is None or index == 0:
+            return False
+        index -= 1
+
+
+def _measure_keys(items: Sequence[Item]) -> frozenset[str]:
+    """The geometry keys a field's (or a clause's) words state ("row_spacing_m", ...)."""
+    return frozenset(g.key for i in items if i.role == "geometry" for g in i.data["geometry"])
+
+
+def parallel_fields(clauses: Sequence[Clause], position: int) -> list[Mention]:
+    """'10 rows of beef tomatoes north of 10 rows of cherry tomatoes, 1.6 m between
+    rows': the fields of the sentence, when each states the same measures, so what
+    follows them in that sentence is about all of them ([] otherwise)."""
+    end = position + 1
+    while end < len(clauses) and not _ends_a_sentence(clauses[end]):
+        if clauses[end].mentions:
+            return []  # a field named later in the sentence takes what comes before it
+        end += 1
+    fields = sentence_fields(clauses, position)
+    if len(fields) < 2 or any((m.count or 1) > 1 or m.refinements for m in fields):
+        return []
+    keys = [_measure_keys(m.items) for m in fields]
+    return fields if keys[0] and all(k == keys[0] for k in keys) else []
+
+
+def share_each_measures(clauses: Sequence[Clause]) -> None:
+    """'The Hamlin block ..., Washington Navel the west half: 150 trees each at 7 m x 4 m':
+    a measure said with "each" by the last of a list is every listed field's."""
+    for position, clause in enumerate(clauses):
+        for mention in clause.mentions[-1:]:
+            # "150 trees each at 7 m x 4 m": the whole measure, said for every one
+            measures = [i for i in mention.items if i.role == "geometry"]
+            if not any(
+                t.norm in ("each", "both") for i in measures if not per_bed(i) for t in i.tokens
+            ):
+                # "Fontane, Agria and Bintje in three 9-row strips": each plot's rows
+                measures = [i for i in measures if i.data.get("of_each_plot")]
+            if not measures:
+                continue
+            for other in sentence_fields(clauses, position):
+                if other is not mention:
+                    said = _measure_keys(other.items)
+                    other.items.extend(i for i in measures if not _measure_keys([i]) & said)
+
+
+def bracketed_by(clauses: Sequence[Clause], position: int) -> Mention | None:
+    """The field a bracket of measures follows ("two lettuce plots (10 rows each, ...)"),
+    when clause ``position`` lies inside that bracket; None otherwise."""
+    for index in range(position, 0, -1):
+        clause = clauses[index]
+        if clause.mentions or clause.link is None or clause.link.norm == ")":
+            return None
+        if clause.link.norm == "(":
+            before = clauses[index - 1].mentions
+            return before[-1] if before else None
+    return None
+
+
+def shared_by_all_after(clauses: Sequence[Clause], position: int) -> bool:
+    """Whether a measure clause begins a run of measures that ends with "in both" or "in
+    each" ("rows 6 m apart and trees 3 m apart in both")."""
+    index = position + 1
+    while index < len(clauses):
+        clause = clauses[index]
+        if clause.link is None or not listing(clause.link) or clause.mentions:
+            return False
+        if not clause.items or any(
+            i.role not in ("geometry", "filler", "all") for i in clause.items
+        ):
+            return False
+        if any(i.role == "all" for i in clause.items):
+            return True
+        index += 1
+    return False
+
+
+#: What "same spacing" copies from the field before: how its rows and plants are spaced.
+_SPACINGS = ("row_spacing_m", "in_row_spacing_m", "bed_width_m", "rows_per_bed", "plants_per_ha")
+
+
+def same_spacing(intent: FieldIntent, before: FieldIntent, words: Sequence[Item]) -> FieldIntent:
+    """'Kordia, 10 rows at 4.6 m ...; Regina, same spacing, 8 rows': the spacings of the
+    field before, except those this field states itself; 'rows in the same direction':
+    its rows' bearing; '16 rows of the same length': its rows' length."""
+    if before.rows is None:
+        return intent
+    direction = any(w in i.norm for i in words for w in ("direction", "orientation"))
+    length = any(w in i.norm for i in words for w in ("length", "long"))
+    keys = ("row_bearing_deg",) if direction else ("row_length_m",) if length else _SPACINGS
+    copied = {k: getattr(before.rows, k) for k in keys if getattr(before.rows, k) is not None}
+    if not copied:
+        return intent
+    own = intent.rows
+    if own is not None:
+        copied = {k: v for k, v in copied.items() if getattr(own, k) is None}
+        rows = own.model_copy(update=copied)
+    else:
+        rows = RowSpec(**copied, text="same spacing")
+    return intent.model_copy(update={"rows": rows})
+
+
+def parallel_spacing(
+    intent: FieldIntent, before: FieldIntent, items: Sequence[Item]
+) -> FieldIntent:
+    """'Riesling at 1.8 m row spacing and Spätburgunder at 2.0 m': a bare 'at 2.0 m' after
+    a field that said which spacing its 'at' measure was is the same spacing."""
+    lengths = ("row_spacing_m", "in_row_spacing_m", "bed_width_m")
+    own = intent.rows
+    said = [  # what the field before said and this one does not (a shared 'both' is in both)
+        k
+        for k in lengths
+        if before.rows is not None
+        and getattr(before.rows, k) is not None
+        and (own is None or getattr(own, k) is None)
+    ]
+    if len(said) != 1:
+        return intent
+    for first, number, unit in zip(items, items[1:], items[2:], strict=False):
+        if first.norm != "at" or unit.role != "length_unit":
+            continue
+        value = number_value(number.norm)
+        factors = [float(s.value) for s in unit.senses_of("length_unit")]
+        if value is None or value <= 0 or not factors:
+            continue
+        metres = round(value * factors[0], 6)
+        text = f"{first.raw} {number.raw} {unit.raw}"
+        rows = (
+            intent.rows.model_copy(update={said[0]: metres})
+            if intent.rows is not None
+            else RowSpec(**{said[0]: metres}, text=text)
+        )
+        return intent.model_copy(update={"rows": rows})
+    return intent

@@ -1,0 +1,386 @@
+"""What single words are, before clauses are built (issue 8's reading passes).
+
+:func:`read_words` runs the passes in this order over the tagged words of a prompt;
+each decides what a word is in its place, where the lexicon alone cannot:
+
+==  ====================================================  ===========================
+#   pass                                                  example
+==  ====================================================  ===========================
+1   a number with a length unit, a rootstock's name, one  "3.5 m in the pears",
+    plant every so far, a count of scenery: not a count   "one carrot every 2 cm"
+2   a crop word joined to a colour is a colour            "olive-green patches"
+3   readiness said of the past or of other things         "ready for the fleece"
+4   a stage word or cue after a negation says nothing     "not in ear yet"
+5   "all" before a plain word stresses it                 "all green and even"
+6   plots a list of crops is grown in are its own fields  "A and B in 2 plots"
+7   a plot word inside an unknown phrase is no field      "compare planting systems"
+8   a sentence about the rows or beds of every field      "Ridges and beds all 80 m"
+9   a number after one plot names it                      "in plot 2"
+10  a size followed by "in total" is the farm's           "40 ha in total"
+11  sizes given "respectively"                            "2 ha and 3 ha respectively"
+==  ====================================================  ===========================
+
+The words each pass looks for are data (``reader_words`` in vocabulary.yaml).
+"""
+
+from __future__ import annotations
+
+import functools
+import itertools
+from collections.abc import Sequence
+
+from agrirecipe.resolve._fields import ATTRIBUTE_ROLES
+from agrirecipe.resolve._geometry import geometry_nouns
+from agrirecipe.resolve._lexicon import Item, vocabulary
+
+__all__ = ["SENTENCE_MARKS", "purpose_diseases", "read_words", "reader_words"]
+
+#: Marks that end a sentence.
+SENTENCE_MARKS = frozenset({".", "!", "?", ";"})
+
+
+def read_words(items: Sequence[Item], text: str) -> None:
+    """Run the word passes, in order, over a prompt's items (see the module's table)."""
+    _measures_are_not_counts(items)
+    _colours_are_not_crops(items, text)
+    _past_and_other_readiness(items)
+    _negated_looks(items)
+    _all_as_intensifier(items)
+    _plots_of_a_list(items)
+    _plot_words_of_other_things(items)
+    _row_words_of_every_field(items)
+    _plot_numbers_are_names(items)
+    _totals_are_not_sizes(items)
+    _respective_sizes(items)
+
+
+#: Scenery groups whose words name what a request is for ("a blight detection dataset").
+_PURPOSES = frozenset({"robots", "purposes"})
+
+
+def _measures_are_not_counts(items: Sequence[Item]) -> None:
+    """ "3.5 m in the pears": a number with a length unit is a measure, never a count of
+    fields (what no size or geometry pattern read stays a filler)."""
+    for item, following in itertools.pairwise(items):
+        if item.role == "number" and following.role == "length_unit":
+            item.role = "filler"
+            item.data["measure"] = True
+    for index in range(1, len(items)):
+        before, item = items[index - 1], items[index]
+        after = items[index + 1] if index + 1 < len(items) else None
+        if (
+            item.role == "number"
+            and item.raw.isdigit()
+            and before.role == "unknown"
+            and before.raw[:1].isupper()
+            and (after is None or after.role not in ("plot", "head", "weak_variety", "category"))
+        ):
+            item.role = "filler"  # "on Gisela 6": a rootstock's or machine's name
+    # "Three pepper varieties, one strip each: ...": how each member is planted
+    for first, plot, each in zip(items, items[1:], items[2:], strict=False):
+        if (
+            first.norm in ("one", "1", "a")
+            and plot.role == "plot"
+            and each.norm in ("each", "apiece")
+        ):
+            first.role = plot.role = "filler"
+    # "one carrot every 2 cm": one plant of the crop, every so far along the row
+    for first, head, spacing in zip(items, items[1:], items[2:], strict=False):
+        if (
+            first.role == "number"
+            and first.norm in ("one", "1", "a", "an")
+            and head.role in ("head", "weak_variety")
+            and spacing.role == "geometry"
+            and any(m.key == "in_row_spacing_m" for m in spacing.data["geometry"])
+        ):
+            first.role = "filler"
+    # "between the two tracks", "three tractors": a number before scenery counts it
+    for item, following in itertools.pairwise(items):
+        if item.role == "number" and item.norm not in ("a", "an") and following.scenery:
+            item.role = "filler"
+            item.data["counts_scenery"] = True
+        elif item.role == "number" and item.norm in ("a", "an") and following.role == "cue":
+            item.role = "filler"  # "a combine already working in the spelt": not a field
+    # "on 20 April", "April 3rd": a day of the month is a date, not a count of fields
+    words = [i for i in items if i.role != "separator" or i.norm not in (",",)]
+    for index, item in enumerate(words):
+        if item.role != "number" or not _day_of_month(item):
+            continue
+        said_before = words[index - 1] if index else None
+        said_after = words[index + 1] if index + 1 < len(words) else None
+        if (said_after is not None and said_after.role == "month") or (
+            said_before is not None
+            and said_before.role == "month"
+            and (
+                said_after is None
+                or said_after.role not in ("plot", "head", "weak_variety", "category")
+            )
+        ):
+            item.role = "filler"
+            item.data["date"] = True
+
+
+def _purpose(item: Item) -> bool:
+    """A word naming what a request is for ("dataset", "test", "survey")."""
+    group = item.data.get("scenery") or next(
+        (sense.value for sense in item.senses_of("scenery")), None
+    )
+    return item.role in ("filler", "non_agricultural") and group in _PURPOSES
+
+
+def _totals_are_not_sizes(items: Sequence[Item]) -> None:
+    """'we farm about 40 ha in total - 25 ha of wheat, ...': a total is not a field's size."""
+    norms = [i.norm for i in items]
+    for index, item in enumerate(items):
+        if item.role != "size":
+            continue
+        after = tuple(norms[index + 1 : index + 3])
+        if any(after[: len(words)] == tuple(words.split()) for words in reader_words("totals")):
+            item.role = "filler"
+            item.data["total"] = True
+
+
+def _colours_are_not_crops(items: Sequence[Item], text: str) -> None:
+    """'striped yellow-orange with rust', 'olive-green velvety patches': a crop word joined
+    by a hyphen to a colour is a colour, not a field (nor an unknown crop)."""
+    for first, second in itertools.pairwise(items):
+        if text[first.end : second.start] != "-":
+            continue
+        for crop, colour in ((first, second), (second, first)):
+            if crop.role in ("head", "other_crop") and colour.norm in reader_words("colours"):
+                crop.role = "filler"
+                crop.data["colour"] = True
+
+
+def _past_and_other_readiness(items: Sequence[Item]) -> None:
+    """'wire hoops ready for the fleece': not the crop's stage. 'drilled last October;
+    it's May now': a month said as when the crop was sown is not the scene's time (when
+    another time is said)."""
+    times = [i for i in items if i.role in ("month", "season")]
+    for index, item in enumerate(items):
+        following = [i.norm for i in items[index + 1 : index + 4]]
+        if item.role == "stage" and item.norm == "ready" and following[:1] == ["for"]:
+            what = next((word for word in following[1:] if word != "the"), "")
+            if what not in reader_words("harvests"):
+                item.role = "filler"
+        if item.role != "month" or len(times) < 2:
+            continue
+        before = [i.norm for i in items[max(0, index - 2) : index]]
+        last = before[-1] if before else ""
+        if (
+            last == "last"
+            or last in reader_words("sown")
+            or (last == "in" and before[0] in reader_words("sown"))
+        ):
+            item.role = "filler"
+            item.data["sown"] = True
+
+
+def _respective_sizes(items: Sequence[Item]) -> None:
+    """'30x40m and 30x60m respectively': sizes listed before "respectively" are one for
+    each field named before them, in order (``give_respectively`` gives them out)."""
+    for index, item in enumerate(items):
+        if item.norm != "respectively":
+            continue
+        sizes: list[Item] = []
+        for before in reversed(items[:index]):
+            if before.role == "size":
+                sizes.insert(0, before)
+            elif not (
+                before.role == "conjunction" or (before.role == "separator" and before.norm == ",")
+            ):
+                break
+        if len(sizes) >= 2:
+            for place, size in enumerate(sizes):
+                size.data["share"] = (place, len(sizes), sizes[0].start)
+
+
+#: Words after "all" that carry what is said of all fields ("all in flower", "all are ill").
+_ALL_CARRIERS = frozenset(
+    {"in", "at", "on", "of", "with", "the", "are", "is", "were", "was", "have", "look", "looking"}
+)
+
+
+def _all_as_intensifier(items: Sequence[Item]) -> None:
+    """'our wheat, all green and even, drilled at 12.5 cm': "all" before a plain word
+    stresses it; it does not say the rest of the sentence of every field."""
+    for index, item in enumerate(items[:-1]):
+        following = items[index + 1]
+        if item.role != "all" or item.norm != "all" or following.role not in ("filler", "unknown"):
+            continue
+        if following.norm in _ALL_CARRIERS or not following.norm.isalpha():
+            continue
+        beyond = items[index + 2] if index + 2 < len(items) else None
+        if beyond is None or beyond.role not in ATTRIBUTE_ROLES:
+            item.role = "filler"
+
+
+def _negated_looks(items: Sequence[Item]) -> None:
+    """'not in ear yet', 'no flowers yet', 'no spots on the leaves': a stage word or a
+    visual cue right after a negation says what the field is not, so it says nothing."""
+    for negation, item in itertools.pairwise(items):
+        if negation.role == "negation" and (item.role == "stage" or "cue" in item.data):
+            item.data["negated"] = True
+
+
+def _plot_numbers_are_names(items: Sequence[Item]) -> None:
+    """'in plot 2', 'Field 4 is ...': a number right after one plot names it, it does
+    not count fields (a count comes before its noun)."""
+    for index, (item, number) in enumerate(itertools.pairwise(items)):
+        spec = item.data.get("value") if item.role == "plot" else None
+        if not isinstance(spec, dict) or spec.get("plural") or number.role != "number":
+            continue
+        if not number.norm.isdigit():
+            continue
+        after = items[index + 2] if index + 2 < len(items) else None
+        if after is None or after.role not in ("head", "plot", "weak_variety", "size", "geometry"):
+            number.role = "filler"
+            number.data["label"] = True
+
+
+def _row_words_of_every_field(items: Sequence[Item]) -> None:
+    """'Ridges and beds all 80 m long', 'Beds all 1.5 m': a sentence about the rows or beds
+    of the fields named before, not a field of beds."""
+    nouns = geometry_nouns()
+    start = 0
+    for index, item in enumerate(items):
+        if item.role == "separator" and item.norm in SENTENCE_MARKS:
+            start = index + 1
+            continue
+        if index != start or not any(i.role in ("head", "plot") for i in items[:start]):
+            continue
+        end = index
+        while end < len(items) and (
+            items[end].norm in nouns or (items[end].role == "conjunction" and end > index)
+        ):
+            end += 1
+        if end > index and end < len(items) and items[end].role == "all":
+            for noun in items[index:end]:
+                if noun.role != "conjunction":
+                    noun.role = "filler"
+
+
+def _plot_words_of_other_things(items: Sequence[Item]) -> None:
+    """'to compare planting systems': a plot word between two words the reader does not
+    know is part of their phrase, not a field."""
+    for before, item, after in zip(items, items[1:], items[2:], strict=False):
+        if item.role == "plot" and before.role == after.role == "unknown":
+            item.role = "filler"
+
+
+def _plots_of_a_list(items: Sequence[Item]) -> None:
+    """'cabbages and onions in 2 plots', 'Sturon and Walla Walla onions in adjacent
+    6 x 50 m strips': plots a list of crops is grown in are the list's own fields, one
+    each, not more fields (the plot word and its count are read as said of them)."""
+    for index, item in enumerate(items):
+        # "onions and cabbages, 2 plots, ...": the count of plots said after a comma
+        summary = (
+            item.role == "separator"
+            and item.norm == ","
+            and index + 1 < len(items)
+            and items[index + 1].role == "number"
+        )
+        if (item.norm not in ("in", "on") and not summary) or index == 0:
+            continue
+        cursor, between = index + 1, list[Item]()
+        while (
+            cursor < len(items)
+            and len(between) < 3
+            and (
+                items[cursor].role in ("number", "size", "unknown", "geometry")
+                or items[cursor].norm in reader_words("plot_adjectives")
+                or (
+                    items[cursor].role in ("relation", "trailer")
+                    and items[cursor].norm in reader_words("plot_adjectives")
+                )
+            )
+        ):
+            between.append(items[cursor])
+            cursor += 1
+        if cursor >= len(items):
+            continue
+        plot = items[cursor]
+        spec = plot.data.get("value") if plot.role == "plot" else None
+        if not isinstance(spec, dict) or spec.get("individual"):
+            continue
+        crops, comma, joined = 0, False, False
+        for before in reversed(items[:index]):
+            if before.role == "separator" and before.norm in SENTENCE_MARKS:
+                break
+            comma = comma or (before.role == "separator" and crops == 0)
+            named = before.role == "head" and before.has("crop", "variety")
+            if named and not joined:  # "tomatoes (san marzanno)": one crop named
+                crops += 1
+            joined = named or (joined and before.norm in ("(", ")"))
+        counted = [i for i in between if i.role == "number"]
+        followed = cursor + 1 < len(items) and items[cursor + 1].role in ("of", "head")
+        # "on the terraces", "on steep slate terraces": where the crop named grows
+        definite = any(i.norm == "the" or i.role == "unknown" for i in between) and not counted
+        if summary and not (
+            spec.get("plural") and counted and float(counted[0].data.get("value", 0)) == crops
+        ):
+            continue
+        if spec.get("plural") and definite and crops >= 1:
+            pass  # "Cavendish bananas on the terraces below the house": where they grow
+        elif spec.get("plural"):
+            if crops < 2 or (counted and float(counted[0].data.get("value", 0)) != crops):
+                continue
+        elif not (
+            # "Pear trees, 1,000 of them at 3.5 x 1.2 m in a 60 m x 80 m block": the block
+            # the one field named is planted in
+            crops == 1
+            and comma
+            and not followed
+            and any(i.role == "size" for i in between)
+            and all(i.role != "number" or i.norm in ("a", "an", "one") for i in between)
+        ):
+            continue
+        plot.role = "filler"
+        plot.data["list_plots"] = True
+        for word in counted:
+            word.role = "filler"
+        for word in between:
+            if word.role == "geometry":
+                word.data["of_each_plot"] = True
+
+
+@functools.cache
+def reader_words(name: str) -> frozenset[str]:
+    """A list of words one reading pass looks for (``reader_words`` in vocabulary.yaml)."""
+    return frozenset(str(word) for word in vocabulary()["reader_words"][name])
+
+
+def purpose_diseases(items: Sequence[Item], text: str) -> None:
+    """'Late-blight detection dataset', 'a blight-spotting drone': a disease named as what
+    a dataset or robot is for says nothing about the plants' health (scenery words).
+    'Apple-counting scene', 'fruit-detection plots': a crop joined by a hyphen to what a
+    robot does names the task, not a field."""
+    for index, item in enumerate(items):
+        # "for a banana canopy-segmentation dataset": the crop a purpose is about
+        if item.role != "head" or index == 0:
+            continue
+        opener = index - 1
+        if items[opener].norm in ("a", "an", "the", "our", "my") and opener:
+            opener -= 1
+        if items[opener].norm != "for":
+            continue
+        for following in items[index + 1 : index + 5]:
+            if _purpose(following):
+                item.role = "filler"
+                item.data["scenery"] = "purposes"
+                break
+            if following.role not in ("unknown", "filler"):
+                break
+    for item, following in itertools.pairwise(items):
+        if not _purpose(following):
+            continue
+        gap = text[item.end : following.start]
+        named = item.role in ("head", "plot")  # "Apple-counting", "Vineyard-robot"
+        if (item.role == "health" and len(gap) <= 1) or (named and gap == "-"):
+            item.role = "filler"
+            item.data["scenery"] = "purposes"
+
+
+def _day_of_month(item: Item) -> bool:
+    value = item.data.get("value")
+    return isinstance(value, float) and value.is_integer() and 1 <= value <= 31
