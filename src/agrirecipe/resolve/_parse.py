@@ -25,9 +25,9 @@ step  pass                                        module (data)
       (counts that are not, labels, negations)    ``reader_words``)
 8     scenery-only prompts, unknown crops         ``PromptReader._reject_*``
 9     clauses and mentions                        ``_decompose``
-10    counts, corrections, descriptions,          ``_structure``
-      shared attributes, refinements,
-      back-references
+10    counts, corrections, shared attributes,     ``_structure``,
+      refinements; descriptions of plants         ``_descriptions``,
+      named; back-references                      ``_coreference``
 11    head-less clauses' words to their fields    ``PromptReader._attach_loose``,
       (which fields a measure is said of)         ``_measures``
 12    fields of each mention, their attributes    ``_fields``
@@ -42,6 +42,11 @@ from collections.abc import Callable, Sequence
 
 from agrirecipe._errors import PromptError, UnknownCropError
 from agrirecipe.resolve._casual import expand_casual
+from agrirecipe.resolve._coreference import (
+    drop_list_headings,
+    merge_appositive_plots,
+    merge_coreferences,
+)
 from agrirecipe.resolve._decompose import (
     Clause,
     Mention,
@@ -49,6 +54,7 @@ from agrirecipe.resolve._decompose import (
     decompose,
     resolve_weak_varieties,
 )
+from agrirecipe.resolve._descriptions import dissolve_plant_parts
 from agrirecipe.resolve._fields import (
     ATTRIBUTE_ROLES,
     FieldReading,
@@ -99,11 +105,7 @@ from agrirecipe.resolve._structure import (
     apply_each_side,
     apply_plural_counts,
     apply_refinements,
-    dissolve_plant_parts,
-    drop_list_headings,
     drop_negated,
-    merge_appositive_plots,
-    merge_coreferences,
     per_bed,
     promote_weak_varieties,
     raise_conflicts,

@@ -1,13 +1,15 @@
-"""How mentions relate across clauses: shared heads, corrections, refinements, coreference.
+"""How mentions relate across clauses: shared heads, corrections, refinements.
 
 - *Shared heads*: "navel and valencia orange groves" is two groves; a bare
   variety name gets its crop from the mention it is coordinated with.
 - *Corrections*: "cherry tomatoes? no, I mean cherry trees" keeps the trees.
 - *Refinements*: "Two orchards: one of Gala, one of Fuji" and "three
   fields: wheat, maize and potatoes" describe the members of a plural mention.
-- *Coreference*: a mention that points back ("..., the trees are healthy",
-  "a carrot field, nantes variety", "Riesling and Pinot Noir vineyards, grapes
-  ripe") adds to the field(s) already named instead of asking for a new one.
+- *Shared attributes*: "ripe wheat and maize", "..., both 2 ha".
+
+Descriptions of plants already named are in ``_descriptions``; mentions that point
+back at fields already named ("the carrots ...", "a carrot field, nantes variety") in
+``_coreference``. The small mention tests both use are public here.
 """
 
 from __future__ import annotations
@@ -24,16 +26,24 @@ from agrirecipe.resolve._lexicon import Item, vocabulary
 from agrirecipe.resolve._relations import listing
 
 __all__ = [
+    "EACH",
+    "another_field",
     "apply_corrections",
     "apply_each_side",
     "apply_plural_counts",
     "apply_refinements",
-    "dissolve_plant_parts",
+    "definite_before_head",
+    "definite_words",
+    "descriptive_words",
     "drop_negated",
-    "merge_coreferences",
+    "first_word",
+    "names_a_variety",
+    "one_of_the",
     "per_bed",
     "promote_weak_varieties",
+    "pronoun_one",
     "raise_conflicts",
+    "same_variety",
     "share_counted_fields",
     "share_leading_attributes",
     "share_trailing_attributes",
@@ -104,7 +114,7 @@ def _fold_described_plants(clause: Clause) -> None:
     ]
     if not weak or not clause.mentions:
         return
-    words = _descriptive_words()
+    words = descriptive_words()
     if not all(h.norm in words for m in clause.mentions for h in m.heads):
         return
     first = min(h.start for m in clause.mentions for h in m.heads)
@@ -172,7 +182,7 @@ def apply_plural_counts(clauses: Sequence[Clause], plural_count: int) -> None:
     ("Riesling and Pinot Noir vineyards", "orchards of Gala and Fuji"), or the
     mention points back at fields already named ("..., the trees are healthy").
     """
-    definite = _definite_words()
+    definite = definite_words()
     for position, clause in enumerate(clauses):
         for index, mention in enumerate(clause.mentions):
             plots = [h for h in mention.heads if h.role == "plot"]
@@ -188,10 +198,10 @@ def apply_plural_counts(clauses: Sequence[Clause], plural_count: int) -> None:
                 continue
             if spec.get("one_field") and mention.has_crop:
                 continue  # "Elsanta strawberry beds": one field of beds
-            first = _first_word(mention)
+            first = first_word(mention)
             if first is not None and first.norm in definite:
                 continue
-            if _definite_before_head(clause, mention):
+            if definite_before_head(clause, mention):
                 continue  # "a quick rundown of the plots. Plot 1: ..."
             link = clause.link if index == 0 else None
             if link is not None and link.role == "separator":
@@ -261,7 +271,7 @@ def _correction_before(clauses: Sequence[Clause], position: int) -> bool:
     return not previous.mentions and any(i.role == "correction" for i in previous.loose)
 
 
-def _first_word(mention: Mention) -> Item | None:
+def first_word(mention: Mention) -> Item | None:
     ordered = sorted(mention.items, key=lambda item: item.start)
     return ordered[0] if ordered else None
 
@@ -355,7 +365,7 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             clause.refined_parent = parent
             # "field corn, flint corn and popping corn, 8 rows each at 76 cm": for them all
             # ("75 cm ridges, 2 rows on each": each ridge, not each member)
-            shared = any(t.norm in _EACH for i in clause.items if not per_bed(i) for t in i.tokens)
+            shared = any(t.norm in EACH for i in clause.items if not per_bed(i) for t in i.tokens)
             # "Two strawberry plots of 10 beds each, Elsanta and Albion, beds 1.3 m ...":
             # measures after the last member of a full list describe them all
             ended = (
@@ -447,7 +457,7 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
                 _names_varieties_of(sub, parent) and (enumerating or link.role == "separator")
             )
             if clause.mentions and any(
-                _same_variety(r, sub)
+                same_variety(r, sub)
                 # "two different fruits: apples and apples" still lists two members
                 or (link.role == "separator" and not parent.distinct and _names_again(r, sub))
                 for r in parent.refinements
@@ -477,8 +487,8 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             ):
                 is_reference = False  # "three fields of sweet peppers and one of chillies"
             fits = _fits(sub, parent, crop_categories)
-            definite = (bool(clause.items) and clause.items[0].norm in _definite_words()) or (
-                bool(clause.mentions) and _definite_before_head(clause, clause.mentions[0])
+            definite = (bool(clause.items) and clause.items[0].norm in definite_words()) or (
+                bool(clause.mentions) and definite_before_head(clause, clause.mentions[0])
             )  # "..., with the popping corn between the other two" points back
             if (
                 listable
@@ -548,7 +558,7 @@ def _describes_plants(mentions: Sequence[Mention]) -> bool:
     if len(mentions) != 1 or mentions[0].count is not None:
         return False
     heads = mentions[0].heads
-    return bool(heads) and all(h.norm in _descriptive_words() for h in heads)
+    return bool(heads) and all(h.norm in descriptive_words() for h in heads)
 
 
 #: Words that open a relative clause about the member just listed.
@@ -558,7 +568,7 @@ _RELATIVE = frozenset({"that", "which", "where", "whose"})
 _POINTERS = frozenset({"it", "them", "this", "that", "these", "those"})
 
 #: Words that give a listed member's details to every member listed.
-_EACH = frozenset({"each", "all", "both"})
+EACH = frozenset({"each", "all", "both"})
 
 
 def _member_detail(item: Item) -> bool:
@@ -605,7 +615,7 @@ def _lists_exactly(
         # fields named again ("the Comice") or plot words alone ("Beds and ridges run
         # NW-SE") name no new field
         named.extend(
-            m for m in clause.mentions if m.has_crop and not _definite_before_head(clause, m)
+            m for m in clause.mentions if m.has_crop and not definite_before_head(clause, m)
         )
     return (
         count is not None
@@ -615,7 +625,7 @@ def _lists_exactly(
     )
 
 
-def _names_variety(mention: Mention) -> bool:
+def names_a_variety(mention: Mention) -> bool:
     """Whether the mention names a variety (not only a crop)."""
     return any(v is not None for _, v, weak in mention.interpretations or () if not weak)
 
@@ -627,7 +637,7 @@ def _names_again(member: Mention, sub: Mention) -> bool:
         sub.count is None
         and bool(crops)
         and crops == strong_crops(member)
-        and not _names_variety(sub)
+        and not names_a_variety(sub)
         and not any(h.role == "plot" for h in sub.heads)
     )
 
@@ -642,7 +652,7 @@ def _names_varieties_of(sub: Mention, parent: Mention) -> bool:
     # the crop the members name decides which reading the parent has
     common = crops & {c for c, _ in named}
     return (
-        (sub.count is None or (sub.count == 1 and _pronoun_one(sub)))
+        (sub.count is None or (sub.count == 1 and pronoun_one(sub)))
         and len(common) == 1
         and bool(named)
         and {c for c, _ in named} <= crops
@@ -650,13 +660,13 @@ def _names_varieties_of(sub: Mention, parent: Mention) -> bool:
     )
 
 
-def _pronoun_one(mention: Mention) -> bool:
+def pronoun_one(mention: Mention) -> bool:
     """'a spring wheat one', 'the Roma one': "one" after the head stands for a field."""
     heads = [h.start for h in mention.heads]
     return bool(heads) and any(i.norm == "one" and i.start > max(heads) for i in mention.items)
 
 
-def _another_field(clauses: Sequence[Clause], clause: Clause, mention: Mention) -> bool:
+def another_field(clauses: Sequence[Clause], clause: Clause, mention: Mention) -> bool:
     """ "; Padron plot north of it", "second plot of Sonata": a plot placed against the
     field before it, or called a second one, is a new field, not that field again."""
     if not any(h.role == "plot" for h in mention.heads):
@@ -678,7 +688,7 @@ def _another_field(clauses: Sequence[Clause], clause: Clause, mention: Mention) 
 _ORDINAL_NEW = frozenset({"second", "third", "fourth", "another", "2nd", "3rd", "4th", "new"})
 
 
-def _one_of_the(clause: Clause, mention: Mention) -> bool:
+def one_of_the(clause: Clause, mention: Mention) -> bool:
     """'a ladder against one of the pear trees': one of a field's own plants or rows."""
     head = min(h.start for h in mention.heads)
     before = [i for i in clause.items if i.end <= head]
@@ -686,7 +696,7 @@ def _one_of_the(clause: Clause, mention: Mention) -> bool:
         len(before) >= 3
         and before[-3].norm == "one"
         and before[-2].role == "of"
-        and before[-1].norm in _definite_words()
+        and before[-1].norm in definite_words()
     )
 
 
@@ -899,226 +909,8 @@ def drop_negated(clauses: Sequence[Clause]) -> list[str]:
     return dropped
 
 
-def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
-    """Mentions that describe plants of a named field are attributes, not new fields.
-
-    ", fruit ripe" after named fields, "half the vines show mildew, a riesling
-    vineyard", "three orchards, each with a different fruit": a clause whose only
-    mention is made of descriptive words (``descriptive_heads``: fruit, plants,
-    vines, leaves...) becomes head-less, so its words go to the field(s) it
-    describes (before it, or the next one when it opens the prompt). It stays a
-    field with its own count, size or rows, as a member of a list ("apples and
-    fruit trees"), or when no other field is named. "each with a different
-    fruit" makes the fields before it different crops. Returns what was dissolved.
-    """
-    words = _descriptive_words()
-    dissolved: list[str] = []
-    for clause in clauses:
-        dissolved.extend(_dissolve_described_after_of(clause, words))
-    for position, clause in enumerate(clauses):
-        if len(clause.mentions) != 1:
-            continue
-        others_before = any(c.mentions for c in clauses[:position])
-        others_after = any(c.mentions for c in clauses[position + 1 :])
-        if not others_before and not (position == 0 and others_after):
-            continue
-        mention = clause.mentions[0]
-        definite = _definite_before_head(clause, mention)  # "in the fruit", "the vines"
-        following = clauses[position + 1] if position + 1 < len(clauses) else None
-        listed = (
-            clause.link is not None
-            and clause.link.role == "conjunction"
-            and bool(clauses[position - 1].mentions)
-        ) or (  # "a mix of fruit and vegetables": the first member of a list
-            following is not None
-            and following.link is not None
-            and following.link.role == "conjunction"
-            and bool(following.mentions)
-        )
-        # "half the vines" (not "half fruit", a share of the fields)
-        fraction = definite and any(i.role == "fraction" for i in mention.items)
-        own_size = any(i.role in ("size", "geometry") for i in mention.items)
-        described = any(
-            i.role in ("stage", "health", "cue", "season", "month")
-            or "cue" in i.data
-            or "described" in i.data  # "plants about three metres tall"
-            for i in mention.items
-        )
-        # "a few plants have fallen over": a verb says what the plants do or look like
-        predicate = _predicate(clause, mention)
-        # "one plant has wilted leaves": one plant described, not a field of one;
-        # "a ladder leaning against one tree": one plant of the fields named
-        one_described = mention.count == 1 and (
-            described
-            or (
-                others_before
-                and not mention.has_crop
-                and all(h.role == "plot" and h.data["value"]["individual"] for h in mention.heads)
-            )
-        )
-        # "the Navel block ..., full of orange fruit": the named crop's own fruit;
-        # "a wheelbarrow full of split fruit": what the scenery holds
-        own_fruit = (
-            _fruit_of_named_crop(mention, clauses[:position])
-            or _part_of_named_crop(mention, clauses[:position])
-            or _held_by_scenery(clause, mention)
-            or (others_before and _bare_part_after_with(clause, mention))
-        )
-        if own_fruit:
-            listed, described = False, True
-        elif listed and _continues_with(clauses[position - 1], mention):
-            # "apples with scab spots on the leaves and corky fruit": still the apples'
-            listed, described = False, True
-        if (
-            not (own_fruit or all(h.norm in words for h in mention.heads))
-            or (
-                mention.count is not None
-                and not (definite or fraction or one_described or predicate)
-            )
-            or (mention.quantity is not None and not (definite or predicate))  # "a lot of"
-            or mention.other
-            or own_size
-            or (listed and not (definite or predicate))
-            or not (
-                described or definite or fraction or mention.distinct or predicate or one_described
-            )
-        ):
-            continue
-        if mention.distinct:
-            for earlier in (m for c in clauses[:position] for m in c.mentions):
-                earlier.distinct = True
-                earlier.distinct_crops = True
-                # "Five plots ..., each with a different vegetable"
-                if (
-                    mention.category is not None
-                    and earlier.category is None
-                    and not (earlier.has_crop)
-                ):
-                    earlier.category = mention.category
-        crops = strong_crops(mention)
-        for head in mention.heads:
-            head.role = "filler"
-            if crops:
-                head.data["describes"] = crops  # "Half the vines show mildew": the grapes
-        clause.loose = [*clause.loose, *(i for i in mention.items if i.role != "distinct")]
-        clause.mentions = []
-        dissolved.append(mention.text)
-    return dissolved
-
-
-def _fruit_of_named_crop(mention: Mention, before: Sequence[Clause]) -> bool:
-    """ "full of orange fruit" after an orange block: a crop word before a word for the
-    fruit, naming no variety, is the colour or fruit of a crop already named."""
-    parts = _plant_part_words()
-    if (
-        mention.count is not None
-        or not any(h.norm in parts for h in mention.heads)
-        or _names_variety(mention)
-    ):
-        return False
-    crops = strong_crops(mention)
-    named = {c for clause in before for m in clause.mentions for c in strong_crops(m)}
-    return bool(crops) and crops <= named
-
-
-def _part_of_named_crop(mention: Mention, before: Sequence[Clause]) -> bool:
-    """ "the first hands of bananas just forming" after a Cavendish plantation: a part of
-    the plants ("hands of", "bunches of") of a crop already named, naming no variety."""
-    if mention.count is not None or _names_variety(mention) or not mention.heads:
-        return False
-    first = min(h.start for h in mention.heads)
-    said = [i for i in mention.items if i.start < first]
-    if len(said) < 2 or said[-1].role != "of" or said[-2].norm not in _plant_part_words():
-        return False
-    crops = strong_crops(mention)
-    named = {c for clause in before for m in clause.mentions for c in strong_crops(m)}
-    return bool(crops) and crops <= named
-
-
-def _bare_part_after_with(clause: Clause, mention: Mention) -> bool:
-    """ "branches bent with fruit", "heavy with berries": a bare word for the fruit (no
-    crop, no count) after "with" or "of", once a field is named, is that field's fruit."""
-    if mention.count is not None or strong_crops(mention):
-        return False
-    if not all(h.norm in _plant_part_words() for h in mention.heads):
-        return False
-    if any(i.role == "plot" for i in clause.items):
-        return False  # "a plot full of fruit" asks for a field of fruit
-    head = min(h.start for h in mention.heads)
-    before = [i for i in clause.items if i.end <= head]
-    return bool(before) and before[-1].role == "of"
-
-
-def _held_by_scenery(clause: Clause, mention: Mention) -> bool:
-    """ "a wheelbarrow full of split fruit", "crates of apples": plants or fruit that a
-    piece of scenery holds (the words before them: the scenery, "of", describing words)."""
-    if mention.count is not None or not all(h.norm in _descriptive_words() for h in mention.heads):
-        return False
-    head = min(h.start for h in mention.heads)
-    before = [i for i in clause.items if i.end <= head]
-    while before and before[-1].role in ("unknown", "filler") and "scenery" not in before[-1].data:
-        before.pop()  # "split", "ripe-looking"
-    return len(before) >= 2 and before[-1].role == "of" and "scenery" in before[-2].data
-
-
-def _continues_with(previous: Clause, mention: Mention) -> bool:
-    """Whether ``mention`` (only words for fruit) goes on a "with ..." list of the field
-    named in the clause before it: "apples with scab on the leaves and corky fruit"."""
-    if not previous.mentions or not all(h.norm in _plant_part_words() for h in mention.heads):
-        return False
-    owner = previous.mentions[-1]
-    last_head = max(h.start for h in owner.heads)
-    after = [i for i in owner.items if i.start > last_head]
-    return (
-        bool(after)
-        and after[0].role == "of"
-        and all(i.role in ("of", "health", "cue", "stage", "filler", "unknown") for i in after)
-    )
-
-
 @functools.lru_cache(maxsize=1)
-def _plant_part_words() -> frozenset[str]:
-    return frozenset(str(word) for word in vocabulary()["plant_part_words"])
-
-
-def _dissolve_described_after_of(clause: Clause, words: frozenset[str]) -> list[str]:
-    """ "the tomatoes in front of the house with the last fruit ripening": plant words
-    after "with" describe the field just named in the same clause."""
-    dissolved: list[str] = []
-    for index in range(len(clause.mentions) - 1, 0, -1):
-        mention, owner = clause.mentions[index], clause.mentions[index - 1]
-        if (
-            not owner.items
-            or owner.items[-1].role != "of"
-            or not all(h.norm in words for h in mention.heads)
-            or mention.count is not None
-            or mention.quantity is not None
-            or mention.other
-            or any(i.role in ("size", "geometry") for i in mention.items)
-        ):
-            continue
-        for head in mention.heads:
-            head.role = "filler"
-        owner.items.extend(mention.items)
-        del clause.mentions[index]
-        dissolved.append(mention.text)
-    return dissolved
-
-
-def _predicate(clause: Clause, mention: Mention) -> bool:
-    """Whether a describing verb follows the mention's head in its clause."""
-    head = max(h.end for h in mention.heads)
-    verbs = _describing_verbs()
-    return any(i.start >= head and i.norm in verbs for i in clause.items)
-
-
-@functools.lru_cache(maxsize=1)
-def _describing_verbs() -> frozenset[str]:
-    return frozenset(str(word) for word in vocabulary()["describing_verbs"])
-
-
-@functools.lru_cache(maxsize=1)
-def _descriptive_words() -> frozenset[str]:
+def descriptive_words() -> frozenset[str]:
     vocab = vocabulary()
     return frozenset(
         str(word) for word in (*vocab["plant_part_words"], *vocab["descriptive_heads"])
@@ -1126,205 +918,18 @@ def _descriptive_words() -> frozenset[str]:
 
 
 @functools.lru_cache(maxsize=1)
-def _definite_words() -> frozenset[str]:
+def definite_words() -> frozenset[str]:
     return frozenset(str(word) for word in vocabulary()["definite_words"])
 
 
-def _definite_before_head(clause: Clause, mention: Mention) -> bool:
+def definite_before_head(clause: Clause, mention: Mention) -> bool:
     """Whether the word right before the mention's first head is "the", "its"..."""
     head = min(mention.heads, key=lambda h: h.start)
     before = [i for i in clause.items if i.end <= head.start]
-    return bool(before) and before[-1].norm in _definite_words()
+    return bool(before) and before[-1].norm in definite_words()
 
 
-def _compatible(builder: MentionBuilder, target: Mention, mention: Mention) -> bool:
-    if target.refinements or target.rest is not None:
-        return False
-    heads = [h for h in mention.heads if h.role in ("head", "plot")]
-    return bool(heads) and all(builder.compatible(target, head) for head in heads)
-
-
-def merge_coreferences(
-    clauses: Sequence[Clause], mentions: Sequence[Mention], builder: MentionBuilder
-) -> list[Mention]:
-    """Merge mentions that point back at fields already named; return the fields left."""
-    definite = _definite_words()
-    clause_of = {id(m): c for c in clauses for m in c.mentions}
-    kept: list[Mention] = []
-    merged: set[int] = set()  # clauses whose mention was a field named again
-    for mention in mentions:
-        clause = clause_of.get(id(mention))
-        first = _first_word(mention)
-        if clause is None or not kept or clause.mentions[0] is not mention:
-            if first is not None and first.norm == "both" and mention.count is None:
-                mention.count = 2  # "Both cereal fields beside the dryer": two, named now
-            kept.append(mention)
-            continue
-        # "the carrots ...", "fire blight on the pears", "the Roma one"; "one big field
-        # of it" (of the crop just named)
-        is_definite = (
-            (first is not None and first.norm in definite)
-            or _definite_before_head(clause, mention)
-            or _of_it(mention)
-        )
-        if (
-            is_definite
-            and mention.count == 1
-            and (_pronoun_one(mention) or _one_of_the(clause, mention) or _of_it(mention))
-        ):
-            mention.count = None
-        bare = clause.link is not None and (
-            clause.link.role == "separator"
-            # "; cabbage and potato rows 75 cm apart": a list of fields named again
-            or (clause.link.role == "conjunction" and clause.index - 1 in merged)
-        )
-        summary = _is_summary(mention) or (
-            # "the peppers between the two tomato strips": fields of a crop named before
-            is_definite
-            and (mention.count or 1) >= 2
-            and mention.has_crop
-            and not _names_variety(mention)
-        )
-        # "imperator and danvers carrots, ..., imperator north of danvers": a variety
-        # named again without an article is the field already named.
-        # "plots: a Valencia block ... and a Hamlin block, ..., Valencia east of Hamlin":
-        # also a listed member named again
-        repeated = [
-            m
-            for k in reversed(kept)
-            for m in (k.refinements[::-1] or [k])
-            if m is not mention and _same_variety(m, mention)
-        ]
-        if repeated and _related_to(clauses, clause, repeated[0]):
-            repeated = []  # "Valencia oranges next to Valencia oranges": two fields
-        if (
-            not repeated
-            and clause.index - 1 in merged
-            and clause.link is not None
-            and clause.link.role in ("relation", "between")
-            and mention.count is None
-            and (own_crops := strong_crops(mention))
-        ):
-            # "...; maize north of potatoes": a field named again, placed against another
-            # named again
-            repeated = [
-                k
-                for k in reversed(kept)
-                if strong_crops(k) == own_crops and k.count is None and not k.refinements
-            ][:1]
-        anaphoric = (
-            (mention.count is None or summary)
-            # "jonagored apples AND fuji apples, 2 separate blocks": still those two
-            and (not mention.distinct or summary)
-            and not mention.other
-            and not mention.refinements
-            and (is_definite or bare or bool(repeated))
-            and not _another_field(clauses, clause, mention)
-        )
-        if not anaphoric:
-            if first is not None and first.norm == "both" and mention.count is None:
-                mention.count = 2  # "Both cereal fields beside the dryer": two, named now
-            kept.append(mention)
-            continue
-        run: list[Mention] = []
-        own = strong_crops(mention)
-        # "two pear blocks: Comice, ... and Durondeau, east of the Comice": the member
-        # that variety named, not the plural mention listing it
-        member = next(
-            (
-                sub
-                for m in reversed(kept)
-                for sub in m.refinements
-                if sub is not mention and _same_variety(sub, mention)
-            ),
-            None,
-        )
-        for earlier in [] if member is not None else reversed(kept):
-            if not _compatible(builder, earlier, mention):
-                break
-            if own and strong_crops(earlier) and not own & strong_crops(earlier):
-                break  # "cherries" is the cherry orchard, not the cherry tomatoes
-            run.append(earlier)
-        if member is not None:
-            run = [member]
-        if summary and is_definite and len(run) != mention.count:
-            # "a strip of Jalapeños between the two groves": the two earlier fields that
-            # are groves, whatever was named in between
-            fitting = [m for m in reversed(kept) if _compatible(builder, m, mention)]
-            if len(fitting) != mention.count:
-                # "plots: Big Mike and Lady Finger, ..., the two plots adjacent": the members
-                fitting = [
-                    r
-                    for m in reversed(kept)
-                    for r in {id(x): x for x in m.refinements[::-1]}.values()
-                    if _compatible(builder, r, mention)
-                ]
-            if len(fitting) == mention.count:
-                run = fitting
-        if summary and len(run) != mention.count:
-            kept.append(mention)
-            continue
-        names_variety = _names_variety(mention)
-        if names_variety:
-            run = [m for m in repeated if _compatible(builder, m, mention)][:1] or run[:1]
-        if not run and (is_definite or bare):
-            # "three fields: potatoes, carrots and onions ..., the carrots have blight";
-            # "pear trees and apple trees ..., pears to the west": a crop named again
-            # after a comma is the one earlier field it can be (if only one can).
-            members = [r for m in reversed(kept) for r in (m.refinements[::-1] or [m])]
-            candidates = [m for m in members if _compatible(builder, m, mention)]
-            if first is not None and first.norm in _EACH and len(candidates) > 1:
-                # "two potato blocks, Bintje ... and Agria ... . Both blocks 36 rows":
-                # every member the list named
-                run = candidates
-            elif is_definite or len(candidates) == 1:
-                run = candidates[:1]
-            elif bare and len(candidates) == len(members) and not names_variety:
-                # "two vineyard blocks: Chardonnay and Riesling. October, grapes ripe":
-                # the crop every field named is, said again, describes them all.
-                run = candidates
-        if not run:
-            kept.append(mention)
-            continue
-        merged.add(clause.index)
-        attributes = [i for i in mention.items if i not in mention.heads]
-        for target in run:
-            target.items.extend(attributes)
-            if len(run) == 1:
-                for head in mention.heads:
-                    if head.role in ("head", "plot"):
-                        builder.add_head(target, head)
-        if len(run) == 1:
-            # The field stands where it was named again, so relation words around
-            # this clause ("the Gala north of the Fuji") link the right fields.
-            clause.mentions[clause.mentions.index(mention)] = run[0]
-        elif summary and is_definite and clause.link is not None and clause.link.role == "between":
-            # "between the two groves": both fields stand there, in the order named
-            at = clause.mentions.index(mention)
-            clause.mentions[at : at + 1] = sorted(run, key=lambda m: m.clause)
-        else:
-            clause.mentions.remove(mention)
-    return kept
-
-
-def _of_it(mention: Mention) -> bool:
-    """'one big field of it': a plot word whose crop is "it" or "them", named before."""
-    if mention.has_crop or not any(h.role == "plot" for h in mention.heads):
-        return False
-    norms = [i.norm for i in mention.items]
-    return any(a == "of" and b in ("it", "them") for a, b in itertools.pairwise(norms))
-
-
-def _related_to(clauses: Sequence[Clause], clause: Clause, earlier: Mention) -> bool:
-    """Whether ``clause`` opens with a relation word right after ``earlier``."""
-    link = clause.link
-    if link is None or link.role not in ("relation", "between", "trailer"):
-        return False
-    before = [m for c in clauses[: clause.index] for m in c.mentions]
-    return bool(before) and before[-1] is earlier
-
-
-def _same_variety(earlier: Mention, mention: Mention) -> bool:
+def same_variety(earlier: Mention, mention: Mention) -> bool:
     """Both name the same variety outright (not a weak reading) and ``mention`` no count."""
     if mention.count is not None:
         return False
@@ -1333,176 +938,3 @@ def _same_variety(earlier: Mention, mention: Mention) -> bool:
         return {(c, v) for c, v, weak in m.interpretations or () if v is not None and not weak}
 
     return bool(named(mention)) and named(mention) <= named(earlier)
-
-
-def _is_summary(mention: Mention) -> bool:
-    """'..., three fields', '..., two orchards': a count of plots restating the fields just
-    listed (a plot noun that narrows must fit them: the coreference check sees to it)."""
-    return (
-        (mention.count or 1) >= 2
-        and mention.interpretations is None
-        and all(h.role == "plot" for h in mention.heads)
-        and (mention.category is None or all(h.data["value"]["narrows"] for h in mention.heads))
-    )
-
-
-def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
-    """'chillies, a 15 by 30 m patch, and ...': a plot said right after a crop, between
-    commas and naming no crop of its own, is that crop's plot, not another field.
-
-    "Romaine, Iceberg and Lollo Rosso, each a 10 m x 20 m plot", "... Each plot 15 m
-    wide and 40 m long": a plot of each, with a size, gives that size to every field
-    named before it that states none."""
-    kept: list[Mention] = []
-    for mention in mentions:
-        sizes = [i for i in mention.items if i.role in ("size", "side", "dimension_joiner")]
-        if (
-            len(kept) >= 2
-            and not mention.has_crop
-            and mention.category is None
-            and mention.plot is not None
-            and not mention.refinements
-            and any(i.role == "size" for i in sizes)
-            and any(i.norm in ("each", "every") for i in mention.items if i.role == "all")
-        ):
-            for earlier in kept:
-                if not any(i.role == "size" for i in earlier.items):
-                    earlier.items.extend(sizes)
-            clause = clauses[mention.clause] if mention.clause < len(clauses) else None
-            if clause is not None:
-                clause.mentions = [m for m in clause.mentions if m is not mention]
-            continue
-        clause = clauses[mention.clause] if mention.clause < len(clauses) else None
-        previous = kept[-1] if kept else None
-        if (
-            clause is not None
-            and previous is not None
-            and previous.has_crop
-            and (previous.count or 1) == 1
-            and not mention.has_crop
-            and mention.plot is not None
-            and (mention.count or 1) == 1
-            and not mention.refinements
-            and clause.link is not None
-            and clause.link.norm == ","
-            and previous.clause == mention.clause - 1
-            and all(i.role in ("number", "size", "plot", "filler") for i in clause.items)
-            and any(i.role == "size" for i in clause.items)
-        ):
-            previous.items.extend(i for i in mention.items if i.role == "size")
-            if previous.plot is None:
-                previous.plot = mention.plot
-            clause.mentions = [m for m in clause.mentions if m is not mention]
-            continue
-        kept.append(mention)
-    return kept
-
-
-def _heads_its_list(mention: Mention, later: Sequence[Mention]) -> bool:
-    crops = strong_crops(mention)
-    return (
-        bool(crops)
-        and not _names_variety(mention)
-        and len(later) >= 2
-        and all(strong_crops(m) and strong_crops(m) <= crops for m in later[:2])
-    )
-
-
-def drop_list_headings(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
-    """ "My allotment in one picture: a strawberry bed, a patch of sweetcorn": one plot
-    naming no crop, ending its clause before a colon that lists two or more fields of
-    named crops, is the list's heading, not another field. Return the fields left."""
-    kept: list[Mention] = []
-    for position, mention in enumerate(mentions):
-        # the colon may come after words naming no field ("..., July:")
-        following = next(
-            (
-                c
-                for c in clauses[mention.clause + 1 :]
-                if c.mentions or (c.link is not None and c.link.norm == ":")
-            ),
-            None,
-        )
-        later = [m for m in mentions[position + 1 :] if m.has_crop or m.category is not None]
-        if (
-            following is not None
-            and following.link is not None
-            and following.link.norm == ":"
-            and clauses[mention.clause].mentions[-1:] == [mention]
-            and (
-                (mention.plot is not None and not mention.has_crop and mention.category is None)
-                # "Citrus test site in Chile, July: a blood orange block next to a Valencia
-                # block": a crop heading the fields of that crop it lists
-                or _heads_its_list(mention, later)
-            )
-            and (mention.count or 1) == 1
-            and not mention.refinements
-            and mention.rest is None
-            # "my allotment: three different veg patches": two or more fields listed
-            and sum(m.count or 1 for m in later) >= 2
-            and later[0].clause >= following.index
-        ):
-            clauses[mention.clause].mentions = []
-            continue
-        if _heads_counted_plots(clauses, mention) or _heads_fitting_list(clauses, mention, later):
-            clauses[mention.clause].mentions = []
-            continue
-        kept.append(mention)
-    return kept
-
-
-def _heads_fitting_list(
-    clauses: Sequence[Clause], mention: Mention, later: Sequence[Mention]
-) -> bool:
-    """'vineyard in NZ, cabernet on one block n chardonnay on the other': a plot word
-    naming no crop, then (after a comma) two or more fields of crops only it holds."""
-    if (
-        mention.plot is None
-        or mention.has_crop
-        or mention.count not in (None, 1)
-        or mention.refinements
-        or mention.clause + 1 >= len(clauses)
-        or clauses[mention.clause].mentions[-1:] != [mention]
-    ):
-        return False
-    following = clauses[mention.clause + 1]
-    options = set(mention.plot["options"])
-    members = [m for m in later if m.clause > mention.clause][:2]
-    return (
-        following.link is not None
-        and following.link.norm == ","
-        and bool(following.mentions)
-        and bool(options)
-        and len(members) == 2
-        and all(strong_crops(m) and strong_crops(m) <= options for m in members)
-    )
-
-
-def _heads_counted_plots(clauses: Sequence[Clause], mention: Mention) -> bool:
-    """'Pruning-robot vineyard, two blocks: Chardonnay, ..., Cabernet', 'Lettuce trial ...,
-    three plots from north to south: Cos, crisphead, Lollo Rosso': a plot word or a crop
-    right before a count of plots that lists members it can hold is their heading."""
-    heading_crop = mention.has_crop and not _names_variety(mention)
-    if (
-        (mention.plot is None and not heading_crop)
-        or (mention.has_crop and not heading_crop)
-        or (mention.count or 1) != 1
-        or mention.refinements
-        or mention.clause + 1 >= len(clauses)
-        or clauses[mention.clause].mentions[-1:] != [mention]
-    ):
-        return False
-    following = clauses[mention.clause + 1]
-    if following.link is None or following.link.norm != "," or len(following.mentions) != 1:
-        return False
-    plots = following.mentions[0]
-    plot = mention.plot
-    options = strong_crops(mention) if heading_crop or plot is None else set(plot["options"])
-    members = {id(r): r for r in plots.refinements}.values()
-    return (
-        not plots.has_crop
-        and (plots.count or 0) >= 2
-        and len(members) >= 2
-        and bool(options)
-        and all(strong_crops(r) and strong_crops(r) <= options for r in members)
-    )

@@ -1,0 +1,389 @@
+"""Mentions that point back at fields already named, and plot words that are not fields.
+
+- :func:`merge_coreferences`: "the carrots ...", "fire blight on the pears", "imperator
+  north of danvers" add to the field already named instead of asking for a new one;
+- :func:`merge_appositive_plots`: "Gala, a 2 ha block" is one field;
+- :func:`drop_list_headings`: "three plots: wheat, maize and potatoes" names the plots
+  by the list after it.
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Sequence
+
+from agrirecipe.resolve._decompose import Clause, Mention, MentionBuilder
+from agrirecipe.resolve._structure import (
+    EACH,
+    another_field,
+    definite_before_head,
+    definite_words,
+    first_word,
+    names_a_variety,
+    one_of_the,
+    pronoun_one,
+    same_variety,
+    strong_crops,
+)
+
+__all__ = ["drop_list_headings", "merge_appositive_plots", "merge_coreferences"]
+
+
+def _compatible(builder: MentionBuilder, target: Mention, mention: Mention) -> bool:
+    if target.refinements or target.rest is not None:
+        return False
+    heads = [h for h in mention.heads if h.role in ("head", "plot")]
+    return bool(heads) and all(builder.compatible(target, head) for head in heads)
+
+
+def merge_coreferences(
+    clauses: Sequence[Clause], mentions: Sequence[Mention], builder: MentionBuilder
+) -> list[Mention]:
+    """Merge mentions that point back at fields already named; return the fields left."""
+    definite = definite_words()
+    clause_of = {id(m): c for c in clauses for m in c.mentions}
+    kept: list[Mention] = []
+    merged: set[int] = set()  # clauses whose mention was a field named again
+    for mention in mentions:
+        clause = clause_of.get(id(mention))
+        first = first_word(mention)
+        if clause is None or not kept or clause.mentions[0] is not mention:
+            if first is not None and first.norm == "both" and mention.count is None:
+                mention.count = 2  # "Both cereal fields beside the dryer": two, named now
+            kept.append(mention)
+            continue
+        # "the carrots ...", "fire blight on the pears", "the Roma one"; "one big field
+        # of it" (of the crop just named)
+        is_definite = (
+            (first is not None and first.norm in definite)
+            or definite_before_head(clause, mention)
+            or _of_it(mention)
+        )
+        if (
+            is_definite
+            and mention.count == 1
+            and (pronoun_one(mention) or one_of_the(clause, mention) or _of_it(mention))
+        ):
+            mention.count = None
+        bare = clause.link is not None and (
+            clause.link.role == "separator"
+            # "; cabbage and potato rows 75 cm apart": a list of fields named again
+            or (clause.link.role == "conjunction" and clause.index - 1 in merged)
+        )
+        summary = _is_summary(mention) or (
+            # "the peppers between the two tomato strips": fields of a crop named before
+            is_definite
+            and (mention.count or 1) >= 2
+            and mention.has_crop
+            and not names_a_variety(mention)
+        )
+        # "imperator and danvers carrots, ..., imperator north of danvers": a variety
+        # named again without an article is the field already named.
+        # "plots: a Valencia block ... and a Hamlin block, ..., Valencia east of Hamlin":
+        # also a listed member named again
+        repeated = [
+            m
+            for k in reversed(kept)
+            for m in (k.refinements[::-1] or [k])
+            if m is not mention and same_variety(m, mention)
+        ]
+        if repeated and _related_to(clauses, clause, repeated[0]):
+            repeated = []  # "Valencia oranges next to Valencia oranges": two fields
+        if (
+            not repeated
+            and clause.index - 1 in merged
+            and clause.link is not None
+            and clause.link.role in ("relation", "between")
+            and mention.count is None
+            and (own_crops := strong_crops(mention))
+        ):
+            # "...; maize north of potatoes": a field named again, placed against another
+            # named again
+            repeated = [
+                k
+                for k in reversed(kept)
+                if strong_crops(k) == own_crops and k.count is None and not k.refinements
+            ][:1]
+        anaphoric = (
+            (mention.count is None or summary)
+            # "jonagored apples AND fuji apples, 2 separate blocks": still those two
+            and (not mention.distinct or summary)
+            and not mention.other
+            and not mention.refinements
+            and (is_definite or bare or bool(repeated))
+            and not another_field(clauses, clause, mention)
+        )
+        if not anaphoric:
+            if first is not None and first.norm == "both" and mention.count is None:
+                mention.count = 2  # "Both cereal fields beside the dryer": two, named now
+            kept.append(mention)
+            continue
+        run: list[Mention] = []
+        own = strong_crops(mention)
+        # "two pear blocks: Comice, ... and Durondeau, east of the Comice": the member
+        # that variety named, not the plural mention listing it
+        member = next(
+            (
+                sub
+                for m in reversed(kept)
+                for sub in m.refinements
+                if sub is not mention and same_variety(sub, mention)
+            ),
+            None,
+        )
+        for earlier in [] if member is not None else reversed(kept):
+            if not _compatible(builder, earlier, mention):
+                break
+            if own and strong_crops(earlier) and not own & strong_crops(earlier):
+                break  # "cherries" is the cherry orchard, not the cherry tomatoes
+            run.append(earlier)
+        if member is not None:
+            run = [member]
+        if summary and is_definite and len(run) != mention.count:
+            # "a strip of Jalapeños between the two groves": the two earlier fields that
+            # are groves, whatever was named in between
+            fitting = [m for m in reversed(kept) if _compatible(builder, m, mention)]
+            if len(fitting) != mention.count:
+                # "plots: Big Mike and Lady Finger, ..., the two plots adjacent": the members
+                fitting = [
+                    r
+                    for m in reversed(kept)
+                    for r in {id(x): x for x in m.refinements[::-1]}.values()
+                    if _compatible(builder, r, mention)
+                ]
+            if len(fitting) == mention.count:
+                run = fitting
+        if summary and len(run) != mention.count:
+            kept.append(mention)
+            continue
+        names_variety = names_a_variety(mention)
+        if names_variety:
+            run = [m for m in repeated if _compatible(builder, m, mention)][:1] or run[:1]
+        if not run and (is_definite or bare):
+            # "three fields: potatoes, carrots and onions ..., the carrots have blight";
+            # "pear trees and apple trees ..., pears to the west": a crop named again
+            # after a comma is the one earlier field it can be (if only one can).
+            members = [r for m in reversed(kept) for r in (m.refinements[::-1] or [m])]
+            candidates = [m for m in members if _compatible(builder, m, mention)]
+            if first is not None and first.norm in EACH and len(candidates) > 1:
+                # "two potato blocks, Bintje ... and Agria ... . Both blocks 36 rows":
+                # every member the list named
+                run = candidates
+            elif is_definite or len(candidates) == 1:
+                run = candidates[:1]
+            elif bare and len(candidates) == len(members) and not names_variety:
+                # "two vineyard blocks: Chardonnay and Riesling. October, grapes ripe":
+                # the crop every field named is, said again, describes them all.
+                run = candidates
+        if not run:
+            kept.append(mention)
+            continue
+        merged.add(clause.index)
+        attributes = [i for i in mention.items if i not in mention.heads]
+        for target in run:
+            target.items.extend(attributes)
+            if len(run) == 1:
+                for head in mention.heads:
+                    if head.role in ("head", "plot"):
+                        builder.add_head(target, head)
+        if len(run) == 1:
+            # The field stands where it was named again, so relation words around
+            # this clause ("the Gala north of the Fuji") link the right fields.
+            clause.mentions[clause.mentions.index(mention)] = run[0]
+        elif summary and is_definite and clause.link is not None and clause.link.role == "between":
+            # "between the two groves": both fields stand there, in the order named
+            at = clause.mentions.index(mention)
+            clause.mentions[at : at + 1] = sorted(run, key=lambda m: m.clause)
+        else:
+            clause.mentions.remove(mention)
+    return kept
+
+
+def _of_it(mention: Mention) -> bool:
+    """'one big field of it': a plot word whose crop is "it" or "them", named before."""
+    if mention.has_crop or not any(h.role == "plot" for h in mention.heads):
+        return False
+    norms = [i.norm for i in mention.items]
+    return any(a == "of" and b in ("it", "them") for a, b in itertools.pairwise(norms))
+
+
+def _related_to(clauses: Sequence[Clause], clause: Clause, earlier: Mention) -> bool:
+    """Whether ``clause`` opens with a relation word right after ``earlier``."""
+    link = clause.link
+    if link is None or link.role not in ("relation", "between", "trailer"):
+        return False
+    before = [m for c in clauses[: clause.index] for m in c.mentions]
+    return bool(before) and before[-1] is earlier
+
+
+def _is_summary(mention: Mention) -> bool:
+    """'..., three fields', '..., two orchards': a count of plots restating the fields just
+    listed (a plot noun that narrows must fit them: the coreference check sees to it)."""
+    return (
+        (mention.count or 1) >= 2
+        and mention.interpretations is None
+        and all(h.role == "plot" for h in mention.heads)
+        and (mention.category is None or all(h.data["value"]["narrows"] for h in mention.heads))
+    )
+
+
+def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
+    """'chillies, a 15 by 30 m patch, and ...': a plot said right after a crop, between
+    commas and naming no crop of its own, is that crop's plot, not another field.
+
+    "Romaine, Iceberg and Lollo Rosso, each a 10 m x 20 m plot", "... Each plot 15 m
+    wide and 40 m long": a plot of each, with a size, gives that size to every field
+    named before it that states none."""
+    kept: list[Mention] = []
+    for mention in mentions:
+        sizes = [i for i in mention.items if i.role in ("size", "side", "dimension_joiner")]
+        if (
+            len(kept) >= 2
+            and not mention.has_crop
+            and mention.category is None
+            and mention.plot is not None
+            and not mention.refinements
+            and any(i.role == "size" for i in sizes)
+            and any(i.norm in ("each", "every") for i in mention.items if i.role == "all")
+        ):
+            for earlier in kept:
+                if not any(i.role == "size" for i in earlier.items):
+                    earlier.items.extend(sizes)
+            clause = clauses[mention.clause] if mention.clause < len(clauses) else None
+            if clause is not None:
+                clause.mentions = [m for m in clause.mentions if m is not mention]
+            continue
+        clause = clauses[mention.clause] if mention.clause < len(clauses) else None
+        previous = kept[-1] if kept else None
+        if (
+            clause is not None
+            and previous is not None
+            and previous.has_crop
+            and (previous.count or 1) == 1
+            and not mention.has_crop
+            and mention.plot is not None
+            and (mention.count or 1) == 1
+            and not mention.refinements
+            and clause.link is not None
+            and clause.link.norm == ","
+            and previous.clause == mention.clause - 1
+            and all(i.role in ("number", "size", "plot", "filler") for i in clause.items)
+            and any(i.role == "size" for i in clause.items)
+        ):
+            previous.items.extend(i for i in mention.items if i.role == "size")
+            if previous.plot is None:
+                previous.plot = mention.plot
+            clause.mentions = [m for m in clause.mentions if m is not mention]
+            continue
+        kept.append(mention)
+    return kept
+
+
+def _heads_its_list(mention: Mention, later: Sequence[Mention]) -> bool:
+    crops = strong_crops(mention)
+    return (
+        bool(crops)
+        and not names_a_variety(mention)
+        and len(later) >= 2
+        and all(strong_crops(m) and strong_crops(m) <= crops for m in later[:2])
+    )
+
+
+def drop_list_headings(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
+    """ "My allotment in one picture: a strawberry bed, a patch of sweetcorn": one plot
+    naming no crop, ending its clause before a colon that lists two or more fields of
+    named crops, is the list's heading, not another field. Return the fields left."""
+    kept: list[Mention] = []
+    for position, mention in enumerate(mentions):
+        # the colon may come after words naming no field ("..., July:")
+        following = next(
+            (
+                c
+                for c in clauses[mention.clause + 1 :]
+                if c.mentions or (c.link is not None and c.link.norm == ":")
+            ),
+            None,
+        )
+        later = [m for m in mentions[position + 1 :] if m.has_crop or m.category is not None]
+        if (
+            following is not None
+            and following.link is not None
+            and following.link.norm == ":"
+            and clauses[mention.clause].mentions[-1:] == [mention]
+            and (
+                (mention.plot is not None and not mention.has_crop and mention.category is None)
+                # "Citrus test site in Chile, July: a blood orange block next to a Valencia
+                # block": a crop heading the fields of that crop it lists
+                or _heads_its_list(mention, later)
+            )
+            and (mention.count or 1) == 1
+            and not mention.refinements
+            and mention.rest is None
+            # "my allotment: three different veg patches": two or more fields listed
+            and sum(m.count or 1 for m in later) >= 2
+            and later[0].clause >= following.index
+        ):
+            clauses[mention.clause].mentions = []
+            continue
+        if _heads_counted_plots(clauses, mention) or _heads_fitting_list(clauses, mention, later):
+            clauses[mention.clause].mentions = []
+            continue
+        kept.append(mention)
+    return kept
+
+
+def _heads_fitting_list(
+    clauses: Sequence[Clause], mention: Mention, later: Sequence[Mention]
+) -> bool:
+    """'vineyard in NZ, cabernet on one block n chardonnay on the other': a plot word
+    naming no crop, then (after a comma) two or more fields of crops only it holds."""
+    if (
+        mention.plot is None
+        or mention.has_crop
+        or mention.count not in (None, 1)
+        or mention.refinements
+        or mention.clause + 1 >= len(clauses)
+        or clauses[mention.clause].mentions[-1:] != [mention]
+    ):
+        return False
+    following = clauses[mention.clause + 1]
+    options = set(mention.plot["options"])
+    members = [m for m in later if m.clause > mention.clause][:2]
+    return (
+        following.link is not None
+        and following.link.norm == ","
+        and bool(following.mentions)
+        and bool(options)
+        and len(members) == 2
+        and all(strong_crops(m) and strong_crops(m) <= options for m in members)
+    )
+
+
+def _heads_counted_plots(clauses: Sequence[Clause], mention: Mention) -> bool:
+    """'Pruning-robot vineyard, two blocks: Chardonnay, ..., Cabernet', 'Lettuce trial ...,
+    three plots from north to south: Cos, crisphead, Lollo Rosso': a plot word or a crop
+    right before a count of plots that lists members it can hold is their heading."""
+    heading_crop = mention.has_crop and not names_a_variety(mention)
+    if (
+        (mention.plot is None and not heading_crop)
+        or (mention.has_crop and not heading_crop)
+        or (mention.count or 1) != 1
+        or mention.refinements
+        or mention.clause + 1 >= len(clauses)
+        or clauses[mention.clause].mentions[-1:] != [mention]
+    ):
+        return False
+    following = clauses[mention.clause + 1]
+    if following.link is None or following.link.norm != "," or len(following.mentions) != 1:
+        return False
+    plots = following.mentions[0]
+    plot = mention.plot
+    options = strong_crops(mention) if heading_crop or plot is None else set(plot["options"])
+    members = {id(r): r for r in plots.refinements}.values()
+    return (
+        not plots.has_crop
+        and (plots.count or 0) >= 2
+        and len(members) >= 2
+        and bool(options)
+        and all(strong_crops(r) and strong_crops(r) <= options for r in members)
+    )

@@ -1,0 +1,241 @@
+"""Words that describe the plants of a field already named are not more fields.
+
+", fruit ripe" after the fields named, "half the vines show mildew", "branches bent with
+fruit", "a wheelbarrow full of split fruit": :func:`dissolve_plant_parts` turns such a
+mention into words for the field(s) it describes (the words are data:
+``descriptive_heads``, ``plant_part_words`` and ``describing_verbs`` in vocabulary.yaml).
+"""
+
+from __future__ import annotations
+
+import functools
+from collections.abc import Sequence
+
+from agrirecipe.resolve._decompose import Clause, Mention
+from agrirecipe.resolve._lexicon import vocabulary
+from agrirecipe.resolve._structure import (
+    definite_before_head,
+    descriptive_words,
+    names_a_variety,
+    strong_crops,
+)
+
+__all__ = ["dissolve_plant_parts"]
+
+
+def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
+    """Mentions that describe plants of a named field are attributes, not new fields.
+
+    ", fruit ripe" after named fields, "half the vines show mildew, a riesling
+    vineyard", "three orchards, each with a different fruit": a clause whose only
+    mention is made of descriptive words (``descriptive_heads``: fruit, plants,
+    vines, leaves...) becomes head-less, so its words go to the field(s) it
+    describes (before it, or the next one when it opens the prompt). It stays a
+    field with its own count, size or rows, as a member of a list ("apples and
+    fruit trees"), or when no other field is named. "each with a different
+    fruit" makes the fields before it different crops. Returns what was dissolved.
+    """
+    words = descriptive_words()
+    dissolved: list[str] = []
+    for clause in clauses:
+        dissolved.extend(_dissolve_described_after_of(clause, words))
+    for position, clause in enumerate(clauses):
+        if len(clause.mentions) != 1:
+            continue
+        others_before = any(c.mentions for c in clauses[:position])
+        others_after = any(c.mentions for c in clauses[position + 1 :])
+        if not others_before and not (position == 0 and others_after):
+            continue
+        mention = clause.mentions[0]
+        definite = definite_before_head(clause, mention)  # "in the fruit", "the vines"
+        following = clauses[position + 1] if position + 1 < len(clauses) else None
+        listed = (
+            clause.link is not None
+            and clause.link.role == "conjunction"
+            and bool(clauses[position - 1].mentions)
+        ) or (  # "a mix of fruit and vegetables": the first member of a list
+            following is not None
+            and following.link is not None
+            and following.link.role == "conjunction"
+            and bool(following.mentions)
+        )
+        # "half the vines" (not "half fruit", a share of the fields)
+        fraction = definite and any(i.role == "fraction" for i in mention.items)
+        own_size = any(i.role in ("size", "geometry") for i in mention.items)
+        described = any(
+            i.role in ("stage", "health", "cue", "season", "month")
+            or "cue" in i.data
+            or "described" in i.data  # "plants about three metres tall"
+            for i in mention.items
+        )
+        # "a few plants have fallen over": a verb says what the plants do or look like
+        predicate = _predicate(clause, mention)
+        # "one plant has wilted leaves": one plant described, not a field of one;
+        # "a ladder leaning against one tree": one plant of the fields named
+        one_described = mention.count == 1 and (
+            described
+            or (
+                others_before
+                and not mention.has_crop
+                and all(h.role == "plot" and h.data["value"]["individual"] for h in mention.heads)
+            )
+        )
+        # "the Navel block ..., full of orange fruit": the named crop's own fruit;
+        # "a wheelbarrow full of split fruit": what the scenery holds
+        own_fruit = (
+            _fruit_of_named_crop(mention, clauses[:position])
+            or _part_of_named_crop(mention, clauses[:position])
+            or _held_by_scenery(clause, mention)
+            or (others_before and _bare_part_after_with(clause, mention))
+        )
+        if own_fruit:
+            listed, described = False, True
+        elif listed and _continues_with(clauses[position - 1], mention):
+            # "apples with scab spots on the leaves and corky fruit": still the apples'
+            listed, described = False, True
+        if (
+            not (own_fruit or all(h.norm in words for h in mention.heads))
+            or (
+                mention.count is not None
+                and not (definite or fraction or one_described or predicate)
+            )
+            or (mention.quantity is not None and not (definite or predicate))  # "a lot of"
+            or mention.other
+            or own_size
+            or (listed and not (definite or predicate))
+            or not (
+                described or definite or fraction or mention.distinct or predicate or one_described
+            )
+        ):
+            continue
+        if mention.distinct:
+            for earlier in (m for c in clauses[:position] for m in c.mentions):
+                earlier.distinct = True
+                earlier.distinct_crops = True
+                # "Five plots ..., each with a different vegetable"
+                if (
+                    mention.category is not None
+                    and earlier.category is None
+                    and not (earlier.has_crop)
+                ):
+                    earlier.category = mention.category
+        crops = strong_crops(mention)
+        for head in mention.heads:
+            head.role = "filler"
+            if crops:
+                head.data["describes"] = crops  # "Half the vines show mildew": the grapes
+        clause.loose = [*clause.loose, *(i for i in mention.items if i.role != "distinct")]
+        clause.mentions = []
+        dissolved.append(mention.text)
+    return dissolved
+
+
+def _fruit_of_named_crop(mention: Mention, before: Sequence[Clause]) -> bool:
+    """ "full of orange fruit" after an orange block: a crop word before a word for the
+    fruit, naming no variety, is the colour or fruit of a crop already named."""
+    parts = _plant_part_words()
+    if (
+        mention.count is not None
+        or not any(h.norm in parts for h in mention.heads)
+        or names_a_variety(mention)
+    ):
+        return False
+    crops = strong_crops(mention)
+    named = {c for clause in before for m in clause.mentions for c in strong_crops(m)}
+    return bool(crops) and crops <= named
+
+
+def _part_of_named_crop(mention: Mention, before: Sequence[Clause]) -> bool:
+    """ "the first hands of bananas just forming" after a Cavendish plantation: a part of
+    the plants ("hands of", "bunches of") of a crop already named, naming no variety."""
+    if mention.count is not None or names_a_variety(mention) or not mention.heads:
+        return False
+    first = min(h.start for h in mention.heads)
+    said = [i for i in mention.items if i.start < first]
+    if len(said) < 2 or said[-1].role != "of" or said[-2].norm not in _plant_part_words():
+        return False
+    crops = strong_crops(mention)
+    named = {c for clause in before for m in clause.mentions for c in strong_crops(m)}
+    return bool(crops) and crops <= named
+
+
+def _bare_part_after_with(clause: Clause, mention: Mention) -> bool:
+    """ "branches bent with fruit", "heavy with berries": a bare word for the fruit (no
+    crop, no count) after "with" or "of", once a field is named, is that field's fruit."""
+    if mention.count is not None or strong_crops(mention):
+        return False
+    if not all(h.norm in _plant_part_words() for h in mention.heads):
+        return False
+    if any(i.role == "plot" for i in clause.items):
+        return False  # "a plot full of fruit" asks for a field of fruit
+    head = min(h.start for h in mention.heads)
+    before = [i for i in clause.items if i.end <= head]
+    return bool(before) and before[-1].role == "of"
+
+
+def _held_by_scenery(clause: Clause, mention: Mention) -> bool:
+    """ "a wheelbarrow full of split fruit", "crates of apples": plants or fruit that a
+    piece of scenery holds (the words before them: the scenery, "of", describing words)."""
+    if mention.count is not None or not all(h.norm in descriptive_words() for h in mention.heads):
+        return False
+    head = min(h.start for h in mention.heads)
+    before = [i for i in clause.items if i.end <= head]
+    while before and before[-1].role in ("unknown", "filler") and "scenery" not in before[-1].data:
+        before.pop()  # "split", "ripe-looking"
+    return len(before) >= 2 and before[-1].role == "of" and "scenery" in before[-2].data
+
+
+def _continues_with(previous: Clause, mention: Mention) -> bool:
+    """Whether ``mention`` (only words for fruit) goes on a "with ..." list of the field
+    named in the clause before it: "apples with scab on the leaves and corky fruit"."""
+    if not previous.mentions or not all(h.norm in _plant_part_words() for h in mention.heads):
+        return False
+    owner = previous.mentions[-1]
+    last_head = max(h.start for h in owner.heads)
+    after = [i for i in owner.items if i.start > last_head]
+    return (
+        bool(after)
+        and after[0].role == "of"
+        and all(i.role in ("of", "health", "cue", "stage", "filler", "unknown") for i in after)
+    )
+
+
+@functools.lru_cache(maxsize=1)
+def _plant_part_words() -> frozenset[str]:
+    return frozenset(str(word) for word in vocabulary()["plant_part_words"])
+
+
+def _dissolve_described_after_of(clause: Clause, words: frozenset[str]) -> list[str]:
+    """ "the tomatoes in front of the house with the last fruit ripening": plant words
+    after "with" describe the field just named in the same clause."""
+    dissolved: list[str] = []
+    for index in range(len(clause.mentions) - 1, 0, -1):
+        mention, owner = clause.mentions[index], clause.mentions[index - 1]
+        if (
+            not owner.items
+            or owner.items[-1].role != "of"
+            or not all(h.norm in words for h in mention.heads)
+            or mention.count is not None
+            or mention.quantity is not None
+            or mention.other
+            or any(i.role in ("size", "geometry") for i in mention.items)
+        ):
+            continue
+        for head in mention.heads:
+            head.role = "filler"
+        owner.items.extend(mention.items)
+        del clause.mentions[index]
+        dissolved.append(mention.text)
+    return dissolved
+
+
+def _predicate(clause: Clause, mention: Mention) -> bool:
+    """Whether a describing verb follows the mention's head in its clause."""
+    head = max(h.end for h in mention.heads)
+    verbs = _describing_verbs()
+    return any(i.start >= head and i.norm in verbs for i in clause.items)
+
+
+@functools.lru_cache(maxsize=1)
+def _describing_verbs() -> frozenset[str]:
+    return frozenset(str(word) for word in vocabulary()["describing_verbs"])
