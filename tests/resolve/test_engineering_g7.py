@@ -206,3 +206,21 @@ def test_rows_of_the_same_length_copy_the_row_length_before() -> None:
 def test_a_measure_said_in_both_blocks_in_its_own_clause_is_both_blocks() -> None:
     scene = recipe("Gala and Conference pears. Rows run east-west in both blocks.")
     assert [f.geometry.rotation_deg for f in scene.fields] == [-90.0, -90.0]
+
+
+@pytest.mark.parametrize(
+    ("prompt", "crops"),
+    [
+        (
+            "Canopy LiDAR dataset with three orchard blocks; the pear block is between the apple "
+            "block and the cherrys. Apples 3.5 x 1 m, pears 3.5 x 1.25 m, cherrys 4.5 x 2.5 m, "
+            "10 rows in each block.",
+            ["Pear", "Apple", "Cherry"],
+        ),
+        ("two fields. The wheat is ripe, the maize is young.", ["Wheat", "Maize"]),
+    ],
+)
+def test_a_definite_crop_after_a_count_of_plots_is_one_of_them(
+    prompt: str, crops: list[str]
+) -> None:
+    assert [f.crop for f in recipe(prompt).fields] == crops

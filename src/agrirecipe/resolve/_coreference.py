@@ -29,6 +29,26 @@ from agrirecipe.resolve._structure import (
 __all__ = ["drop_list_headings", "merge_appositive_plots", "merge_coreferences"]
 
 
+def _counted_host(
+    builder: MentionBuilder, kept: Sequence[Mention], mention: Mention
+) -> Mention | None:
+    """The counted plural of no crop named last ("three orchard blocks") that a definite
+    crop mention is one member of, if it still has room; else None."""
+    if not kept or mention.count is not None or not strong_crops(mention):
+        return None
+    host = kept[-1]
+    if (
+        (host.count or 1) < 2
+        or strong_crops(host)
+        or host.rest is not None
+        or len(host.refinements) >= (host.count or 1)
+        or any(not r.is_refinement for r in host.refinements)
+    ):
+        return None
+    heads = [h for h in mention.heads if h.role in ("head", "plot")]
+    return host if heads and all(builder.compatible(host, h) for h in heads) else None
+
+
 def _compatible(builder: MentionBuilder, target: Mention, mention: Mention) -> bool:
     if target.refinements or target.rest is not None:
         return False
@@ -131,6 +151,23 @@ def merge_coreferences(
             ),
             None,
         )
+        host = (
+            _counted_host(builder, kept, mention)
+            if is_definite and not summary and (first is None or first.norm not in EACH)
+            else None
+        )
+        if host is not None and member is None:
+            # "three orchard blocks; the pear block is between the apple block and the
+            # cherries", "two fields. The wheat is ripe, the maize is young": each one of
+            # the fields counted, named now
+            same = [r for r in host.refinements if strong_crops(r) & own]
+            if same:
+                member = same[-1]
+            else:
+                host.refinements.append(mention)
+                mention.is_refinement = True
+                clause.refinement, clause.refined_parent = mention, host
+                continue
         for earlier in [] if member is not None else reversed(kept):
             if not _compatible(builder, earlier, mention):
                 break
