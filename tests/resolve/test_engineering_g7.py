@@ -224,3 +224,27 @@ def test_a_definite_crop_after_a_count_of_plots_is_one_of_them(
     prompt: str, crops: list[str]
 ) -> None:
     assert [f.crop for f in recipe(prompt).fields] == crops
+
+
+def test_two_members_told_apart_by_number_are_one_and_the_other() -> None:
+    scene = recipe(
+        "Two maize plots for the stand-count algorithm: plot 1 at 70,000 plants/ha, plot 2 at "
+        "100,000 plants/ha. Plot 2 directly south of plot 1. Seedlings only."
+    )
+    first, second = scene.fields
+    assert (first.plants_per_ha, second.plants_per_ha) == (
+        pytest.approx(70000, rel=0.01),
+        pytest.approx(100000, rel=0.01),
+    )
+    assert [(r.kind, r.subject, r.objects) for r in scene.relations] == [
+        ("south_of", second.id, (first.id,))
+    ]
+
+
+@pytest.mark.parametrize(
+    "prompt", ["maize, 8 rows x 76 cm x 30 m", "8 rows x 76 cm x 30 m of maize"]
+)
+def test_rows_by_spacing_by_length(prompt: str) -> None:
+    (field,) = recipe(prompt).fields
+    assert (field.row_count, field.agronomy.row_spacing_m) == (8, 0.76)
+    assert field.row_length_m == pytest.approx(30.0)

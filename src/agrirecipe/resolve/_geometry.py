@@ -549,12 +549,19 @@ def hoist_counted_crops(text: str, tag: Callable[[str], Sequence[Any]]) -> str:
             return f"{match.group('n')} {first} plants {rest}"
         return match.group(0)
 
+    text = _ROW_TRIPLE.sub(r"\g<n> \g<rows> at \g<spacing>, rows \g<length> long", text)
     text = _MANY_OF_A_CROP.sub(many_plants, text)
     text = _ELLIPTIC_COUNT.sub(r"\g<head> and \g<n> \g<noun> of", text)
     text = _ROWS_OF_CROP_AT.sub(crop_rows(" {tail}"), text)
     return _COUNTED_CROP_ROWS.sub(crop_rows(""), text)
 
 
+#: "8 rows x 76 cm x 30 m": the rows, their spacing and their length.
+_ROW_TRIPLE = re.compile(
+    r"(?<![\w.,])(?P<n>\d+)\s+(?P<rows>rows|ridges|beds)\s*[x×]\s*"
+    r"(?P<spacing>\d+(?:\.\d+)?\s*(?:cm|m|in|ft))\s*[x×]\s*"
+    r"(?P<length>\d+(?:\.\d+)?\s*(?:m|ft))\b"
+)
 #: More fields than a scene holds: a number above it before a crop counts plants.
 _MOST_FIELDS = 64
 #: "150 Pink Lady in the bottom block": a count of plants named by their crop.

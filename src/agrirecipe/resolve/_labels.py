@@ -55,6 +55,11 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
         [*_DEFINITION.finditer(text), *_BARE_DEFINITION.finditer(text)],
         key=lambda m: m.start(),
     )
+    text = _numbered_members(text)
+    definitions = sorted(
+        [*_DEFINITION.finditer(text), *_BARE_DEFINITION.finditer(text)],
+        key=lambda m: m.start(),
+    )
     names: dict[str, str] = {}
     for match in definitions:
         label = match.group("label").upper()
@@ -91,6 +96,40 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
         # a label never referenced is still a name, not another field ("Plot 2: ...")
         notes.append(f"{label} = {phrase}" + ("" if count else " (a label only)"))
     return out, notes
+
+
+# "plot 1 at 70,000 plants/ha, plot 2 at 100,000": two members told apart by number
+_MEMBER_LABEL = re.compile(
+    r"\b(?P<noun>(?i:plot|block|field|strip|bed|parcel))\s+(?P<label>[12]|[AB])\b(?!\s*[:=])"
+)
+
+
+def _numbered_members(text: str) -> str:
+    """``text`` with the two members of "two maize plots" called "plot 1" and "plot 2"
+    written "one" and "the other" where first named, "the first" and "the second" after
+    (when the labels are followed by no crop name: those are read as labels above)."""
+    matches = list(_MEMBER_LABEL.finditer(text))
+    labels = [m.group("label").upper() for m in matches]
+    if not matches or set(labels) not in ({"1", "2"}, {"A", "B"}) or labels[0] not in "1A":
+        return text
+    noun = matches[0].group("noun").lower()
+    if any(m.group("noun").lower() != noun for m in matches):
+        return text
+    counted = re.search(rf"\b(?i:two|2)\s+(?:[\w-]+\s+){{0,2}}(?i:{noun}s)\b", text)
+    if counted is None or counted.end() > matches[0].start():
+        return text
+    out = text
+    for match in reversed(matches):
+        label = match.group("label").upper()
+        first_said = all(
+            m.group("label").upper() != label for m in matches if m.start() < match.start()
+        )
+        if first_said:
+            word = "one" if label in "1A" else "the other"
+        else:
+            word = "the first" if label in "1A" else "the second"
+        out = out[: match.start()] + word + out[match.end() :]
+    return out
 
 
 def _crop_phrase(following: str, tag: Callable[[str], Sequence[Item]]) -> str:

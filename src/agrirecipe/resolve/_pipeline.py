@@ -377,13 +377,14 @@ def _validate(intent: SceneIntent, context: ResolveContext) -> None:
     # "the": references to labelled fields are spelled "the <crop>" ("north of A");
     # "in": "12 maize rows" is read as "maize in 12 rows"; "plants": "150 Pink Lady" as
     # "150 Pink Lady plants"; "one", "other": "the north block has ..., the south block
-    # ..." is read as "one ..., the other ..."
+    # ..." is read as "one ..., the other ..."; "at", "rows", "long": "8 rows x 76 cm x
+    # 30 m" as "8 rows at 76 cm, rows 30 m long"
     expanded = expand_casual(intent.prompt)
     prompt_words = (
         _words(intent.prompt)
         | _words(expanded)
         | _words(spread_value_lists(expanded))
-        | {"the", "in", "plants", "one", "other"}
+        | {"the", "in", "plants", "one", "other", "at", "rows", "long"}
     )
     for index, field in enumerate(intent.fields):
         path = f"fields[{index}]"
