@@ -147,3 +147,11 @@ def test_fruit_a_member_is_bent_with_is_its_own_and_the_list_goes_on() -> None:
         ("Conference", "Maturation", "Healthy"),
         ("Kordia", scene.fields[1].stage, "Ill"),
     ]
+
+
+def test_a_count_said_after_a_guess_is_the_plant_count() -> None:
+    (field,) = recipe(
+        "orange trees, hundreds of them - 400 actually - on the hill behind our house"
+    ).fields
+    assert field.crop == "Orange"
+    assert field.nominal_plant_count == 400
