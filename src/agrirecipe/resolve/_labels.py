@@ -107,7 +107,7 @@ _MEMBER_LABEL = re.compile(
 def _numbered_members(text: str) -> str:
     """``text`` with the two members of "two maize plots" called "plot 1" and "plot 2"
     written "one" and "the other" where first named, "the first" and "the second" after
-    (when the labels are followed by no crop name: those are read as labels above)."""
+    ("plot 1: Gala", with a colon or an equals sign, is left to :func:`resolve_labels`)."""
     matches = list(_MEMBER_LABEL.finditer(text))
     labels = [m.group("label").upper() for m in matches]
     if not matches or set(labels) not in ({"1", "2"}, {"A", "B"}) or labels[0] not in "1A":
