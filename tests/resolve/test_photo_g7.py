@@ -155,3 +155,15 @@ def test_a_count_said_after_a_guess_is_the_plant_count() -> None:
     ).fields
     assert field.crop == "Orange"
     assert field.nominal_plant_count == 400
+
+
+def test_damage_patches_and_a_row_of_windbreak_trees_are_no_fields() -> None:
+    (field,) = recipe(
+        "Took this one last October at the back of the farm: Granny Smith trees loaded with "
+        "big green apples ready to pick, but lots of them have brown corky scab patches on the "
+        "skin. Grey sky, a tractor with a bin trailer in the alley and a row of poplars behind."
+    ).fields
+    assert (field.variety, field.stage, field.health) == ("Granny Smith", "Maturation", "Ill")
+    assert "rows" not in field.stated
+    (row,) = recipe("a row of Gala apple trees").fields
+    assert row.row_count == 1

@@ -262,9 +262,17 @@ def _row_words_of_every_field(items: Sequence[Item]) -> None:
 
 def _plot_words_of_other_things(items: Sequence[Item]) -> None:
     """'to compare planting systems': a plot word between two words the reader does not
-    know is part of their phrase, not a field."""
+    know is part of their phrase, not a field; 'brown corky scab patches': patches right
+    after a disease or a look are the damage, not plots."""
     for before, item, after in zip(items, items[1:], items[2:], strict=False):
         if item.role == "plot" and before.role == after.role == "unknown":
+            item.role = "filler"
+    for before, item in itertools.pairwise(items):
+        if (
+            item.role == "plot"
+            and item.norm in ("patches", "patch")
+            and (before.role == "health" or "cue" in before.data)
+        ):
             item.role = "filler"
 
 
