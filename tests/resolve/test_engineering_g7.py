@@ -248,3 +248,24 @@ def test_rows_by_spacing_by_length(prompt: str) -> None:
     (field,) = recipe(prompt).fields
     assert (field.row_count, field.agronomy.row_spacing_m) == (8, 0.76)
     assert field.row_length_m == pytest.approx(30.0)
+
+
+@pytest.mark.parametrize(
+    ("prompt", "row", "plant"),
+    [
+        ("Riesling block, 1.8 m inter-row, 1.1 m intra-row, 25 rows, 5 m headland.", 1.8, 1.1),
+        ("maize, row pitch 0.8 m, plant pitch 0.16 m, 48 rows, row length 250 m", 0.8, 0.16),
+    ],
+)
+def test_spacings_in_engineers_words(prompt: str, row: float, plant: float) -> None:
+    (field,) = recipe(prompt).fields
+    assert (field.agronomy.row_spacing_m, field.agronomy.in_row_spacing_m) == (row, plant)
+
+
+def test_beds_with_rows_each_texted() -> None:
+    (field,) = recipe("centenary strawbs, 6 beds w/ 2 rows each, rows 50m long").fields
+    assert (field.variety, field.bed_count, field.agronomy.rows_per_bed) == (
+        "Malling Centenary",
+        6,
+        2,
+    )
