@@ -19,6 +19,7 @@ from agrirecipe.resolve._structure import (
     definite_before_head,
     definite_words,
     first_word,
+    has_room,
     names_a_variety,
     one_of_the,
     pronoun_one,
@@ -40,8 +41,7 @@ def _counted_host(
     if (
         (host.count or 1) < 2
         or strong_crops(host)
-        or host.rest is not None
-        or len(host.refinements) >= (host.count or 1)
+        or not has_room(host)
         or any(not r.is_refinement for r in host.refinements)
     ):
         return None

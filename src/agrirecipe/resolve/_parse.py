@@ -173,11 +173,15 @@ class PromptReader(FieldReading):
                 hint=f"describe the fields you want, e.g. {_EXAMPLES}",
             )
         text = spread_value_lists(expand_casual(prompt))
-        text, labels = resolve_labels(text, lambda phrase: self.lexicon.tag(tokenize(phrase)))
-        text = place_compass_members(text, lambda phrase: self.lexicon.tag(tokenize(phrase)))
+
+        def tag(phrase: str) -> list[Item]:
+            return self.lexicon.tag(tokenize(phrase))
+
+        text, labels = resolve_labels(text, tag)
+        text = place_compass_members(text, tag)
         text = place_trailing_directions(place_leading_directions(text))
         text = place_neighbouring_plots(text)
-        text = hoist_counted_crops(text, lambda phrase: self.lexicon.tag(tokenize(phrase)))
+        text = hoist_counted_crops(text, tag)
         for note in labels:
             self.trace.append(TraceStep(stage="decompose", subject="label", detail=note))
         tokens = tokenize(text)

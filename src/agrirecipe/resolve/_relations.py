@@ -86,10 +86,12 @@ def read_relations(
         after = [
             m for c in clauses[position:] for m in (c.named if c is not clause else c.mentions)
         ]
+        said = " ".join(i.norm for i in clause.items)
+        the_two = not clause.mentions and said in _THE_TWO
         pronoun = bool(clause.items) and (
             clause.items[0].norm in PRONOUNS
             # "cherry tomatoes in between the two", "between both"
-            or (not clause.mentions and " ".join(i.norm for i in clause.items) in _THE_TWO)
+            or the_two
         )
         if (
             pronoun
@@ -168,10 +170,8 @@ def read_relations(
         if position in directed and kind == "next_to":
             kind = str(clauses[directed[position]].link.data["value"])  # type: ignore[union-attr]
         relations.extend(_pair(kind, subject, objects, members, link, trace))
-        said = " ".join(i.norm for i in clause.items)
         if (
-            pronoun
-            and said in _THE_TWO
+            the_two
             and kind != "between"
             and len(before) >= 3
             and subject is before[-1]

@@ -37,6 +37,7 @@ __all__ = [
     "descriptive_words",
     "drop_negated",
     "first_word",
+    "has_room",
     "names_a_variety",
     "one_of_the",
     "per_bed",
@@ -298,7 +299,8 @@ def _fits(sub: Mention, parent: Mention, crop_categories: dict[str, str]) -> boo
     return True
 
 
-def _room(parent: Mention) -> bool:
+def has_room(parent: Mention) -> bool:
+    """Whether a counted plural can take another listed member."""
     return parent.rest is None and len(parent.refinements) < (parent.count or 1)
 
 
@@ -506,7 +508,7 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
                     stage="resolve",
                     hint="make the count match the list, or drop the count",
                 )
-            if (is_reference or listed) and fits and _room(parent):
+            if (is_reference or listed) and fits and has_room(parent):
                 sub.is_refinement = True
                 kind = first.data.get("value") if first is not None else "one"
                 if share_of is not None:
