@@ -26,6 +26,7 @@ from agrirecipe.resolve._structure import (
     same_variety,
     strong_crops,
 )
+from agrirecipe.resolve._words import SENTENCE_MARKS
 
 __all__ = ["drop_list_headings", "merge_appositive_plots", "merge_coreferences"]
 
@@ -34,13 +35,16 @@ def _counted_host(
     builder: MentionBuilder, kept: Sequence[Mention], mention: Mention
 ) -> Mention | None:
     """The counted plural of no crop named last ("three orchard blocks") that a definite
-    crop mention is one member of, if it still has room; else None."""
+    crop mention is one member of, if it still has room; else None. A counted plural of
+    one crop ("two cherry blocks: the Bing trees ..., the Kordia block ...") hosts the
+    varieties of its crop named after it."""
     if not kept or mention.count is not None or not strong_crops(mention):
         return None
     host = kept[-1]
+    crops = strong_crops(host)
     if (
         (host.count or 1) < 2
-        or strong_crops(host)
+        or (crops and not (names_a_variety(mention) and strong_crops(mention) <= crops))
         or not has_room(host)
         or any(not r.is_refinement for r in host.refinements)
     ):
@@ -160,7 +164,11 @@ def merge_coreferences(
             # "three orchard blocks; the pear block is between the apple block and the
             # cherries", "two fields. The wheat is ripe, the maize is young": each one of
             # the fields counted, named now
-            same = [r for r in host.refinements if strong_crops(r) & own]
+            same = [
+                r
+                for r in host.refinements
+                if (same_variety(r, mention) if strong_crops(host) else strong_crops(r) & own)
+            ]
             if same:
                 member = same[-1]
             else:
@@ -362,11 +370,45 @@ def drop_list_headings(clauses: Sequence[Clause], mentions: list[Mention]) -> li
         ):
             clauses[mention.clause].mentions = []
             continue
-        if _heads_counted_plots(clauses, mention) or _heads_fitting_list(clauses, mention, later):
+        if (
+            _heads_counted_plots(clauses, mention)
+            or _heads_fitting_list(clauses, mention, later)
+            or _crop_title(clauses, mention, mentions[position + 1 : position + 2])
+        ):
             clauses[mention.clause].mentions = []
             continue
         kept.append(mention)
     return kept
+
+
+def _crop_title(clauses: Sequence[Clause], mention: Mention, following: Sequence[Mention]) -> bool:
+    """'onions!!! just 1 big field of onions', 'Wheat. A 2 ha wheat field by the barn': a
+    sentence of only a crop's name, before a sentence asking for a field of that crop, is
+    its title, not another field."""
+    clause = clauses[mention.clause]
+    if (
+        not following
+        or clause.mentions != [mention]
+        or (clause.link is not None and clause.link.norm not in SENTENCE_MARKS)
+        or names_a_variety(mention)
+        or not strong_crops(mention)
+        or any(i.role not in ("head", "filler") for i in mention.items)
+    ):
+        return False
+    after = clauses[mention.clause + 1 :]
+    first = next((c for c in after if c.mentions), None)
+    ends = next((c for c in after if c.link is not None), None)
+    nxt = following[0]
+    return (
+        first is not None
+        and ends is not None
+        and ends.link is not None
+        and ends.link.norm in SENTENCE_MARKS
+        and first.index >= ends.index
+        and nxt.clause == first.index
+        and strong_crops(mention) <= strong_crops(nxt)
+        and (nxt.plot is not None or nxt.count is not None)
+    )
 
 
 def _heads_fitting_list(

@@ -212,8 +212,7 @@ def _dissolve_described_after_of(clause: Clause, words: frozenset[str]) -> list[
     for index in range(len(clause.mentions) - 1, 0, -1):
         mention, owner = clause.mentions[index], clause.mentions[index - 1]
         if (
-            not owner.items
-            or owner.items[-1].role != "of"
+            not _ends_with_of(owner)
             or not all(h.norm in words for h in mention.heads)
             or mention.count is not None
             or mention.quantity is not None
@@ -227,6 +226,14 @@ def _dissolve_described_after_of(clause: Clause, words: frozenset[str]) -> list[
         del clause.mentions[index]
         dissolved.append(mention.text)
     return dissolved
+
+
+def _ends_with_of(owner: Mention) -> bool:
+    """Whether the mention ends in "with" / "of", or in "with" and adjectives ("with long")."""
+    ofs = [index for index, item in enumerate(owner.items) if item.role == "of"]
+    return bool(ofs) and all(
+        item.role in ("filler", "side", "unknown") for item in owner.items[ofs[-1] + 1 :]
+    )
 
 
 def _predicate(clause: Clause, mention: Mention) -> bool:

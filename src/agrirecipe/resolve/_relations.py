@@ -66,14 +66,14 @@ def read_relations(
             )
             continue
         if (
-            link.role == "trailer"
+            link.role in ("trailer", "relation")
             and not clause.mentions
             and position
             and not clauses[position - 1].mentions
             and any(i.scenery for i in clauses[position - 1].items)
         ):
-            # "..., with the village road running along the east side": the scenery
-            # is placed, not a field
+            # "..., with the village road running along the east side", "Rain covers
+            # rolled up above both": the scenery is placed, not a field
             trace.append(
                 TraceStep(
                     stage="decompose", subject=link.raw, detail="relative to scenery: not used"

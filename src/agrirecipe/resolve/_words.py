@@ -7,8 +7,11 @@ each decides what a word is in its place, where the lexicon alone cannot:
 #   pass                                                  example
 ==  ====================================================  ===========================
 1   a number with a length unit, a rootstock's name, one  "3.5 m in the pears",
-    plant every so far, a count of scenery: not a count   "one carrot every 2 cm"
-2   a crop word joined to a colour is a colour            "olive-green patches"
+    plant every so far, a count of scenery or of fruit:   "one carrot every 2 cm",
+    not a count of fields                                 "lots of fruit"
+2   a crop word joined to a colour, or a colour crop      "olive-green patches",
+    word before scenery, is a colour; a crop word before  "an orange tractor",
+    a machine names its load                              "a grain trailer"
 3   readiness said of the past or of other things         "ready for the fleece"
 4   a stage word or cue after a negation says nothing     "not in ear yet"
 5   "all" before a plain word stresses it                 "all green and even"
@@ -101,6 +104,31 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
             item.data["counts_scenery"] = True
         elif item.role == "number" and item.norm in ("a", "an") and following.role == "cue":
             item.role = "filler"  # "a combine already working in the spelt": not a field
+    # "Jalapenos in the tunnel, lots of fruit turning red": after a crop is named, a vague
+    # quantity of fruit, leaves or plants counts plants, not fields
+    described = frozenset(
+        str(w) for w in (*vocabulary()["plant_part_words"], *vocabulary()["descriptive_heads"])
+    )
+    # ("a few peppers have scabby spots" after Jalapenos: some of that field's plants,
+    # read like "the peppers")
+    named: set[str] = set()
+    for index, (item, following) in enumerate(itertools.pairwise(items)):
+        if item.role in ("head", "weak_variety"):
+            named |= _crops_of(item)
+        if not named or item.role != "quantity":
+            continue
+        ahead = items[index + 2 : index + 6]
+        plants_named = (
+            following.role == "head"
+            and following.has("crop")
+            and _crops_of(following) <= named
+            and not any(i.role in ("plot", "size", "geometry") for i in ahead)
+            and any(i.role in ("health", "cue", "stage") for i in ahead)
+        )
+        of_plants = following.norm in described and following.role != "category"
+        if (of_plants and not any(i.role == "plot" for i in ahead[:1])) or plants_named:
+            item.role = "filler"
+            item.data["counts_plants"] = True
     # "on 20 April", "April 3rd": a day of the month is a date, not a count of fields
     words = [i for i in items if i.role != "separator" or i.norm not in (",",)]
     for index, item in enumerate(words):
@@ -118,6 +146,13 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
         ):
             item.role = "filler"
             item.data["date"] = True
+
+
+def _crops_of(item: Item) -> set[str]:
+    """The crops a crop or variety word names."""
+    return {str(s.value) for s in item.senses_of("crop")} | {
+        str(s.crop) for s in item.senses_of("variety") if s.crop
+    }
 
 
 def _purpose(item: Item) -> bool:
@@ -142,8 +177,22 @@ def _totals_are_not_sizes(items: Sequence[Item]) -> None:
 
 def _colours_are_not_crops(items: Sequence[Item], text: str) -> None:
     """'striped yellow-orange with rust', 'olive-green velvety patches': a crop word joined
-    by a hyphen to a colour is a colour, not a field (nor an unknown crop)."""
+    by a hyphen to a colour is a colour, not a field (nor an unknown crop). 'an orange
+    tractor', 'orange crates': a crop word that is a colour, before scenery, is its colour."""
     for first, second in itertools.pairwise(items):
+        if (
+            first.role in ("head", "other_crop", "category")
+            and second.has("scenery")
+            and not second.has("crop", "variety", "plot", "category")
+            and (
+                first.norm in reader_words("colours")
+                # "a grain trailer", "the potato harvester": what the machine carries
+                or any(sense.value == "machines" for sense in second.senses_of("scenery"))
+            )
+        ):
+            first.role = "filler"
+            first.data["colour"] = True
+            continue
         if text[first.end : second.start] != "-":
             continue
         for crop, colour in ((first, second), (second, first)):

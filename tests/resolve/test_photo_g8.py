@@ -1,0 +1,128 @@
+"""Photo and casual text of blind set g8 (issue 8): words that look like crops but are
+colours, loads or skins ("an orange Kubota", "a grain trailer", "russeted fruit"), vague
+quantities of a named crop's plants or fruit ("lots of fruit", "a few peppers have
+spots"), the members of "two cherry blocks" named by variety, scenery placed against the
+fields, and a crop's name said as a title before its field."""
+
+from __future__ import annotations
+
+import pytest
+
+from agrirecipe import generate
+from agrirecipe.recipe import SceneRecipe
+
+
+def recipe(prompt: str) -> SceneRecipe:
+    return generate(prompt, resolver="hybrid").recipe
+
+
+def crops(scene: SceneRecipe) -> list[tuple[str, str]]:
+    return [(f.crop, f.variety) for f in scene.fields]
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "A lettuce field, an orange tractor at the end.",
+        "A lettuce field, orange crates stacked by the gate.",
+        "Lettuce bolting, irrigation pipes across the beds, an orange Kubota at the end.",
+        "Three lettuce beds and a grain trailer on the road.",
+        "A lettuce field, the potato harvester parked at the gate.",
+    ],
+)
+def test_a_crop_word_that_colours_or_loads_a_machine_is_no_field(prompt: str) -> None:
+    scene = recipe(prompt)
+    assert {f.crop for f in scene.fields} == {"Lettuce"}
+
+
+def test_an_orange_grove_is_still_oranges() -> None:
+    scene = recipe("an orange grove next to a wheat field, orange tractor by the barn")
+    assert sorted(f.crop for f in scene.fields) == ["Orange", "Wheat"]
+
+
+def test_the_skin_of_the_fruit_is_no_variety() -> None:
+    scene = recipe(
+        "Behind the farmhouse in October there's Durondeau with russeted brownish fruit "
+        "ready to pick, and Comice next to it, fat greenish pears also ready."
+    )
+    assert crops(scene) == [("Pear", "Durondeau"), ("Pear", "Doyenne du Comice")]
+    assert [f.stage for f in scene.fields] == ["Maturation", "Maturation"]
+    (relation,) = scene.relations
+    assert relation.kind == "next_to"
+
+
+@pytest.mark.parametrize(
+    ("prompt", "health"),
+    [
+        (
+            "Jalapeños in the polytunnel, lots of fruit with some already turning red, but "
+            "the leaves have dark spots and a few peppers have raised scabby spots.",
+            "Ill",
+        ),
+        ("A Kordia cherry block, a lot of fruit rotting on the branch.", "Ill"),
+        ("Bing cherries, loads of fruit, dark red and ripe.", "Healthy"),
+    ],
+)
+def test_a_vague_quantity_of_a_named_crops_fruit_is_no_count_of_fields(
+    prompt: str, health: str
+) -> None:
+    (field,) = recipe(prompt).fields
+    assert field.health == health
+
+
+def test_a_few_plants_of_one_named_crop_describe_that_field_only() -> None:
+    scene = recipe("a carrot field and a wheat field, a few carrots have blight")
+    assert [(f.crop, f.health) for f in scene.fields] == [
+        ("Carrot", "Ill"),
+        ("Wheat", "Healthy"),
+    ]
+
+
+def test_a_few_vegetable_plots_are_still_plots() -> None:
+    scene = recipe("A cherry orchard with a few vegetable plots scattered around it.")
+    assert len(scene.fields) >= 3
+
+
+def test_members_of_a_counted_crop_named_by_variety() -> None:
+    scene = recipe(
+        "June photo of two cherry blocks next to each other: the Bing trees are hanging "
+        "with dark, almost black ripe cherries, while in the Kordia block a lot of fruit "
+        "is rotting on the branch with grey-tan fuzzy tufts. Rain covers rolled up above "
+        "both."
+    )
+    assert [(f.variety, f.health) for f in scene.fields] == [
+        ("Bing", "Healthy"),
+        ("Kordia", "Ill"),
+    ]
+    assert [r.kind for r in scene.relations] == ["next_to"]  # the covers are "above both"
+
+
+def test_a_crop_with_fruit_after_with_and_an_adjective() -> None:
+    scene = recipe(
+        "a bed of Pimientos de Padrón full of small green peppers ready for picking, beside "
+        "a row of San Marzano tomatoes with long fruit still green. Chickens wandering "
+        "between them."
+    )
+    assert crops(scene) == [("Pepper", "Padron"), ("Tomato", "San Marzano")]
+    assert [r.kind for r in scene.relations] == ["next_to"]
+
+
+@pytest.mark.parametrize(
+    ("prompt", "count"),
+    [
+        ("onoins!!! just 1 big field of onions!!", 1),
+        ("Wheat. A 2 ha wheat field next to a barn.", 1),
+        ("Potatoes! two fields of potatoes", 2),
+        ("Wheat. Maize. A maize field", 2),
+    ],
+)
+def test_a_crops_name_as_a_title_before_its_field(prompt: str, count: int) -> None:
+    assert len(recipe(prompt).fields) == count
+
+
+def test_fields_in_a_line_with_a_load_named_after() -> None:
+    scene = recipe(
+        "three fields in a line, corn, then potatoes, then wheat, so the potatoes sit "
+        "between the other two. Everything still green, a grain trailer on the road."
+    )
+    assert [f.crop for f in scene.fields] == ["Maize", "Potato", "Wheat"]
