@@ -440,8 +440,9 @@ def _heads_fitting_list(
 
 def _heads_counted_plots(clauses: Sequence[Clause], mention: Mention) -> bool:
     """'Pruning-robot vineyard, two blocks: Chardonnay, ..., Cabernet', 'Lettuce trial ...,
-    three plots from north to south: Cos, crisphead, Lollo Rosso': a plot word or a crop
-    right before a count of plots that lists members it can hold is their heading."""
+    three plots from north to south: Cos, crisphead, Lollo Rosso', 'test for cherries: two
+    blocks, Kordia and Regina': a plot word or a crop right before a count of plots that
+    lists members it can hold is their heading."""
     heading_crop = mention.has_crop and not names_a_variety(mention)
     if (
         (mention.plot is None and not heading_crop)
@@ -453,7 +454,10 @@ def _heads_counted_plots(clauses: Sequence[Clause], mention: Mention) -> bool:
     ):
         return False
     following = clauses[mention.clause + 1]
-    if following.link is None or following.link.norm != "," or len(following.mentions) != 1:
+    # ("Rain-cover test for cherries: two blocks, Kordia and Regina")
+    if following.link is None or following.link.norm not in (",", ":"):
+        return False
+    if len(following.mentions) != 1:
         return False
     plots = following.mentions[0]
     plot = mention.plot

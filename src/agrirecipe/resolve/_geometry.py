@@ -291,12 +291,12 @@ def _listed_after(
         if any(claimed[number_at:end]) or (unit is None) != (said_unit is None):
             return []
         value = round(number * (tables.units[said_unit] if said_unit else 1.0), 9)
-        raw = _raw(tokens, number_at, end)
-        _check(match.key, value, raw)
-        listed.append(GeometryMatch(match.key, value, number_at, end, raw))
+        listed.append(GeometryMatch(match.key, value, number_at, end, _raw(tokens, number_at, end)))
         cursor = end
     if not listed or cursor >= len(tokens) or tokens[cursor].norm != "respectively":
         return []
+    for value_match in listed:  # (only a list "respectively" ends is that measure)
+        _check(match.key, value_match.value, value_match.text)
     last = listed[-1]
     listed[-1] = replace(last, last=cursor + 1, text=_raw(tokens, last.first, cursor + 1))
     return listed
@@ -324,37 +324,26 @@ def _respectively(
                     for index, value in enumerate(after)
                 )
                 continue
-        if not ends or match.share is not None:
+        if match.share is not None:
             result.append(match)
             continue
-        unit = next(
-            (t.norm for t in tokens[match.first : match.last] if t.norm in tables.units), None
+        listed = _listed_before(tokens, match, claimed, tables)
+        # "60,000, 80,000 and 100,000 plants/ha": three or more values listed with commas
+        # share the measure out like "respectively" does
+        listing = (
+            len(listed) >= 2
+            and any(tokens[m.last].norm == "," for m in listed)
+            and (listed[0].first == 0 or tokens[listed[0].first - 1].norm not in _RANGE_WORDS)
         )
-        listed: list[GeometryMatch] = []
-        cursor = match.first
-        while cursor >= 2 and tokens[cursor - 1].norm in _LIST_JOINS:
-            # "3.4 m and", "3.4 and" (the unit of the measure), "36 and" (a count)
-            has_unit = tokens[cursor - 2].norm in tables.units and unit is not None
-            number_at = cursor - 3 if has_unit else cursor - 2
-            if number_at < 0 or any(claimed[number_at : cursor - 1]):
-                break
-            try:
-                number = _number(tokens[number_at].norm, tables.number_words)
-            except ValueError:
-                break
-            scale = tables.units[tokens[cursor - 2].norm if has_unit else unit] if unit else 1.0
-            raw = _raw(tokens, number_at, cursor - 1)
-            value = round(number * scale, 9)
-            _check(match.key, value, raw)
-            listed.insert(0, GeometryMatch(match.key, value, number_at, cursor - 1, raw))
-            cursor = number_at
-        if not listed:
+        if not listed or not (ends or listing):
             result.append(match)
             continue
+        for listed_match in listed:
+            _check(match.key, listed_match.value, listed_match.text)
         count, start = len(listed) + 1, listed[0].first
         for index, listed_match in enumerate(listed):
             result.append(replace(listed_match, share=(index, count, start)))
-        last = match.last + 1  # "respectively" is read with its measure
+        last = match.last + 1 if ends else match.last  # "respectively" is read with it
         result.append(
             replace(
                 match,
@@ -365,6 +354,36 @@ def _respectively(
         )
     result.sort(key=lambda m: m.first)
     return result
+
+
+#: Words before two values that make them a range, not a list ("between 3 and 4 m").
+_RANGE_WORDS = frozenset({"between", "from"})
+
+
+def _listed_before(
+    tokens: Sequence[Token], match: GeometryMatch, claimed: list[bool], tables: _Tables
+) -> list[GeometryMatch]:
+    """The values listed right before a measure ("3.4 m and" / "36, 40 and"), each read
+    as that measure (unchecked), in order."""
+    unit = next((t.norm for t in tokens[match.first : match.last] if t.norm in tables.units), None)
+    listed: list[GeometryMatch] = []
+    cursor = match.first
+    while cursor >= 2 and tokens[cursor - 1].norm in _LIST_JOINS:
+        # "3.4 m and", "3.4 and" (the unit of the measure), "36 and" (a count)
+        has_unit = tokens[cursor - 2].norm in tables.units and unit is not None
+        number_at = cursor - 3 if has_unit else cursor - 2
+        if number_at < 0 or any(claimed[number_at : cursor - 1]):
+            break
+        try:
+            number = _number(tokens[number_at].norm, tables.number_words)
+        except ValueError:
+            break
+        scale = tables.units[tokens[cursor - 2].norm if has_unit else unit] if unit else 1.0
+        raw = _raw(tokens, number_at, cursor - 1)
+        value = round(number * scale, 9)
+        listed.insert(0, GeometryMatch(match.key, value, number_at, cursor - 1, raw))
+        cursor = number_at
+    return listed
 
 
 def _negated(tokens: Sequence[Token], index: int) -> bool:
@@ -458,12 +477,32 @@ def row_spec(items: Sequence[Any], text: str) -> RowSpec | None:
     )
 
 
+def _bare_apart(text: str) -> bool:
+    """Whether a spacing was said only as "<length> apart", naming neither rows nor plants."""
+    words = text.lower().split()
+    return bool(words) and words[-1] == "apart" and not set(words) & _ROW_WORDS
+
+
+_ROW_WORDS = frozenset({"row", "rows", "line", "lines", "drill", "drills", "between"})
+
+
 def merge_geometry(matches: Sequence[GeometryMatch], text: str) -> RowSpec | None:
     """One field's geometry matches as a :class:`RowSpec` (None when there are none)."""
     values: dict[str, float] = {}
     words: list[str] = []
     for match in matches:
         previous = values.get(match.key)
+        if (
+            match.key == "row_spacing_m"
+            and previous is not None
+            and "in_row_spacing_m" not in values
+            and match.value < previous
+            and _bare_apart(match.text)
+        ):
+            # "Onions in 30 cm rows, 10 cm apart": with the rows spaced already, a bare
+            # "apart" is how far apart the plants stand in the row
+            match = replace(match, key="in_row_spacing_m")
+            previous = None
         if previous is not None and not math.isclose(previous, match.value, rel_tol=1e-9):
             raise PromptError(
                 f"{text!r} states {match.key.replace('_', ' ')} twice ({previous:g} and "

@@ -176,9 +176,10 @@ _IN_SIDE_PLOT = re.compile(
 # "The north block has downy mildew, the south block is clean": two members told apart
 # by their side, described, not named
 _COMPASS_MEMBER = re.compile(
-    r"\b(?P<the>(?i:the))\s+(?P<side>(?i:north|south|east|west))(?i:ern)?\s+"
+    # "the north block has ...", "in the west plot the leaves are ..."
+    r"\b(?P<at>(?i:in)\s+)?(?P<the>(?i:the))\s+(?P<side>(?i:north|south|east|west))(?i:ern)?\s+"
     r"(?i:block|plot|field|one|strip|vineyard|orchard|half|bed|paddock|grove|patch)\b"
-    r"(?=\s+(?i:has|is|shows|looks|was|carries|got|has got|with)\b(?P<rest>[^,;.]*))"
+    r"(?=(?(at)\s*|\s+(?i:has|is|shows|looks|was|carries|got|has got|with)\b)(?P<rest>[^,;.]*))"
 )
 _OPPOSITE_SIDES = {"north": "south", "south": "north", "east": "west", "west": "east"}
 
@@ -196,8 +197,8 @@ def place_compass_members(text: str, tag: Callable[[str], Sequence[Item]]) -> st
         return text
     if any(item.has(*_NAMING) for m in matches for item in tag(m.group("rest"))):
         return text
-    one = "One" if first.group("the")[0].isupper() else "one"
-    other = "The other" if second.group("the")[0].isupper() else "the other"
+    one = "One" if (first.group("at") or first.group("the"))[0].isupper() else "one"
+    other = "The other" if (second.group("at") or second.group("the"))[0].isupper() else "the other"
     return (
         text[: first.start()]
         + f"{one} to the {sides[0]}"

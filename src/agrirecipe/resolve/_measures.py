@@ -17,7 +17,7 @@ from agrirecipe.resolve._geometry import geometry_nouns
 from agrirecipe.resolve._intent import FieldIntent, RowSpec
 from agrirecipe.resolve._lexicon import Item, number_value
 from agrirecipe.resolve._relations import listing
-from agrirecipe.resolve._structure import per_bed
+from agrirecipe.resolve._structure import per_bed, strong_crops
 from agrirecipe.resolve._words import SENTENCE_MARKS
 
 __all__ = [
@@ -147,16 +147,34 @@ def parallel_fields(clauses: Sequence[Clause], position: int) -> list[Mention]:
     """'10 rows of beef tomatoes north of 10 rows of cherry tomatoes, 1.6 m between
     rows': the fields of the sentence, when each states the same measures, so what
     follows them in that sentence is about all of them ([] otherwise)."""
+    # "Two vineyard blocks: Chardonnay ... and Cabernet ...": the members, not their host
+    fields = list(
+        {
+            id(f): f for m in sentence_fields(clauses, position) for f in (m.refinements or [m])
+        }.values()
+    )
+    if any(f.clause > position for f in fields):
+        return []  # a member named later takes what comes before it
     end = position + 1
     while end < len(clauses) and not _ends_a_sentence(clauses[end]):
-        if clauses[end].mentions:
+        if any(all(m is not f for f in fields) for m in clauses[end].mentions):
             return []  # a field named later in the sentence takes what comes before it
         end += 1
-    fields = sentence_fields(clauses, position)
     if len(fields) < 2 or any((m.count or 1) > 1 or m.refinements for m in fields):
         return []
     keys = [_measure_keys(m.items) for m in fields]
-    return fields if keys[0] and all(k == keys[0] for k in keys) else []
+    if not all(k == keys[0] for k in keys):
+        return []
+    if keys[0]:
+        return fields
+    # "a Navel block next to a blood orange block, 6 m between rows": blocks of one crop
+    # that state no measures anywhere before share the run of measures said after them
+    crops = [strong_crops(m) for m in fields]
+    run = position
+    while run > 0 and _only_measures(clauses[run - 1]) and not _ends_a_sentence(clauses[run]):
+        run -= 1
+    measured_before = any(i.role == "geometry" for c in clauses[:run] for i in (*c.items, *c.loose))
+    return fields if crops[0] and all(c == crops[0] for c in crops) and not measured_before else []
 
 
 def share_each_measures(clauses: Sequence[Clause]) -> None:

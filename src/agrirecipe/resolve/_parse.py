@@ -534,7 +534,8 @@ class PromptReader(FieldReading):
                         clause.link is not None
                         and clause.link.norm in (".", "!")
                         and bool(clause.items)
-                        and clause.items[0].norm in _ALL_PLANTS
+                        # ("... 80 m rows. Fruit ripening, mid-August.")
+                        and clause.items[0].norm in (*_ALL_PLANTS, "fruit")
                     )
                     # "... onions in 12 rows. Rows are 60 m.": a closing sentence of
                     # row measures is about every field's rows

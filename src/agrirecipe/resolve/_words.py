@@ -12,6 +12,7 @@ each decides what a word is in its place, where the lexicon alone cannot:
 2   a crop word joined to a colour, or a colour crop      "olive-green patches",
     word before scenery, is a colour; a crop word before  "an orange tractor",
     a machine names its load                              "a grain trailer"
+2b  "different" before a measure says nothing of crops    "at different densities"
 3   readiness said of the past or of other things         "ready for the fleece"
 4   a stage word or cue after a negation says nothing     "not in ear yet"
 5   "all" before a plain word stresses it                 "all green and even"
@@ -46,6 +47,7 @@ def read_words(items: Sequence[Item], text: str) -> None:
     """Run the word passes, in order, over a prompt's items (see the module's table)."""
     _measures_are_not_counts(items)
     _colours_are_not_crops(items, text)
+    _measured_differences(items)
     _past_and_other_readiness(items)
     _negated_looks(items)
     _all_as_intensifier(items)
@@ -199,6 +201,14 @@ def _colours_are_not_crops(items: Sequence[Item], text: str) -> None:
             if crop.role in ("head", "other_crop") and colour.norm in reader_words("colours"):
                 crop.role = "filler"
                 crop.data["colour"] = True
+
+
+def _measured_differences(items: Sequence[Item]) -> None:
+    """'Three maize plots at different densities': fields that differ in a measure (or a
+    stage) are not thereby different crops or varieties."""
+    for item, following in itertools.pairwise(items):
+        if item.role == "distinct" and following.norm in reader_words("measured_differences"):
+            item.role = "filler"
 
 
 def _past_and_other_readiness(items: Sequence[Item]) -> None:
@@ -428,12 +438,27 @@ def purpose_diseases(items: Sequence[Item], text: str) -> None:
                 break
             if following.role not in ("unknown", "filler"):
                 break
-    for item, following in itertools.pairwise(items):
-        if not _purpose(following):
+    for index, item in enumerate(items):
+        if item.role == "health":
+            # "a late-blight spectral dataset": a disease, then words for the kind of data
+            ahead = items[index + 1 : index + 4]
+            end = next((n for n, i in enumerate(ahead) if i.role not in ("unknown",)), None)
+            if (
+                end is not None
+                and _purpose(ahead[end])
+                and len(text[item.end : ahead[0].start]) <= 1
+            ):
+                item.role = "filler"
+                item.data["scenery"] = "purposes"
             continue
-        gap = text[item.end : following.start]
-        named = item.role in ("head", "plot")  # "Apple-counting", "Vineyard-robot"
-        if (item.role == "health" and len(gap) <= 1) or (named and gap == "-"):
+        following = items[index + 1] if index + 1 < len(items) else None
+        # "Apple-counting", "Vineyard-robot"
+        if (
+            following is not None
+            and _purpose(following)
+            and item.role in ("head", "plot")
+            and text[item.end : following.start] == "-"
+        ):
             item.role = "filler"
             item.data["scenery"] = "purposes"
 
