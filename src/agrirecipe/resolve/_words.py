@@ -451,13 +451,13 @@ def purpose_diseases(items: Sequence[Item], text: str) -> None:
                 item.role = "filler"
                 item.data["scenery"] = "purposes"
             continue
-        following = items[index + 1] if index + 1 < len(items) else None
+        after = items[index + 1 : index + 2]
         # "Apple-counting", "Vineyard-robot"
         if (
-            following is not None
-            and _purpose(following)
+            after
+            and _purpose(after[0])
             and item.role in ("head", "plot")
-            and text[item.end : following.start] == "-"
+            and text[item.end : after[0].start] == "-"
         ):
             item.role = "filler"
             item.data["scenery"] = "purposes"
