@@ -126,3 +126,98 @@ def test_fields_in_a_line_with_a_load_named_after() -> None:
         "between the other two. Everything still green, a grain trailer on the road."
     )
     assert [f.crop for f in scene.fields] == ["Maize", "Potato", "Wheat"]
+
+
+@pytest.mark.parametrize(
+    ("prompt", "stage", "health"),
+    [
+        (
+            "Wheat, early June. The ears are out but the flag leaves are covered in bright "
+            "yellow-orange stripes of rust pustules.",
+            "Reproductive",
+            "Ill",
+        ),
+        (
+            "a plantation of Grande Naine bananas, each plant with a big purple flower bud "
+            "hanging below the young green bunch.",
+            "Reproductive",
+            "Healthy",
+        ),
+        (
+            "Onion field at the end of August, tops all flopped over and yellowing, they're "
+            "ready to lift.",
+            "Maturation",
+            "Healthy",
+        ),
+        ("onions with yellowing leaves and rot", None, "Ill"),
+        ("young wheat plants", "Vegetative", "Healthy"),
+    ],
+)
+def test_what_the_plants_look_like(prompt: str, stage: str | None, health: str) -> None:
+    (field,) = recipe(prompt).fields
+    assert field.health == health
+    if stage is not None:
+        assert field.stage == stage
+
+
+def test_a_banana_bell_is_flowering() -> None:
+    _, ladyfinger = recipe(
+        "a block of Dwarf Cavendish with the bunches bagged in blue plastic, and next to it "
+        "Ladyfinger bananas, taller, with the purple bell still hanging."
+    ).fields
+    assert ladyfinger.stage == "Reproductive"
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "Top half of the farm is cereals, all healthy; the bottom half is root veg with some "
+        "rot in places.",
+        "cereals at the top, root veg at the bottom",
+    ],
+)
+def test_halves_of_a_farm_with_a_category_each(prompt: str) -> None:
+    top, bottom = recipe(prompt).fields
+    assert top.crop in ("Wheat", "Maize")
+    assert bottom.crop in ("Carrot", "Potato", "Onion")
+
+
+def test_the_plot_set_apart_by_a_word_is_the_one_described() -> None:
+    scene = recipe(
+        "Valencia Late oranges in the lower grove and Moro in the upper grove; the upper "
+        "grove has blotchy mottled leaves and small lopsided fruit."
+    )
+    assert [(f.variety, f.health) for f in scene.fields] == [
+        ("Valencia", "Healthy"),
+        ("Moro", "Ill"),
+    ]
+    scene = recipe(
+        "apples in the old orchard and pears in the new orchard; the new orchard has scab"
+    )
+    assert [(f.crop, f.health) for f in scene.fields] == [("Apple", "Healthy"), ("Pear", "Ill")]
+
+
+def test_another_hectare_is_one_hectare() -> None:
+    scene = recipe("Imperator carrots on 1 ha and Danvers carrots on another hectare")
+    assert [round(f.geometry.area_m2) for f in scene.fields] == [10000, 10000]
+
+
+def test_a_city_that_is_also_a_variety() -> None:
+    oranges, _ = recipe(
+        "Here in Valencia we have a Navel orange grove right next to our Padron peppers"
+    ).fields
+    assert oranges.variety == "Navel"
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "2 cereal fields n 2 fruit ones, the fruit ones touching each other",
+        "2 cereal fields and 2 fruit fields, the fruit fields next to each other",
+    ],
+)
+def test_the_plural_named_again_is_what_lies_side_by_side(prompt: str) -> None:
+    scene = recipe(prompt)
+    fruit = {f.id for f in scene.fields if f.crop not in ("Wheat", "Maize")}
+    (relation,) = scene.relations
+    assert {relation.subject, *relation.objects} == fruit

@@ -53,6 +53,32 @@ def _counted_host(
     return host if heads and all(builder.compatible(host, h) for h in heads) else None
 
 
+def _same_modifier(kept: Sequence[Mention], mention: Mention) -> Mention | None:
+    """'Valencia in the lower grove and Moro in the upper grove; the upper grove has ...':
+    the one field named before with the word that sets this plot apart ("upper")."""
+    plots = [h for h in mention.heads if h.role == "plot"]
+    if len(plots) != 1:
+        return None
+    before = [i for i in mention.items if i.end <= plots[0].start]
+    if (
+        not before
+        or before[-1].role not in ("unknown", "filler", "stage", "other")
+        or before[-1].norm in _ARTICLES
+    ):
+        return None
+    word = before[-1].norm
+    fields = [r for m in kept for r in (m.refinements or [m])]
+    same = [
+        m
+        for m in fields
+        if any(a.norm == word and b.role == "plot" for a, b in itertools.pairwise(m.items))
+    ]
+    return same[0] if len(same) == 1 else None
+
+
+_ARTICLES = frozenset({"the", "a", "an", "this", "that", "our", "my", "its", "their"})
+
+
 def _compatible(builder: MentionBuilder, target: Mention, mention: Mention) -> bool:
     if target.refinements or target.rest is not None:
         return False
@@ -128,7 +154,14 @@ def merge_coreferences(
                 for k in reversed(kept)
                 if strong_crops(k) == own_crops and k.count is None and not k.refinements
             ][:1]
-        anaphoric = (
+        # "Valencia in the lower grove and Moro in the upper grove; the upper grove has
+        # ...": the one field whose plot the same word set apart
+        same_plot = (
+            _same_modifier(kept, mention)
+            if is_definite and mention.count is None and not strong_crops(mention)
+            else None
+        )
+        anaphoric = same_plot is not None or (
             (mention.count is None or summary)
             # "jonagored apples AND fuji apples, 2 separate blocks": still those two
             and (not mention.distinct or summary)
@@ -155,6 +188,7 @@ def merge_coreferences(
             ),
             None,
         )
+        member = member or same_plot
         host = (
             _counted_host(builder, kept, mention)
             if is_definite and not summary and (first is None or first.norm not in EACH)

@@ -206,7 +206,12 @@ class MentionBuilder:
                 return False  # "an orchard vineyard": two plots, two fields
             if mention.has_crop and spec["options"]:
                 return not _plot_excludes(spec, mention)  # "a carrot orchard": two things
-            return True
+            # "cereals at the top, root veg at the bottom": two fields
+            return (
+                mention.category is None
+                or not spec["options"]
+                or any(self.crop_categories.get(c) == mention.category for c in spec["options"])
+            )
         interpretations = _interpretations(item)
         categories = [str(s.value) for s in item.senses_of("category")]
         if categories and not interpretations:

@@ -93,8 +93,11 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
         elif listed and _continues_with(clauses[position - 1], mention):
             # "apples with scab spots on the leaves and corky fruit": still the apples'
             listed, described = False, True
+        # "the fruit ones": the fields of fruit named before, not their fruit
+        ones = any(i.norm in ("ones", "fields", "plots", "blocks") for i in mention.items)
         if (
             not (own_fruit or all(h.norm in words for h in mention.heads))
+            or ones
             or (
                 mention.count is not None
                 and not (definite or fraction or one_described or predicate)

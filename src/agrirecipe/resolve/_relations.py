@@ -727,6 +727,9 @@ def coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:
     if index < 0:
         return []
     group = [clauses[index].mentions[-1]]
+    said = clauses[index].items
+    if said and said[0].norm in ("the", "these", "those", "both") and (group[0].count or 1) > 1:
+        return group  # "2 cereal fields n 2 fruit ones, the fruit ones touching each other"
     seen = {id(group[0])}  # identity: comparing mentions field by field made this cubic
     while index > 0 and listing(clauses[index].link):
         previous = clauses[index - 1]

@@ -299,7 +299,10 @@ def _named_month(item: Item, previous: Item | None) -> bool:
 
 
 def _amount(item: Item) -> float | None:
-    """The number an item stands for when a unit follows ("2", "two", "half a", "a")."""
+    """The number an item stands for when a unit follows ("2", "two", "half a", "a",
+    "another")."""
+    if item.norm == "another":  # "... on another hectare": one more of the unit
+        return 1.0
     if item.role in ("number", "fraction") or item.has("number", "fraction"):
         if item.senses:
             sense = item.senses_of("number", "fraction")

@@ -13,6 +13,8 @@ each decides what a word is in its place, where the lexicon alone cannot:
     word before scenery, is a colour; a crop word before  "an orange tractor",
     a machine names its load                              "a grain trailer"
 2b  "different" before a measure says nothing of crops    "at different densities"
+2c  a colour change beside a ripeness cue is ripening;   "flopped over and yellowing",
+    a young part of the plant is no young field           "the young green bunch"
 3   readiness said of the past or of other things         "ready for the fleece"
 4   a stage word or cue after a negation says nothing     "not in ear yet"
 5   "all" before a plain word stresses it                 "all green and even"
@@ -48,6 +50,7 @@ def read_words(items: Sequence[Item], text: str) -> None:
     _measures_are_not_counts(items)
     _colours_are_not_crops(items, text)
     _measured_differences(items)
+    _ripening_colours(items)
     _past_and_other_readiness(items)
     _negated_looks(items)
     _all_as_intensifier(items)
@@ -201,6 +204,37 @@ def _colours_are_not_crops(items: Sequence[Item], text: str) -> None:
             if crop.role in ("head", "other_crop") and colour.norm in reader_words("colours"):
                 crop.role = "filler"
                 crop.data["colour"] = True
+
+
+def _ripening_colours(items: Sequence[Item]) -> None:
+    """'tops all flopped over and yellowing': a colour change said with a ripeness cue is
+    the crop ripening (senescence), not disease; 'the young green bunch': a young part of
+    the plants says nothing of the field's stage."""
+    for index, item in enumerate(items):
+        if item.role != "health" or item.norm not in reader_words("senescence"):
+            continue
+        near = [i for i in items[max(0, index - 3) : index + 4] if i is not item]
+        if any(_ripeness(i) for i in near):
+            item.role = "filler"
+    # "a purple flower bud below the young green bunch": the part is young, not the field
+    parts = reader_words("young_parts")
+    for index, item in enumerate(items):
+        if item.role == "stage" and item.norm in ("young", "new", "fresh"):
+            following = [i for i in items[index + 1 : index + 3] if i.role != "filler"]
+            if any(i.norm in parts for i in items[index + 1 : index + 3]) and not any(
+                i.role in ("head", "plot") for i in following[:1]
+            ):
+                item.role = "filler"
+
+
+def _ripeness(item: Item) -> bool:
+    """A cue or stated word for a ripening crop ("tops flopped over", "ready to lift")."""
+    if item.role == "stage":
+        return str(item.data.get("value")) == "Maturation"
+    return item.role == "cue" and any(
+        sense.value.attribute == "stage" and sense.value.value == "Maturation"
+        for sense in item.senses_of("cue")
+    )
 
 
 def _measured_differences(items: Sequence[Item]) -> None:
