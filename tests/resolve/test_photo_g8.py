@@ -221,3 +221,30 @@ def test_the_plural_named_again_is_what_lies_side_by_side(prompt: str) -> None:
     fruit = {f.id for f in scene.fields if f.crop not in ("Wheat", "Maize")}
     (relation,) = scene.relations
     assert {relation.subject, *relation.objects} == fruit
+
+
+def test_lettered_plots_placed_by_their_letters() -> None:
+    scene = recipe(
+        "Plots for the farm map. A: Agria potatoes, 2 ha. B: Red Baron onions, 1 ha. C: "
+        "Chantenay carrots, 1 ha. D: Golden Acre cabbage, 0.5 ha. A is north of B, C is east "
+        "of B, and D sits between A and C."
+    )
+    a, b, c, d = (f.id for f in scene.fields)
+    assert [f.variety for f in scene.fields] == ["Agria", "Red Baron", "Chantenay", "Golden Acre"]
+    assert {(r.kind, r.subject, r.objects) for r in scene.relations} == {
+        ("north_of", a, (b,)),
+        ("east_of", c, (b,)),
+        ("between", d, (a, c)),
+    }
+
+
+def test_counted_blocks_placed_by_a_fronted_direction_each() -> None:
+    scene = recipe(
+        "Two blocks either side of the packing shed. To the north, Jonagored apples: 320 "
+        "trees in rows 3.5 m apart. To the south, 280 Conference pear trees."
+    )
+    apples, pears = scene.fields
+    assert (apples.variety, pears.variety) == ("Jonagold", "Conference")
+    assert ("north_of", apples.id, (pears.id,)) in {
+        (r.kind, r.subject, r.objects) for r in scene.relations
+    }

@@ -53,6 +53,20 @@ def _counted_host(
     return host if heads and all(builder.compatible(host, h) for h in heads) else None
 
 
+def _placed_first(clauses: Sequence[Clause], clause: Clause) -> bool:
+    """Whether a direction alone opens the clause's sentence ("Two blocks ... . To the
+    north, Jonagored apples: ..."): the field after it is placed, one of those counted."""
+    if clause.index == 0 or clause.link is None or clause.link.norm != ",":
+        return False
+    before = clauses[clause.index - 1]
+    return (
+        not before.items
+        and not before.mentions
+        and before.link is not None
+        and before.link.role in ("trailer", "relation")
+    )
+
+
 def _same_modifier(kept: Sequence[Mention], mention: Mention) -> Mention | None:
     """'Valencia in the lower grove and Moro in the upper grove; the upper grove has ...':
     the one field named before with the word that sets this plot apart ("upper")."""
@@ -191,7 +205,9 @@ def merge_coreferences(
         member = member or same_plot
         host = (
             _counted_host(builder, kept, mention)
-            if is_definite and not summary and (first is None or first.norm not in EACH)
+            if (is_definite or _placed_first(clauses, clause))
+            and not summary
+            and (first is None or first.norm not in EACH)
             else None
         )
         if host is not None and member is None:

@@ -33,6 +33,11 @@ _DEFINITION = re.compile(
 )
 # "A = Roma, B = San Marzano": a bare letter given a crop by an equals sign
 _BARE_DEFINITION = re.compile(r"(?<![\w=])(?P<label>[A-H])\s*(?P<mark>=)(?!=)")
+# "A: Agria potatoes, 2 ha. B: Red Baron onions": a bare letter opening a sentence, then a
+# colon
+_SENTENCE_DEFINITION = re.compile(r"(?:^|(?<=[.;!?]\s))(?P<label>[A-H])\s*(?P<mark>:)")
+# "A is north of B": a label as the subject of a placing verb
+_SUBJECT_VERBS = r"(?:is|sits|lies|are|stands|goes|runs|borders|adjoins|touches)"
 # What a reference to a label follows: a relation word, or the label's noun.
 _BEFORE_REFERENCE = (
     r"(?:of|to|from|beside|besides|by|and|than|next to|alongside|between|put|place|with)"
@@ -51,13 +56,13 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
     label ("Block A = Jonagored apples"). Text with fewer than two labels that name
     crops is returned unchanged.
     """
-    definitions = sorted(
-        [*_DEFINITION.finditer(text), *_BARE_DEFINITION.finditer(text)],
-        key=lambda m: m.start(),
-    )
     text = _numbered_members(text)
     definitions = sorted(
-        [*_DEFINITION.finditer(text), *_BARE_DEFINITION.finditer(text)],
+        [
+            *_DEFINITION.finditer(text),
+            *_BARE_DEFINITION.finditer(text),
+            *_SENTENCE_DEFINITION.finditer(text),
+        ],
         key=lambda m: m.start(),
     )
     names: dict[str, str] = {}
@@ -81,6 +86,11 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
         mark = match.group("mark")
         keep = "" if mark in ":-–—=" or mark.isalpha() else mark
         out = out[: match.start()] + keep + out[match.end() :]
+    opening = out[: definitions[0].start()].rstrip()
+    if definitions[0].re is _SENTENCE_DEFINITION and opening.endswith("."):
+        # "Plots for the farm map. A: Agria potatoes, ... B: ...": the sentence before the
+        # labels introduces the fields they list
+        out = opening[:-1] + ":" + out[len(opening) :]
     for label, phrase in names.items():
         noun = rf"(?i:{_NOUNS})\s+"
         # "north of A", "beside block A" (a capital letter); "beside plot 2" (a number
@@ -93,6 +103,14 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
         template = "\\g<before>the " + phrase.replace("\\", "\\\\")
         replaced, count = pattern.subn(template, out)
         out = replaced
+        if label.isalpha():
+            # "A is north of B, and D sits between A and C"
+            subject = re.compile(
+                rf"(?:^|(?<=[.;,:]\s)|(?<=\b(?i:and)\s))(?:{noun})?{re.escape(label)}\b"
+                rf"(?=\s+(?i:{_SUBJECT_VERBS})\b)"
+            )
+            out, said = subject.subn("the " + phrase.replace("\\", "\\\\"), out)
+            count += said
         # a label never referenced is still a name, not another field ("Plot 2: ...")
         notes.append(f"{label} = {phrase}" + ("" if count else " (a label only)"))
     return out, notes
