@@ -370,8 +370,36 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
                 previous.plot = mention.plot
             clause.mentions = [m for m in clause.mentions if m is not mention]
             continue
+        if clause is not None and previous is not None and _where_it_grows(previous, mention):
+            # "Bibb lettuce transplants ..., in a field bordered by a ditch": the field the
+            # crop just named grows in, not another field
+            previous.items.extend(i for i in mention.items if i.role in ("size", "geometry"))
+            if previous.plot is None:
+                previous.plot = mention.plot
+            clause.mentions = [m for m in clause.mentions if m is not mention]
+            continue
         kept.append(mention)
     return kept
+
+
+def _where_it_grows(previous: Mention, mention: Mention) -> bool:
+    """'..., in a field with an old stone wall': a plot of no crop, said with "in" right
+    after one field of a crop, is where that crop grows."""
+    words = [i.norm for i in mention.items]
+    return (
+        previous.has_crop
+        and (previous.count or 1) == 1
+        and not mention.has_crop
+        and mention.category is None
+        and mention.plot is not None
+        and (mention.count or 1) == 1
+        and not mention.refinements
+        and not mention.other
+        and len(words) >= 3
+        and words[0] in ("in", "on")
+        and words[1] in ("a", "an", "one")
+        and previous.clause < mention.clause
+    )
 
 
 def _heads_its_list(mention: Mention, later: Sequence[Mention]) -> bool:

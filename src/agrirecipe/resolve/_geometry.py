@@ -549,7 +549,7 @@ _COUNTED_CROP_ROWS = re.compile(
     r"(?<![\w.,])(?P<n>\d+|(?i:two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|"
     r"fifteen|twenty|thirty|forty|fifty|sixty))\s+(?P<mod>(?i:single|double|twin)\s+)?"
     r"(?P<words>[A-Za-z][\w'’-]*(?:\s+[A-Za-z][\w'’-]*)?)\s+"
-    r"(?P<noun>(?i:rows|ridges|drills|beds(?=\s*(?:,\s*)?(?:(?:at|on|of|x|by|with|spaced|each)\s|\d))))\b"
+    r"(?P<noun>(?i:rows|ridges|drills|beds(?=\s*(?:,\s*)?(?:(?:at|on|of|x|by|with|spaced|each)\s|\d|\())))\b"
 )
 
 

@@ -56,7 +56,7 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
     label ("Block A = Jonagored apples"). Text with fewer than two labels that name
     crops is returned unchanged.
     """
-    text = _numbered_members(text)
+    text = _valued_members(_numbered_members(text))
     definitions = sorted(
         [
             *_DEFINITION.finditer(text),
@@ -147,6 +147,41 @@ def _numbered_members(text: str) -> str:
         else:
             word = "the first" if label in "1A" else "the second"
         out = out[: match.start()] + word + out[match.end() :]
+    return out
+
+
+# "the 70k plot lies north of the 95k plot": a member named by the number said for it
+_VALUED_MEMBER = re.compile(
+    r"\b(?i:the)\s+(?P<value>\d[\d,.]*\s?[kK]?)\s+(?i:plot|block|field|strip|bed|parcel)\b"
+)
+_NUMBER = re.compile(r"\d[\d,.]*\s?[kK]?\b")
+_ORDINAL_WORDS = ("the first", "the second", "the third", "the fourth")
+
+
+def _number_of(text: str) -> float | None:
+    words = text.replace(",", "").replace(" ", "").lower()
+    scale = 1000.0 if words.endswith("k") else 1.0
+    try:
+        return float(words.rstrip("k")) * scale
+    except ValueError:
+        return None
+
+
+def _valued_members(text: str) -> str:
+    """``text`` with "the 70k plot ... the 95k plot" written "the first ... the second"
+    when each number was said before for one member, in that order ("one sown at 70,000
+    plants/ha and one at 95,000")."""
+    references = list(_VALUED_MEMBER.finditer(text))
+    values = [_number_of(m.group("value")) for m in references]
+    if len(references) < 2 or None in values or len(set(values)) < 2:
+        return text
+    said = [_number_of(m.group()) for m in _NUMBER.finditer(text[: references[0].start()])]
+    order = [v for v in dict.fromkeys(x for x in said if x in values)]
+    if len(order) != len(set(values)) or len(order) > len(_ORDINAL_WORDS):
+        return text
+    out = text
+    for match, value in reversed(list(zip(references, values, strict=True))):
+        out = out[: match.start()] + _ORDINAL_WORDS[order.index(value)] + out[match.end() :]
     return out
 
 

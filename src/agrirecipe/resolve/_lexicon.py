@@ -174,6 +174,18 @@ def tokenize(prompt: str) -> list[Token]:
         norm = normalise(raw)
         if re.fullmatch(r"\d+(?:[.,]\d+)*", raw):
             norm = _number_text(raw)
+        if (
+            norm == "k"
+            and tokens
+            and tokens[-1].end == match.start()
+            and number_value(tokens[-1].norm) is not None
+        ):
+            # "the 70k plot", "1.2k trees": thousands
+            thousands = float(tokens[-1].norm) * 1000
+            start = tokens[-1].start
+            text = f"{thousands:f}".rstrip("0").rstrip(".")
+            tokens[-1] = Token(text, prompt[start : match.end()], start, match.end())
+            continue
         tokens.append(Token(norm, prompt[match.start() : match.end()], match.start(), match.end()))
     return tokens
 

@@ -149,6 +149,24 @@ def read_relations(
                     )
                 )
             continue
+        ordinals = _ordinal_pair(clauses, position)
+        if ordinals is not None and link.role == "relation" and before:
+            # "one at 70,000 plants/ha, the other at 100,000; the first north of the second"
+            fields = next(
+                (f for m in reversed(before) if len(f := members.get(id(m), [])) >= 2), []
+            )
+            kind = link.data["value"]
+            first, second = ordinals
+            if max(first, second) < len(fields) and kind in get_args(RelationKind):
+                relations.append(
+                    RelationIntent(
+                        kind=kind,
+                        subject=fields[first],
+                        objects=(fields[second],),
+                        text=link.raw,
+                    )
+                )
+                continue
         listed = _listed_middle(clauses, position, link)
         if listed is not None:
             relations.extend(_pair("between", listed[0], listed[1], members, link, trace))
@@ -269,6 +287,27 @@ def _then_chain(
             _pair("between", fields[1], (fields[0], fields[2]), members, link_item, trace)
         )
     return relations
+
+
+_ORDINALS = {"first": 0, "second": 1, "third": 2, "fourth": 3}
+
+
+def _ordinal_pair(clauses: Sequence[Clause], position: int) -> tuple[int, int] | None:
+    """The members "the first ... north of the second" name (0-based), or None."""
+
+    def ordinal(clause: Clause) -> int | None:
+        words = [w for i in clause.items for w in i.norm.split() if w not in ("the", "one")]
+        if clause.mentions or len(words) != 1 or words[0] not in _ORDINALS:
+            return None
+        return _ORDINALS[words[0]]
+
+    if position == 0:
+        return None
+    before = clauses[position - 1]
+    said = [i for i in before.items if i.norm not in ("is", "lies", "sits", "are")]
+    subject = ordinal(Clause(items=said, link=before.link, index=before.index))
+    obj = ordinal(clauses[position])
+    return (subject, obj) if subject is not None and obj is not None else None
 
 
 def _one_and_the_other(clauses: Sequence[Clause], position: int) -> bool:

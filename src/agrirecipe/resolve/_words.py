@@ -104,7 +104,12 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
             first.role = "filler"
     # "between the two tracks", "three tractors": a number before scenery counts it
     for item, following in itertools.pairwise(items):
-        if item.role == "number" and item.norm not in ("a", "an") and following.scenery:
+        if (
+            item.role == "number"
+            and item.norm not in ("a", "an")
+            and following.scenery
+            and not _structure(following)
+        ):
             item.role = "filler"
             item.data["counts_scenery"] = True
         elif item.role == "number" and item.norm in ("a", "an") and following.role == "cue":
@@ -134,6 +139,18 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
         if (of_plants and not any(i.role == "plot" for i in ahead[:1])) or plants_named:
             item.role = "filler"
             item.data["counts_plants"] = True
+    # "the 70k plot lies north of the 95k plot": a number before one plot names it
+    for before, item, following in zip(items, items[1:], items[2:], strict=False):
+        spec = following.data.get("value") if following.role == "plot" else None
+        if (
+            before.norm in ("the", "this", "that")
+            and item.role == "number"
+            and isinstance(spec, dict)
+            and not spec.get("plural")
+            and not spec.get("individual")
+        ):
+            item.role = "filler"
+            item.data["label"] = True
     # "on 20 April", "April 3rd": a day of the month is a date, not a count of fields
     words = [i for i in items if i.role != "separator" or i.norm not in (",",)]
     for index, item in enumerate(words):
@@ -151,6 +168,11 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
         ):
             item.role = "filler"
             item.data["date"] = True
+
+
+def _structure(item: Item) -> bool:
+    """A structure crops grow under ("tunnels"), which a number may count as fields."""
+    return any(sense.value == "structures" for sense in item.senses_of("scenery"))
 
 
 def _crops_of(item: Item) -> set[str]:
@@ -194,8 +216,22 @@ def _colours_are_not_crops(items: Sequence[Item], text: str) -> None:
                 # "a grain trailer", "the potato harvester": what the machine carries
                 or any(sense.value == "machines" for sense in second.senses_of("scenery"))
             )
+        ) or (
+            # "Rusty watering can", "a rusted gate": the scenery's look, not the crop's
+            first.role == "health"
+            and first.norm in reader_words("worn_looks")
+            and second.has("scenery")
+            and not second.has("crop", "variety", "plot", "category")
         ):
             first.role = "filler"
+            first.data["colour"] = True
+            continue
+        if (
+            first.norm in reader_words("colour_crops")
+            and second.norm in reader_words("colours")
+            and text[first.end : second.start] == " "
+        ):
+            first.role = "filler"  # "olive green blotches", "lime green", "cherry red"
             first.data["colour"] = True
             continue
         if text[first.end : second.start] != "-":
@@ -215,6 +251,10 @@ def _ripening_colours(items: Sequence[Item]) -> None:
             continue
         near = [i for i in items[max(0, index - 3) : index + 4] if i is not item]
         if any(_ripeness(i) for i in near):
+            item.role = "filler"
+    # "tops still green but the roots ... ready for lifting": the leaves, not the field
+    for before, item in itertools.pairwise(items):
+        if item.role == "stage" and before.norm in reader_words("green_parts"):
             item.role = "filler"
     # "a purple flower bud below the young green bunch": the part is young, not the field
     parts = reader_words("young_parts")
@@ -381,7 +421,7 @@ def _plots_of_a_list(items: Sequence[Item]) -> None:
             and index + 1 < len(items)
             and items[index + 1].role == "number"
         )
-        if (item.norm not in ("in", "on") and not summary) or index == 0:
+        if (item.norm not in ("in", "on", "into") and not summary) or index == 0:
             continue
         cursor, between = index + 1, list[Item]()
         while (
@@ -402,6 +442,8 @@ def _plots_of_a_list(items: Sequence[Item]) -> None:
             continue
         plot = items[cursor]
         spec = plot.data.get("value") if plot.role == "plot" else None
+        if _structure(plot) and plot.norm.endswith("s"):
+            spec = {"plural": True}  # "tomatoes and peppers in two long tunnels"
         if not isinstance(spec, dict) or spec.get("individual"):
             continue
         crops, comma, joined = 0, False, False

@@ -1,0 +1,154 @@
+"""Text of blind set g9 (issue 8): the field a crop is "in" said after it, tunnels a
+list of crops is grown in, shades named by a crop ("olive green"), ripening and damage
+seen on a part of the plant, thousands written "70k", plots named by the number said for
+them, "the first ... north of the second", "a 120-tree orchard", counted crop beds and
+words of a request ("digital twin", "arable plots")."""
+
+from __future__ import annotations
+
+import pytest
+
+from agrirecipe import generate
+from agrirecipe.recipe import SceneRecipe
+
+
+def recipe(prompt: str) -> SceneRecipe:
+    return generate(prompt, resolver="hybrid").recipe
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "Bibb lettuce transplants just planted in early May, little rosettes on white plastic "
+        "mulch, in a field bordered by a drainage ditch and a barbed-wire fence.",
+        "Golden Acre cabbages in my photo, round and pale green and clearly harvest-ready, in "
+        "a field with an old stone wall.",
+    ],
+)
+def test_the_field_a_crop_is_in_is_no_other_field(prompt: str) -> None:
+    assert len(recipe(prompt).fields) == 1
+
+
+def test_another_field_placed_with_in_is_still_a_field() -> None:
+    assert [f.crop for f in recipe("wheat, and in a field next to it, maize").fields] == [
+        "Wheat",
+        "Maize",
+    ]
+
+
+@pytest.mark.parametrize(
+    ("prompt", "count"),
+    [
+        (
+            "plum tomatoes and California Wonder peppers in two long tunnels side by side, "
+            "fans running and a hosepipe across the floor",
+            2,
+        ),
+        (
+            "Tomatoes and peppers just transplanted into two fields side by side, with a "
+            "planting machine and three people on it at the far end.",
+            2,
+        ),
+        (
+            "Strawberries under the two tunnels - Elsanta in one and Malling Centenary in the "
+            "other, both loaded with ripe fruit.",
+            2,
+        ),
+    ],
+)
+def test_plots_and_tunnels_a_list_is_grown_in(prompt: str, count: int) -> None:
+    assert len(recipe(prompt).fields) == count
+
+
+@pytest.mark.parametrize(
+    ("prompt", "stage", "health"),
+    [
+        (
+            "pic of the Golden Delicious trees by the road - fruit nearly ready, and the leaves "
+            "have olive green blotches.",
+            None,
+            "Ill",
+        ),
+        (
+            "the huge banana leaves are streaked with dark brown-black stripes and lots of "
+            "them have gone ragged and dry at the edges.",
+            None,
+            "Ill",
+        ),
+        (
+            "a bed of San Marzano tomatoes just starting to turn red. Rusty watering can and "
+            "compost heap in the corner.",
+            "Maturation",
+            "Healthy",
+        ),
+        (
+            "Cayenne pepper plants, long thin chillies hanging in clusters and most of them "
+            "already bright red.",
+            "Maturation",
+            "Healthy",
+        ),
+        (
+            "chantenay carrots in mid October, tops still green but the roots we pulled are "
+            "full size and ready for lifting",
+            "Maturation",
+            "Healthy",
+        ),
+    ],
+)
+def test_looks_of_the_plants(prompt: str, stage: str | None, health: str) -> None:
+    (field,) = recipe(prompt).fields
+    assert field.health == health
+    if stage is not None:
+        assert field.stage == stage
+
+
+def test_a_field_named_by_its_density_in_thousands() -> None:
+    north, south = recipe(
+        "two maize plots of 12 rows x 40 m, 75 cm rows, one sown at 70,000 plants/ha and one "
+        "at 95,000 plants/ha; the 70k plot lies north of the 95k plot."
+    ).fields
+    scene = recipe(
+        "two maize plots of 12 rows x 40 m, 75 cm rows, one sown at 70,000 plants/ha and one "
+        "at 95,000 plants/ha; the 95k plot lies north of the 70k plot."
+    )
+    assert north.plants_per_ha < south.plants_per_ha
+    (relation,) = scene.relations
+    assert (relation.kind, relation.subject, relation.objects) == (
+        "north_of",
+        scene.fields[1].id,
+        (scene.fields[0].id,),
+    )
+
+
+@pytest.mark.parametrize(
+    ("said", "subject"),
+    [("plot 1 north of plot 2", 0), ("the second is north of the first", 1)],
+)
+def test_ordinal_members_in_a_relation(said: str, subject: int) -> None:
+    scene = recipe(f"two maize plots, plot 1 at 70,000 plants/ha, plot 2 at 100,000; {said}.")
+    (relation,) = scene.relations
+    assert relation.subject == scene.fields[subject].id
+    assert relation.objects == (scene.fields[1 - subject].id,)
+
+
+def test_a_count_of_trees_before_its_orchard() -> None:
+    _, cherries = recipe(
+        "A 0.6 ha strawberry field on 1.5 m beds, directly south of a 120-tree cherry orchard."
+    ).fields
+    assert cherries.nominal_plant_count == 120
+
+
+def test_counted_crop_beds_and_a_digital_twin() -> None:
+    scene = recipe(
+        "Market-garden digital twin: 10 strawberry beds (1.5 m centres, 2 rows per bed) south "
+        "of a 12-row lettuce block at 35 cm row spacing. Rows 30 m long in both."
+    )
+    assert [(f.crop, f.bed_count) for f in scene.fields] == [("Strawberry", 10), ("Lettuce", 12)]
+
+
+def test_arable_plots_are_plots() -> None:
+    scene = recipe(
+        "Two arable plots for the GNSS guidance trial: a 2 ha maize field, and east of it a "
+        "3 ha wheat field."
+    )
+    assert [f.crop for f in scene.fields] == ["Maize", "Wheat"]
