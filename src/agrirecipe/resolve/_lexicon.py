@@ -168,7 +168,7 @@ _TOKEN = re.compile(r"\d+(?:[.,]\d+)*|[^\W\d_]+|[^\w\s'’\-]|(?<=\s)-(?=\s)|(?<
 def tokenize(prompt: str) -> list[Token]:
     """The prompt's tokens; ``"50x100m"`` is ``50``, ``x``, ``100``, ``m``."""
     text = prompt.replace("²", "2")
-    tokens = []
+    tokens: list[Token] = []
     for match in _TOKEN.finditer(text):
         raw = match.group()
         norm = normalise(raw)

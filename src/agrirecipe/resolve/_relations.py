@@ -156,13 +156,13 @@ def read_relations(
                 (f for m in reversed(before) if len(f := members.get(id(m), [])) >= 2), []
             )
             kind = link.data["value"]
-            first, second = ordinals
-            if max(first, second) < len(fields) and kind in get_args(RelationKind):
+            said_first, said_second = ordinals
+            if max(ordinals) < len(fields) and kind in get_args(RelationKind):
                 relations.append(
                     RelationIntent(
                         kind=kind,
-                        subject=fields[first],
-                        objects=(fields[second],),
+                        subject=fields[said_first],
+                        objects=(fields[said_second],),
                         text=link.raw,
                     )
                 )
