@@ -152,3 +152,25 @@ def test_arable_plots_are_plots() -> None:
         "3 ha wheat field."
     )
     assert [f.crop for f in scene.fields] == ["Maize", "Wheat"]
+
+
+def test_a_category_naming_a_site_is_no_field_and_a_plural_crop_is_all_its_blocks() -> None:
+    scene = recipe(
+        "Fruit research station digital twin, three blocks north to south: Comice pears, "
+        "Durondeau pears, Sweetheart Lapins cherries. Pears planted 3.5 m x 1 m, cherries "
+        "4.6 m x 2.4 m; each block 0.4 ha."
+    )
+    assert [(f.variety, f.agronomy.row_spacing_m) for f in scene.fields] == [
+        ("Doyenne du Comice", 3.5),
+        ("Durondeau", 3.5),
+        ("Lapins", 4.6),
+    ]
+    assert all(round(f.geometry.area_m2) == 4000 for f in scene.fields)
+
+
+def test_a_block_said_after_the_measures_of_its_crop() -> None:
+    (field,) = recipe(
+        "Lady Finger bananas on our Queensland test farm: 3 m x 3 m grid, 1,111 plants/ha, a "
+        "90 x 60 m block, filmed in July for a drone obstacle dataset."
+    ).fields
+    assert field.geometry.size_m == (90.0, 60.0)

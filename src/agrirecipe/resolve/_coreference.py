@@ -270,6 +270,16 @@ def merge_coreferences(
                 # "two vineyard blocks: Chardonnay and Riesling. October, grapes ripe":
                 # the crop every field named is, said again, describes them all.
                 run = candidates
+            elif (
+                bare
+                and len(candidates) >= 2
+                and not names_variety
+                and mention.count is None
+                and all(h.norm.endswith("s") for h in mention.heads if h.role == "head")
+            ):
+                # "Comice pears, Durondeau pears, Lapins cherries. Pears planted 3.5 m x
+                # 1 m, cherries ...": the plural of a crop named again is all its fields
+                run = candidates
         if not run:
             kept.append(mention)
             continue
@@ -361,7 +371,16 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
             and not mention.refinements
             and clause.link is not None
             and clause.link.norm == ","
-            and previous.clause == mention.clause - 1
+            # ("Lady Finger bananas: 3 m x 3 m grid, 1,111 plants/ha, a 90 x 60 m block")
+            and all(
+                not c.mentions
+                and all(
+                    i.role in ("geometry", "filler", "place", "container", "unknown")
+                    for i in c.items
+                )
+                for c in clauses[previous.clause + 1 : mention.clause]
+            )
+            and previous.clause < mention.clause
             and all(i.role in ("number", "size", "plot", "filler") for i in clause.items)
             and any(i.role == "size" for i in clause.items)
         ):

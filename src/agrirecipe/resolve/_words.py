@@ -215,6 +215,12 @@ def _colours_are_not_crops(items: Sequence[Item], text: str) -> None:
                 first.norm in reader_words("colours")
                 # "a grain trailer", "the potato harvester": what the machine carries
                 or any(sense.value == "machines" for sense in second.senses_of("scenery"))
+                # "Fruit research station": what a site or building is for
+                or (
+                    first.has("category")
+                    and not first.has("crop", "variety")
+                    and any(s.value in ("sites", "buildings") for s in second.senses_of("scenery"))
+                )
             )
         ) or (
             # "Rusty watering can", "a rusted gate": the scenery's look, not the crop's
