@@ -174,3 +174,44 @@ def test_a_block_said_after_the_measures_of_its_crop() -> None:
         "90 x 60 m block, filmed in July for a drone obstacle dataset."
     ).fields
     assert field.geometry.size_m == (90.0, 60.0)
+
+
+@pytest.mark.parametrize(
+    ("prompt", "count"),
+    [
+        ("a lil orchard & a veg patch in front of the barn", 2),
+        ("a few diff fruits, like 4 fields, all summer", 4),
+        ("pls generate an orchard, just an orchard, idc what trees", 1),
+        ("some veggies idk maybe 2 or 3 fields", 2),
+    ],
+)
+def test_casual_counts_said_again(prompt: str, count: int) -> None:
+    assert len(recipe(prompt).fields) == count
+
+
+def test_members_with_a_size_each_and_no_comma() -> None:
+    scene = recipe("2 blocks of gala, one 40x60m one 30x60m")
+    assert [f.geometry.size_m for f in scene.fields] == [(40.0, 60.0), (30.0, 60.0)]
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "lettuce (cos) in between carrots (nantes) & cabbage (savoy) pls",
+        "california wonder peppers in the middle, cayenne on one side, padron on the other",
+    ],
+)
+def test_the_middle_one_between_the_two_named_with_it(prompt: str) -> None:
+    scene = recipe(prompt)
+    first, second, third = (f.id for f in scene.fields)
+    assert [(r.kind, r.subject, r.objects) for r in scene.relations] == [
+        ("between", first, (second, third))
+    ]
+
+
+def test_rows_in_a_line_north_to_south_in_short() -> None:
+    scene = recipe("red express, january king & savoy cabbages, 3 plots in a line n to s")
+    first, second, third = (f.id for f in scene.fields)
+    kinds = {(r.kind, r.subject, r.objects) for r in scene.relations}
+    assert ("north_of", first, (second,)) in kinds
+    assert ("north_of", second, (third,)) in kinds

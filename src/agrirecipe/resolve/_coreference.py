@@ -26,7 +26,7 @@ from agrirecipe.resolve._structure import (
     same_variety,
     strong_crops,
 )
-from agrirecipe.resolve._words import SENTENCE_MARKS
+from agrirecipe.resolve._words import SENTENCE_MARKS, reader_words
 
 __all__ = ["drop_list_headings", "merge_appositive_plots", "merge_coreferences"]
 
@@ -389,6 +389,22 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
                 previous.plot = mention.plot
             clause.mentions = [m for m in clause.mentions if m is not mention]
             continue
+        if (
+            clause is not None
+            and previous is not None
+            and _count_said_again(clause, previous, mention)
+        ):
+            # "a few diff fruits, like 4 fields", "some veggies maybe 2 or 3 fields": how
+            # many of them; "an orchard, just an orchard": the same field said again
+            if (
+                mention.plot is not None
+                and mention.count is not None
+                and clause.link is not None
+                and clause.link.norm != "or"
+            ):
+                previous.count = mention.count
+            clause.mentions = [m for m in clause.mentions if m is not mention]
+            continue
         if clause is not None and previous is not None and _where_it_grows(previous, mention):
             # "Bibb lettuce transplants ..., in a field bordered by a ditch": the field the
             # crop just named grows in, not another field
@@ -399,6 +415,32 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
             continue
         kept.append(mention)
     return kept
+
+
+def _count_said_again(clause: Clause, previous: Mention, mention: Mention) -> bool:
+    """Whether ``mention`` only says again how many fields ``previous`` is ("a few
+    different fruits, like 4 fields"; "maybe 2 or 3 fields") or repeats it ("an orchard,
+    just an orchard")."""
+    if clause.link is None or mention.has_crop or mention.category is not None:
+        return False
+    if previous.clause >= mention.clause or mention.refinements or previous.refinements:
+        return False
+    words = [i.norm for i in clause.items]
+    heads = [h.norm for h in mention.heads]
+    if words[:1] in (["just"], ["only"], ["simply"]) and heads == [h.norm for h in previous.heads]:
+        return clause.link.norm == ","
+    plural = mention.plot is not None and bool(mention.plot.get("plural"))
+    return (
+        plural
+        and (previous.has_crop or previous.category is not None)
+        and mention.count is not None
+        and clause.link.norm in (",", "or")
+        and all(i.role in ("number", "filler", "plot") for i in clause.items)
+        and (
+            clause.link.norm == "or"
+            or any(i.norm in reader_words("approximately") for i in clause.items)
+        )
+    )
 
 
 def _where_it_grows(previous: Mention, mention: Mention) -> bool:

@@ -172,7 +172,7 @@ def read_relations(
             relations.extend(_pair("between", listed[0], listed[1], members, link, trace))
             continue
         if link.role == "trailer" and link.data.get("value") in ("each_side", "middle"):
-            pairs = _surrounded(str(link.data["value"]), clauses, position, before)
+            pairs = _surrounded(str(link.data["value"]), clauses, position, before, after)
         elif (fronted := _fronted(clauses, position)) is not None:
             # "...; west of the peppers an onion plot": the field after the object
             pairs = (link.data.get("value", "next_to"), fronted[0], (fronted[1],))
@@ -571,7 +571,11 @@ def _row(
 
 
 def _surrounded(
-    value: str, clauses: Sequence[Clause], position: int, before: Sequence[Mention]
+    value: str,
+    clauses: Sequence[Clause],
+    position: int,
+    before: Sequence[Mention],
+    after: Sequence[Mention] = (),
 ) -> tuple[Any, Mention, tuple[Mention, ...]] | None:
     """'Z with X on each side' and 'X, Y and Z, Z in the middle': Z between the other two.
 
@@ -591,6 +595,25 @@ def _surrounded(
         return "between", distinct[-2], (distinct[-1], distinct[-1])
     middle = before[-1] if before else None
     others = [m for m in distinct if m is not middle]
+    if middle is not None and not others:
+        # "california wonder in the middle, cayenne on one side, padron on the other": the
+        # two named after it in its sentence
+        end = next(
+            (
+                c.index
+                for c in clauses[position + 1 :]
+                if c.link is not None and c.link.norm in (".", "!", "?", ";")
+            ),
+            len(clauses),
+        )
+        others = list(
+            {
+                id(m): m for c in clauses[position + 1 : end] for m in c.named if m is not middle
+            }.values()
+        )
+        if len(others) == 2:
+            return "between", middle, (others[0], others[1])
+        return None
     if middle is not None and len(others) == 1 and (others[0].count or 1) == 2:
         return "between", middle, (others[0], others[0])  # "two potato fields and ..."
     if middle is None or len(others) != 2:
@@ -640,6 +663,8 @@ def _relation_mentions(
             # strawberries": the two fields named last
             return kind, after[0], (before[-2], before[-1])
     if link.role == "between":
+        # each once ("carrots (nantes) & cabbage (savoy)" names each twice)
+        after = list({id(m): m for m in after}.values())
         if after and before and (after[0].count or 1) >= 2:
             return "between", before[-1], (after[0], after[0])
         if len(after) < 2:
