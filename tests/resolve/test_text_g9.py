@@ -6,6 +6,8 @@ words of a request ("digital twin", "arable plots")."""
 
 from __future__ import annotations
 
+import itertools
+
 import pytest
 
 from agrirecipe import generate
@@ -215,3 +217,84 @@ def test_rows_in_a_line_north_to_south_in_short() -> None:
     kinds = {(r.kind, r.subject, r.objects) for r in scene.relations}
     assert ("north_of", first, (second,)) in kinds
     assert ("north_of", second, (third,)) in kinds
+
+
+def test_a_label_without_a_mark_among_labels_with_one() -> None:
+    scene = recipe(
+        "Plot 1 is Gala apples in full bloom, plot 2 Kordia cherries also blossoming, and plot "
+        "3 is Elsanta strawberries we only just planted. It's mid-April."
+    )
+    assert [f.variety for f in scene.fields] == ["Gala", "Kordia", "Elsanta"]
+
+
+def test_a_category_plot_and_a_field_of_another_category_placed_against_it() -> None:
+    scene = recipe("Vegetable garden east of the farmhouse, fruit on the west side of it.")
+    assert len(scene.fields) == 2
+    (relation,) = scene.relations
+    assert relation.kind == "west_of"
+
+
+@pytest.mark.parametrize(
+    ("prompt", "stage", "season"),
+    [
+        (
+            "It's October and we're lifting the Imperator carrots, sown back in April; the crop "
+            "is clean.",
+            "Maturation",
+            "Fall",
+        ),
+        (
+            "just the one feild this year, jalapenos, planted out last week, its june now and "
+            "they look healthy",
+            "Vegetative",
+            "Summer",
+        ),
+    ],
+)
+def test_what_is_being_done_says_the_stage(prompt: str, stage: str, season: str) -> None:
+    (field,) = recipe(prompt).fields
+    assert (field.stage, field.season) == (stage, season)
+
+
+@pytest.mark.parametrize(
+    ("prompt", "kind", "subject", "obj"),
+    [
+        (
+            "North of the packing shed is the Doyenné du Comice block; south of the shed we "
+            "have the Williams' Bon Chrétien pears.",
+            "north_of",
+            0,
+            1,
+        ),
+        (
+            "Valencia Late oranges on the flat ground, with Gros Michel bananas along the "
+            "stream to the east of them.",
+            "east_of",
+            1,
+            0,
+        ),
+        (
+            "Our estate in Chile: Cabernet on the western slopes, Chardonnay on the eastern "
+            "ones, bunches ripening on both.",
+            "west_of",
+            0,
+            1,
+        ),
+    ],
+)
+def test_placed_by_landmarks_and_slopes(prompt: str, kind: str, subject: int, obj: int) -> None:
+    scene = recipe(prompt)
+    ids = [f.id for f in scene.fields]
+    assert (kind, ids[subject], (ids[obj],)) in {
+        (r.kind, r.subject, r.objects) for r in scene.relations
+    }
+
+
+def test_a_row_of_fields_going_southwards() -> None:
+    scene = recipe(
+        "Going from the north boundary southwards it's vines, then apples, then peppers, and "
+        "finally tomatoes."
+    )
+    ids = [f.id for f in scene.fields]
+    relations = {(r.kind, r.subject, r.objects) for r in scene.relations}
+    assert {("north_of", a, (b,)) for a, b in itertools.pairwise(ids)} <= relations

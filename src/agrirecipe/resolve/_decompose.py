@@ -219,6 +219,12 @@ class MentionBuilder:
                 return False
             if (
                 mention.plot is not None
+                and mention.plot.get("category") is not None
+                and mention.plot["category"] not in categories
+            ):
+                return False  # "Vegetable garden ..., fruit on the west side of it"
+            if (
+                mention.plot is not None
                 and mention.plot["options"]
                 and not any(
                     self.crop_categories.get(c) in categories for c in mention.plot["options"]

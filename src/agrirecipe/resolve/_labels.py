@@ -31,6 +31,10 @@ _NOUNS = r"(?:block|plot|field|parcel|area|section|strip|zone|bay|compartment|tr
 _DEFINITION = re.compile(
     rf"\b(?i:{_NOUNS})\s+(?P<label>[A-H]|\d{{1,2}})\b\s*(?P<mark>[:,(\-–—]|(?i:is|has)\b)"
 )
+# "plot 2 Kordia cherries" among labels defined with a mark
+_LOOSE_DEFINITION = re.compile(
+    rf"\b(?i:{_NOUNS})\s+(?P<label>[A-H]|\d{{1,2}})\b(?P<mark>)\s+(?=[A-Za-z])"
+)
 # "A = Roma, B = San Marzano": a bare letter given a crop by an equals sign
 _BARE_DEFINITION = re.compile(r"(?<![\w=])(?P<label>[A-H])\s*(?P<mark>=)(?!=)")
 # "A: Agria potatoes, 2 ha. B: Red Baron onions": a bare letter opening a sentence, then a
@@ -65,6 +69,20 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
         ],
         key=lambda m: m.start(),
     )
+    if definitions:
+        # "Plot 1 is Gala apples, plot 2 Kordia cherries, and plot 3 is ...": with other
+        # labels defined, a label right before a crop's name defines it too
+        defined = {m.group("label").upper() for m in definitions}
+        taken = [(m.start(), m.end()) for m in definitions]
+        for match in _LOOSE_DEFINITION.finditer(text):
+            if match.group("label").upper() in defined or any(
+                a <= match.start() < b for a, b in taken
+            ):
+                continue
+            first = tag(text[match.end() :].split(",")[0])
+            if first and first[0].has(*_NAMING):
+                definitions.append(match)
+        definitions.sort(key=lambda m: m.start())
     names: dict[str, str] = {}
     for match in definitions:
         label = match.group("label").upper()

@@ -71,6 +71,8 @@ def read_relations(
             and position
             and not clauses[position - 1].mentions
             and any(i.scenery for i in clauses[position - 1].items)
+            # (not "bananas along the stream to the east of them": scenery placed itself)
+            and _not_placed(clauses[position - 1])
         ):
             # "..., with the village road running along the east side", "Rain covers
             # rolled up above both": the scenery is placed, not a field
@@ -310,6 +312,11 @@ def _ordinal_pair(clauses: Sequence[Clause], position: int) -> tuple[int, int] |
     return (subject, obj) if subject is not None and obj is not None else None
 
 
+def _not_placed(clause: Clause) -> bool:
+    """Whether a clause is not itself placed by a relation word before it."""
+    return clause.link is None or clause.link.role not in ("relation", "trailer", "between")
+
+
 def _one_and_the_other(clauses: Sequence[Clause], position: int) -> bool:
     """Whether the relation at ``position`` is said as "one above the other"."""
     clause = clauses[position]
@@ -335,8 +342,8 @@ def _last_named(mentions: Sequence[Mention]) -> list[Mention]:
 def _landmark(clause: Clause) -> str | None:
     """The scenery a relation's object is ("east of the yard ..."), or None."""
     for item in clause.items:
-        if item.norm in _ARTICLES or item.data.get("counts_scenery"):
-            continue  # "between the two tracks"
+        if item.norm in _ARTICLES or item.data.get("counts_scenery") or item.role == "unknown":
+            continue  # "between the two tracks", "north of the packing shed"
         if (item.role == "filler" and "scenery" in item.data) or item.role == "non_agricultural":
             return item.norm
         return None

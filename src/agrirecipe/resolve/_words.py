@@ -304,12 +304,13 @@ def _past_and_other_readiness(items: Sequence[Item]) -> None:
                 item.role = "filler"
         if item.role != "month" or len(times) < 2:
             continue
-        before = [i.norm for i in items[max(0, index - 2) : index]]
+        before = [i.norm for i in items[max(0, index - 3) : index]]
         last = before[-1] if before else ""
         if (
             last == "last"
             or last in reader_words("sown")
-            or (last == "in" and before[0] in reader_words("sown"))
+            # "sown in April", "sown back in April"
+            or (last == "in" and any(w in reader_words("sown") for w in before[:-1]))
         ):
             item.role = "filler"
             item.data["sown"] = True
