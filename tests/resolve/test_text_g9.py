@@ -298,3 +298,43 @@ def test_a_row_of_fields_going_southwards() -> None:
     ids = [f.id for f in scene.fields]
     relations = {(r.kind, r.subject, r.objects) for r in scene.relations}
     assert {("north_of", a, (b,)) for a, b in itertools.pairwise(ids)} <= relations
+
+
+@pytest.mark.parametrize(
+    ("prompt", "bearing"),
+    [
+        ("Hamlin oranges, 22 ft between rows, rows running 15 degrees west of north", 165.0),
+        ("Nantes carrots, 24 ridges at 75 cm with two rows per ridge, ridges NE-SW", 45.0),
+    ],
+)
+def test_row_directions_west_of_north_and_of_ridges(prompt: str, bearing: float) -> None:
+    (field,) = recipe(prompt).fields
+    assert field.row_bearing_deg == pytest.approx(bearing)
+
+
+def test_the_same_layout_is_the_whole_planting() -> None:
+    albion, sonata = recipe(
+        "Albion strawberries on 60-inch beds, 2 rows per bed, plants 12 in apart, 6 beds of "
+        "200-ft rows, and the same layout of Sonata right north of them."
+    ).fields
+    assert (sonata.bed_count, sonata.row_length_m) == (albion.bed_count, albion.row_length_m)
+    assert sonata.bed_count == 6
+
+
+def test_rows_said_before_a_sentence_for_every_field_stay_with_their_field() -> None:
+    cabbage, lettuce = recipe(
+        "Leafy-veg robot course - Red Express cabbage on 0.6 m x 0.35 m, 14 rows, next to Cos "
+        "lettuce on 0.35 m x 0.3 m, 20 rows; all rows 40 m."
+    ).fields
+    assert (cabbage.row_count, lettuce.row_count) == (14, 20)
+
+
+def test_a_member_placed_against_it() -> None:
+    scene = recipe(
+        "Two arable plots for the GNSS guidance trial: a 2 ha maize field with 75 cm rows "
+        "running north-south, and east of it a 3 ha wheat field drilled in 12.5 cm rows."
+    )
+    maize, wheat = (f.id for f in scene.fields)
+    assert [(r.kind, r.subject, r.objects) for r in scene.relations] == [
+        ("east_of", wheat, (maize,))
+    ]

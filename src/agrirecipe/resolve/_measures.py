@@ -218,6 +218,8 @@ def shared_by_all_after(clauses: Sequence[Clause], position: int) -> bool:
         clause = clauses[index]
         if clause.link is None or not listing(clause.link) or clause.mentions:
             return False
+        if clause.link.norm in SENTENCE_MARKS:
+            return False  # "..., 20 rows; all rows 40 m": a new sentence for every field
         if not clause.items or any(
             i.role not in ("geometry", "filler", "all") for i in clause.items
         ):
@@ -240,7 +242,17 @@ def same_spacing(intent: FieldIntent, before: FieldIntent, words: Sequence[Item]
         return intent
     direction = any(w in i.norm for i in words for w in ("direction", "orientation"))
     length = any(w in i.norm for i in words for w in ("length", "long"))
-    keys = ("row_bearing_deg",) if direction else ("row_length_m",) if length else _SPACINGS
+    # "6 beds of 200-ft rows, and the same layout of Sonata": the whole planting again
+    layout = any("layout" in i.norm for i in words)
+    keys = (
+        ("row_bearing_deg",)
+        if direction
+        else ("row_length_m",)
+        if length
+        else (*_SPACINGS, "rows", "beds", "row_length_m", "plants_per_row", "row_bearing_deg")
+        if layout
+        else _SPACINGS
+    )
     copied = {k: getattr(before.rows, k) for k in keys if getattr(before.rows, k) is not None}
     if not copied:
         return intent

@@ -85,9 +85,7 @@ def read_relations(
         # each field once, where last named ("blood oranges (Moro)" names one twice)
         before = _last_named([m for c in clauses[:position] for m in c.named])
         # a pronoun's clause ("north of it") names no field of its own after the word
-        after = [
-            m for c in clauses[position:] for m in (c.named if c is not clause else c.mentions)
-        ]
+        after = [m for c in clauses[position:] for m in (c.named if c is not clause else _own(c))]
         said = " ".join(i.norm for i in clause.items)
         the_two = not clause.mentions and said in _THE_TWO
         pronoun = bool(clause.items) and (
@@ -310,6 +308,15 @@ def _ordinal_pair(clauses: Sequence[Clause], position: int) -> tuple[int, int] |
     subject = ordinal(Clause(items=said, link=before.link, index=before.index))
     obj = ordinal(clauses[position])
     return (subject, obj) if subject is not None and obj is not None else None
+
+
+def _own(clause: Clause) -> list[Mention]:
+    """The fields a clause names itself: its mentions, or the member it names ("and east
+    of it a 3 ha wheat field" after "two plots: ..."), not one it only goes on about."""
+    if clause.mentions:
+        return clause.mentions
+    member = clause.refinement
+    return [member] if member is not None and member.clause == clause.index else []
 
 
 def _not_placed(clause: Clause) -> bool:

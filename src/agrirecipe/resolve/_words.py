@@ -219,7 +219,10 @@ def _colours_are_not_crops(items: Sequence[Item], text: str) -> None:
                 or (
                     first.has("category")
                     and not first.has("crop", "variety")
-                    and any(s.value in ("sites", "buildings") for s in second.senses_of("scenery"))
+                    and any(
+                        s.value in ("sites", "buildings", "robots", "purposes")
+                        for s in second.senses_of("scenery")
+                    )
                 )
             )
         ) or (
