@@ -2,9 +2,10 @@
 
 - :func:`merge_coreferences`: "the carrots ...", "fire blight on the pears", "imperator
   north of danvers" add to the field already named instead of asking for a new one;
-- :func:`merge_appositive_plots`: "Gala, a 2 ha block" is one field;
-- :func:`drop_list_headings`: "three plots: wheat, maize and potatoes" names the plots
-  by the list after it.
+- :func:`merge_appositive_plots`: "Gala, a 2 ha block" and "..., in a field bordered by
+  a ditch" are one field; "a few diff fruits, like 4 fields" says the count again.
+
+Headings of lists ("three plots: wheat, maize and potatoes") are in ``_headings``.
 """
 
 from __future__ import annotations
@@ -26,9 +27,9 @@ from agrirecipe.resolve._structure import (
     same_variety,
     strong_crops,
 )
-from agrirecipe.resolve._words import SENTENCE_MARKS, reader_words
+from agrirecipe.resolve._words import reader_words
 
-__all__ = ["drop_list_headings", "merge_appositive_plots", "merge_coreferences"]
+__all__ = ["merge_appositive_plots", "merge_coreferences"]
 
 
 def _counted_host(
@@ -460,152 +461,4 @@ def _where_it_grows(previous: Mention, mention: Mention) -> bool:
         and words[0] in ("in", "on")
         and words[1] in ("a", "an", "one")
         and previous.clause < mention.clause
-    )
-
-
-def _heads_its_list(mention: Mention, later: Sequence[Mention]) -> bool:
-    crops = strong_crops(mention)
-    return (
-        bool(crops)
-        and not names_a_variety(mention)
-        and len(later) >= 2
-        and all(strong_crops(m) and strong_crops(m) <= crops for m in later[:2])
-    )
-
-
-def drop_list_headings(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
-    """ "My allotment in one picture: a strawberry bed, a patch of sweetcorn": one plot
-    naming no crop, ending its clause before a colon that lists two or more fields of
-    named crops, is the list's heading, not another field. Return the fields left."""
-    kept: list[Mention] = []
-    for position, mention in enumerate(mentions):
-        # the colon may come after words naming no field ("..., July:")
-        following = next(
-            (
-                c
-                for c in clauses[mention.clause + 1 :]
-                if c.mentions or (c.link is not None and c.link.norm == ":")
-            ),
-            None,
-        )
-        later = [m for m in mentions[position + 1 :] if m.has_crop or m.category is not None]
-        if (
-            following is not None
-            and following.link is not None
-            and following.link.norm == ":"
-            and clauses[mention.clause].mentions[-1:] == [mention]
-            and (
-                (mention.plot is not None and not mention.has_crop and mention.category is None)
-                # "Citrus test site in Chile, July: a blood orange block next to a Valencia
-                # block": a crop heading the fields of that crop it lists
-                or _heads_its_list(mention, later)
-            )
-            and (mention.count or 1) == 1
-            and not mention.refinements
-            and mention.rest is None
-            # "my allotment: three different veg patches": two or more fields listed
-            and sum(m.count or 1 for m in later) >= 2
-            and later[0].clause >= following.index
-        ):
-            clauses[mention.clause].mentions = []
-            continue
-        if (
-            _heads_counted_plots(clauses, mention)
-            or _heads_fitting_list(clauses, mention, later)
-            or _crop_title(clauses, mention, mentions[position + 1 : position + 2])
-        ):
-            clauses[mention.clause].mentions = []
-            continue
-        kept.append(mention)
-    return kept
-
-
-def _crop_title(clauses: Sequence[Clause], mention: Mention, following: Sequence[Mention]) -> bool:
-    """'onions!!! just 1 big field of onions', 'Wheat. A 2 ha wheat field by the barn': a
-    sentence of only a crop's name, before a sentence asking for a field of that crop, is
-    its title, not another field."""
-    clause = clauses[mention.clause]
-    if (
-        not following
-        or clause.mentions != [mention]
-        or (clause.link is not None and clause.link.norm not in SENTENCE_MARKS)
-        or names_a_variety(mention)
-        or not strong_crops(mention)
-        or any(i.role not in ("head", "filler") for i in mention.items)
-    ):
-        return False
-    after = clauses[mention.clause + 1 :]
-    first = next((c for c in after if c.mentions), None)
-    ends = next((c for c in after if c.link is not None), None)
-    nxt = following[0]
-    return (
-        first is not None
-        and ends is not None
-        and ends.link is not None
-        and ends.link.norm in SENTENCE_MARKS
-        and first.index >= ends.index
-        and nxt.clause == first.index
-        and strong_crops(mention) <= strong_crops(nxt)
-        and (nxt.plot is not None or nxt.count is not None)
-    )
-
-
-def _heads_fitting_list(
-    clauses: Sequence[Clause], mention: Mention, later: Sequence[Mention]
-) -> bool:
-    """'vineyard in NZ, cabernet on one block n chardonnay on the other': a plot word
-    naming no crop, then (after a comma) two or more fields of crops only it holds."""
-    if (
-        mention.plot is None
-        or mention.has_crop
-        or mention.count not in (None, 1)
-        or mention.refinements
-        or mention.clause + 1 >= len(clauses)
-        or clauses[mention.clause].mentions[-1:] != [mention]
-    ):
-        return False
-    following = clauses[mention.clause + 1]
-    options = set(mention.plot["options"])
-    members = [m for m in later if m.clause > mention.clause][:2]
-    return (
-        following.link is not None
-        and following.link.norm == ","
-        and bool(following.mentions)
-        and bool(options)
-        and len(members) == 2
-        and all(strong_crops(m) and strong_crops(m) <= options for m in members)
-    )
-
-
-def _heads_counted_plots(clauses: Sequence[Clause], mention: Mention) -> bool:
-    """'Pruning-robot vineyard, two blocks: Chardonnay, ..., Cabernet', 'Lettuce trial ...,
-    three plots from north to south: Cos, crisphead, Lollo Rosso', 'test for cherries: two
-    blocks, Kordia and Regina': a plot word or a crop right before a count of plots that
-    lists members it can hold is their heading."""
-    heading_crop = mention.has_crop and not names_a_variety(mention)
-    if (
-        (mention.plot is None and not heading_crop)
-        or (mention.has_crop and not heading_crop)
-        or (mention.count or 1) != 1
-        or mention.refinements
-        or mention.clause + 1 >= len(clauses)
-        or clauses[mention.clause].mentions[-1:] != [mention]
-    ):
-        return False
-    following = clauses[mention.clause + 1]
-    # ("Rain-cover test for cherries: two blocks, Kordia and Regina")
-    if following.link is None or following.link.norm not in (",", ":"):
-        return False
-    if len(following.mentions) != 1:
-        return False
-    plots = following.mentions[0]
-    plot = mention.plot
-    options = strong_crops(mention) if heading_crop or plot is None else set(plot["options"])
-    members = {id(r): r for r in plots.refinements}.values()
-    return (
-        not plots.has_crop
-        and (plots.count or 0) >= 2
-        and len(members) >= 2
-        and bool(options)
-        and all(strong_crops(r) and strong_crops(r) <= options for r in members)
     )

@@ -27,7 +27,7 @@ step  pass                                        module (data)
 9     clauses and mentions                        ``_decompose``
 10    counts, corrections, shared attributes,     ``_structure``,
       refinements; descriptions of plants         ``_descriptions``,
-      named; back-references                      ``_coreference``
+      named; back-references; list headings       ``_coreference``, ``_headings``
 11    head-less clauses' words to their fields    ``PromptReader._attach_loose``,
       (which fields a measure is said of)         ``_measures``
 12    fields of each mention, their attributes    ``_fields``
@@ -42,11 +42,7 @@ from collections.abc import Callable, Sequence
 
 from agrirecipe._errors import PromptError, UnknownCropError
 from agrirecipe.resolve._casual import expand_casual
-from agrirecipe.resolve._coreference import (
-    drop_list_headings,
-    merge_appositive_plots,
-    merge_coreferences,
-)
+from agrirecipe.resolve._coreference import merge_appositive_plots, merge_coreferences
 from agrirecipe.resolve._decompose import (
     Clause,
     Mention,
@@ -62,6 +58,7 @@ from agrirecipe.resolve._fields import (
     give_respectively,
 )
 from agrirecipe.resolve._geometry import find_geometry, hoist_counted_crops
+from agrirecipe.resolve._headings import drop_list_headings
 from agrirecipe.resolve._intent import (
     Hemisphere,
     ResolveContext,
