@@ -7,6 +7,8 @@ import sys
 from pathlib import Path
 from typing import Any
 
+from agrirecipe.cli._options import add_resolver_option
+
 DEFAULT_PORT = 8765
 
 
@@ -48,12 +50,7 @@ def register(subparsers: Any) -> None:
         default=None,
         help="folder for the app's scenes and history (default: the cache folder's app/)",
     )
-    parser.add_argument(
-        "--resolver",
-        default="auto",
-        choices=["auto", "rules", "embedding", "llm", "hybrid"],
-        help="resolution strategy for prompts (default auto)",
-    )
+    add_resolver_option(parser, "resolution strategy for prompts")
     parser.set_defaults(handler=run)
 
 

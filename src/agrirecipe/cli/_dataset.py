@@ -8,6 +8,8 @@ import sys
 from pathlib import Path
 from typing import Any
 
+from agrirecipe.cli._options import add_resolver_option
+
 _RESOLUTION = re.compile(r"^\s*(\d+)\s*[xX×]\s*(\d+)\s*$")
 
 
@@ -93,12 +95,7 @@ def register(subparsers: Any) -> None:
     run.add_argument("--ray-address", default=None, help="an existing Ray cluster (ray://...)")
     run.add_argument("--timeout", type=float, default=None, help="seconds per variant")
     run.add_argument("--seed", type=int, default=0, help="dataset seed (default 0)")
-    run.add_argument(
-        "--resolver",
-        default="auto",
-        choices=["auto", "rules", "embedding", "llm", "hybrid"],
-        help="how prompts are resolved (default auto)",
-    )
+    add_resolver_option(run, "how prompts are resolved")
     run.add_argument("--quiet", action="store_true", help="no progress bar")
     parser.set_defaults(handler=run_dataset)
 

@@ -7,6 +7,8 @@ import sys
 from pathlib import Path
 from typing import Any
 
+from agrirecipe.cli._options import add_resolver_option
+
 
 def register(subparsers: Any) -> None:
     """Add the ``generate`` sub-command."""
@@ -22,12 +24,7 @@ def register(subparsers: Any) -> None:
     parser.add_argument("prompt", help='e.g. "a healthy Pink Lady apple orchard in summer"')
     parser.add_argument("-o", "--output", type=Path, required=True, help="output folder")
     parser.add_argument("--seed", type=int, default=0, help="random seed (default 0)")
-    parser.add_argument(
-        "--resolver",
-        default="auto",
-        choices=["auto", "rules", "embedding", "llm", "hybrid"],
-        help="resolution strategy (default auto)",
-    )
+    add_resolver_option(parser, "resolution strategy")
     parser.add_argument(
         "--backends",
         default=",".join(DEFAULT_BACKENDS),
