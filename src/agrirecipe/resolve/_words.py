@@ -128,6 +128,9 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
         if not named or item.role != "quantity":
             continue
         ahead = items[index + 2 : index + 6]
+        # ("lots of yellow flowers"): past the colours said of them
+        while following.norm in reader_words("colours") and ahead:
+            following, ahead = ahead[0], ahead[1:]
         plants_named = (
             following.role == "head"
             and following.has("crop")
@@ -168,6 +171,13 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
         ):
             item.role = "filler"
             item.data["date"] = True
+
+
+def _holds_not(plot: Item, crops: set[str]) -> bool:
+    """Whether ``plot`` is a plot word that can hold none of ``crops`` ("roots")."""
+    spec = plot.data.get("value") if plot.role == "plot" else None
+    options = set(spec.get("options", ())) if isinstance(spec, dict) else set()
+    return bool(options) and bool(crops) and not options & crops
 
 
 def _structure(item: Item) -> bool:
@@ -237,8 +247,12 @@ def _colours_are_not_crops(items: Sequence[Item], text: str) -> None:
             continue
         if (
             first.norm in reader_words("colour_crops")
-            and second.norm in reader_words("colours")
             and text[first.end : second.start] == " "
+            and (
+                second.norm in reader_words("colours")
+                # "the orange roots are heaped in the trailer": no orange grows in roots
+                or (first.role == "head" and _holds_not(second, _crops_of(first)))
+            )
         ):
             first.role = "filler"  # "olive green blotches", "lime green", "cherry red"
             first.data["colour"] = True

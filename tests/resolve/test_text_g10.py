@@ -1,0 +1,89 @@
+"""Text of blind set g10 (issue 8): scenery named like crops ("a cherry picker", "shade
+trees", "golden evening light"), a colour before a plot that cannot hold that crop
+("the orange roots"), damage and ripening cues, "in leaf" as no stage, and neighbours
+said over scenery ("on the other side of the hedge", "the next block over")."""
+
+from __future__ import annotations
+
+import pytest
+
+from agrirecipe import generate
+from agrirecipe.recipe import SceneRecipe
+
+
+def recipe(prompt: str) -> SceneRecipe:
+    return generate(prompt, resolver="hybrid").recipe
+
+
+@pytest.mark.parametrize(
+    ("prompt", "crops"),
+    [
+        (
+            "A cherry picker is parked by the packhouse, and behind it the pear orchard and a "
+            "small vineyard on the slope.",
+            ["Pear", "Grape"],
+        ),
+        (
+            "Golden evening light over the orchard, Fuji on the near side and Cripps Pink behind.",
+            ["Apple", "Apple"],
+        ),
+        (
+            "Cayenne chillies going red next to beef tomatoes. Shade trees and a hose reel at "
+            "the edge of the picture.",
+            ["Pepper", "Tomato"],
+        ),
+        (
+            "Danvers carrots being lifted in October, the orange roots are heaped in the trailer.",
+            ["Carrot"],
+        ),
+        (
+            "Cherry tomatoes staked on black plastic, lots of yellow flowers and the first tiny "
+            "fruits setting.",
+            ["Tomato"],
+        ),
+    ],
+)
+def test_scenery_and_colours_that_look_like_crops(prompt: str, crops: list[str]) -> None:
+    assert [f.crop for f in recipe(prompt).fields] == crops
+
+
+@pytest.mark.parametrize(
+    ("prompt", "stage", "health"),
+    [
+        (
+            "Granny Smith rows loaded with apples, but a lot of the fruit has brown corky "
+            "patches and the leaves are covered in olive-green velvety spots.",
+            None,
+            "Ill",
+        ),
+        ("California Wonder peppers turning from green to red on the plants", "Maturation", None),
+        ("Cherry tomatoes with the first tiny fruits setting", "Reproductive", None),
+    ],
+)
+def test_cues(prompt: str, stage: str | None, health: str | None) -> None:
+    (field,) = recipe(prompt).fields
+    if stage is not None:
+        assert field.stage == stage
+    if health is not None:
+        assert field.health == health
+
+
+def test_in_leaf_with_fruitlets_is_no_conflict() -> None:
+    pears, cherries = recipe(
+        "Comice pears next to Lapins cherries in June: the cherries are full of dark red "
+        "fruit, the Comice still in leaf with small fruitlets."
+    ).fields
+    assert (pears.stage, cherries.stage) == ("Reproductive", "Maturation")
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "A sprayer working the maize, and on the other side of the hedge a field of wheat.",
+        "Jalapeños hanging dark green on the bushes, and the next block over is Roma.",
+    ],
+)
+def test_neighbours_said_over_scenery(prompt: str) -> None:
+    scene = recipe(prompt)
+    (relation,) = scene.relations
+    assert relation.kind == "next_to"
