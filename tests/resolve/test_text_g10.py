@@ -87,3 +87,32 @@ def test_neighbours_said_over_scenery(prompt: str) -> None:
     scene = recipe(prompt)
     (relation,) = scene.relations
     assert relation.kind == "next_to"
+
+
+@pytest.mark.parametrize(
+    ("prompt", "count"),
+    [
+        (
+            "Tropical orchard twin: a banana block (2 x 2 m, 400 plants) south of an orange grove "
+            "(7 m rows, 4 m in-row, 150 trees).",
+            2,
+        ),
+        (
+            "Citrus twin: a Washington Navel block west of a Valencia Late block, both at 3.7 m x "
+            "1.2 m, 500 trees each.",
+            2,
+        ),
+        (
+            "Crop-row detection dataset, two cereal plots of 50 x 50 m: maize in 75 cm rows, and "
+            "wheat in 15 cm rows, with the wheat to the west.",
+            2,
+        ),
+    ],
+)
+def test_a_digital_twin_and_a_crop_row_are_no_count_and_no_plot(prompt: str, count: int) -> None:
+    assert len(recipe(prompt).fields) == count
+
+
+def test_twin_rows_are_still_two_rows_per_bed() -> None:
+    (field,) = recipe("peppers in twin rows on 1.4 m beds").fields
+    assert field.agronomy.rows_per_bed == 2

@@ -47,7 +47,7 @@ SENTENCE_MARKS = frozenset({".", "!", "?", ";"})
 
 def read_words(items: Sequence[Item], text: str) -> None:
     """Run the word passes, in order, over a prompt's items (see the module's table)."""
-    _measures_are_not_counts(items)
+    _measures_are_not_counts(items, text)
     _colours_are_not_crops(items, text)
     _measured_differences(items)
     _ripening_colours(items)
@@ -66,7 +66,7 @@ def read_words(items: Sequence[Item], text: str) -> None:
 _PURPOSES = frozenset({"robots", "purposes"})
 
 
-def _measures_are_not_counts(items: Sequence[Item]) -> None:
+def _measures_are_not_counts(items: Sequence[Item], text: str) -> None:
     """ "3.5 m in the pears": a number with a length unit is a measure, never a count of
     fields (what no size or geometry pattern read stays a filler)."""
     for item, following in itertools.pairwise(items):
@@ -114,6 +114,23 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
             item.data["counts_scenery"] = True
         elif item.role == "number" and item.norm in ("a", "an") and following.role == "cue":
             item.role = "filler"  # "a combine already working in the spelt": not a field
+    # "Citrus twin: ...", "orchard twin": a digital twin, not two of anything (only
+    # "twin rows" and "twin beds" count); "Crop-row detection": a compound, not a crop
+    for index, item in enumerate(items):
+        following = items[index + 1] if index + 1 < len(items) else None
+        if (
+            item.role == "number"
+            and item.norm == "twin"
+            and (following is None or following.norm not in reader_words("twinned"))
+        ):
+            item.role = "filler"
+        elif (
+            item.role == "plot"
+            and item.norm in ("crop", "crops")
+            and following is not None
+            and text[item.end : following.start] == "-"
+        ):
+            item.role = "filler"
     # "Jalapenos in the tunnel, lots of fruit turning red": after a crop is named, a vague
     # quantity of fruit, leaves or plants counts plants, not fields
     described = frozenset(
