@@ -9,6 +9,7 @@ each decides what a word is in its place, where the lexicon alone cannot:
 1   a number with a length unit, a rootstock's name, one  "3.5 m in the pears",
     plant every so far, a count of scenery or of fruit:   "one carrot every 2 cm",
     not a count of fields                                 "lots of fruit"
+1b  "twin" of no rows; a compound such as "Crop-row"      "Citrus twin"
 2   a crop word joined to a colour, or a colour crop      "olive-green patches",
     word before scenery, is a colour; a crop word before  "an orange tractor",
     a machine names its load                              "a grain trailer"
@@ -47,7 +48,8 @@ SENTENCE_MARKS = frozenset({".", "!", "?", ";"})
 
 def read_words(items: Sequence[Item], text: str) -> None:
     """Run the word passes, in order, over a prompt's items (see the module's table)."""
-    _measures_are_not_counts(items, text)
+    _measures_are_not_counts(items)
+    _twins_and_compounds(items, text)
     _colours_are_not_crops(items, text)
     _measured_differences(items)
     _ripening_colours(items)
@@ -66,7 +68,7 @@ def read_words(items: Sequence[Item], text: str) -> None:
 _PURPOSES = frozenset({"robots", "purposes"})
 
 
-def _measures_are_not_counts(items: Sequence[Item], text: str) -> None:
+def _measures_are_not_counts(items: Sequence[Item]) -> None:
     """ "3.5 m in the pears": a number with a length unit is a measure, never a count of
     fields (what no size or geometry pattern read stays a filler)."""
     for item, following in itertools.pairwise(items):
@@ -114,23 +116,6 @@ def _measures_are_not_counts(items: Sequence[Item], text: str) -> None:
             item.data["counts_scenery"] = True
         elif item.role == "number" and item.norm in ("a", "an") and following.role == "cue":
             item.role = "filler"  # "a combine already working in the spelt": not a field
-    # "Citrus twin: ...", "orchard twin": a digital twin, not two of anything (only
-    # "twin rows" and "twin beds" count); "Crop-row detection": a compound, not a crop
-    for index, item in enumerate(items):
-        following = items[index + 1] if index + 1 < len(items) else None
-        if (
-            item.role == "number"
-            and item.norm == "twin"
-            and (following is None or following.norm not in reader_words("twinned"))
-        ):
-            item.role = "filler"
-        elif (
-            item.role == "plot"
-            and item.norm in ("crop", "crops")
-            and following is not None
-            and text[item.end : following.start] == "-"
-        ):
-            item.role = "filler"
     # "Jalapenos in the tunnel, lots of fruit turning red": after a crop is named, a vague
     # quantity of fruit, leaves or plants counts plants, not fields
     described = frozenset(
@@ -200,6 +185,24 @@ def _holds_not(plot: Item, crops: set[str]) -> bool:
 def _structure(item: Item) -> bool:
     """A structure crops grow under ("tunnels"), which a number may count as fields."""
     return any(sense.value == "structures" for sense in item.senses_of("scenery"))
+
+
+def _twins_and_compounds(items: Sequence[Item], text: str) -> None:
+    """'Citrus twin: ...', 'orchard twin': a digital twin, not two of anything (only
+    "twin rows" and "twin beds" count); 'Crop-row detection': a compound, not a crop plot."""
+    for item, following in itertools.pairwise(items):
+        if (
+            item.role == "number"
+            and item.norm == "twin"
+            and following.norm not in reader_words("twinned")
+        ) or (
+            item.role == "plot"
+            and item.norm in ("crop", "crops")
+            and text[item.end : following.start] == "-"
+        ):
+            item.role = "filler"
+    if items and items[-1].role == "number" and items[-1].norm == "twin":
+        items[-1].role = "filler"
 
 
 def _crops_of(item: Item) -> set[str]:
