@@ -116,3 +116,50 @@ def test_a_digital_twin_and_a_crop_row_are_no_count_and_no_plot(prompt: str, cou
 def test_twin_rows_are_still_two_rows_per_bed() -> None:
     (field,) = recipe("peppers in twin rows on 1.4 m beds").fields
     assert field.agronomy.rows_per_bed == 2
+
+
+@pytest.mark.parametrize(
+    ("prompt", "crops"),
+    [
+        (
+            "The only field we still have is behind the milking parlour: 3 acres of Riesling, the "
+            "grapes ripe and perfectly healthy, and it's late September now.",
+            ["Grape"],
+        ),
+        ("pls 2 fields: one w grain one w salad", ["Wheat", "Lettuce"]),
+    ],
+)
+def test_farm_words_and_texting_forms(prompt: str, crops: list[str]) -> None:
+    assert [f.crop for f in recipe(prompt).fields][:1] == crops[:1]
+    assert len(recipe(prompt).fields) == len(crops)
+
+
+def test_a_decimal_after_a_leading_compass_label() -> None:
+    maize, wheat = recipe(
+        "North field: dent corn on 30-inch rows. South field: Winter Wheat drilled in 12.5 cm rows."
+    ).fields
+    assert (maize.agronomy.row_spacing_m, wheat.agronomy.row_spacing_m) == (0.762, 0.125)
+
+
+def test_a_sowing_month_with_sowed() -> None:
+    (field,) = recipe(
+        "The back field is Chantenay carrots. We sowed them in May and now, in early June, "
+        "they're at the two-leaf stage."
+    ).fields
+    assert (field.stage, field.season) == ("Vegetative", "Summer")
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "From the top of the farm down: vines, then stone fruit, then salad, then spuds.",
+        "Grain along the northern boundary, greens along the southern one, and the farmhouse "
+        "in between.",
+    ],
+)
+def test_a_farm_from_the_top_down(prompt: str) -> None:
+    scene = recipe(prompt)
+    ids = [f.id for f in scene.fields]
+    assert ("north_of", ids[0], (ids[1],)) in {
+        (r.kind, r.subject, r.objects) for r in scene.relations
+    }

@@ -60,7 +60,7 @@ _OTHER_AFTER_MEASURE = re.compile(
 )
 
 _ONE_AFTER_ONE = re.compile(
-    r"(?P<first>\b(?i:one|1)\s+(?!of\b|each\b|another\b)"
+    r"(?P<first>\b(?i:one|1)\s+(?!of\b|each\b|another\b)(?:(?i:with|of)\s+)?"
     # ("one 40x60m one 30x60m": a size said for each)
     r"(?:[A-Za-z][\w'-]*|\d[\d.]*\s*(?:x|by)\s*\d[\d.]*\s*m\b|\d[\d.]*\s*(?:ha|acres?)\b))"
     r"\s+(?P<second>(?i:one|1)\b)"

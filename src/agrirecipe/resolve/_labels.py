@@ -222,7 +222,8 @@ _LEADING = re.compile(
     r"(?:\b(?i:the)\s+|(?:^|(?<=[,;.:]\s)))(?P<side>(?i:north|south|east|west|top|bottom|upper|lower))(?i:ern)?\s+"
     r"(?i:plot|block|field|one|part|half|strip|parcel|section|paddock|area)\b\s*"
     r"(?:(?i:is|are|has|holds|gets|grows|has got)\s+|[:\-–—]\s*)?"
-    r"(?P<rest>(?!(?i:of|to|and|with|in|on|at|is|are)\b)[^\s,;.:()][^,;.:()]*)"
+    # (the rest runs to a mark, past a decimal point: "drilled in 12.5 cm rows")
+    r"(?P<rest>(?!(?i:of|to|and|with|in|on|at|is|are)\b)[^\s,;.:()](?:[^,;.:()]|\.(?=\d))*)"
 )
 
 
