@@ -163,3 +163,24 @@ def test_a_farm_from_the_top_down(prompt: str) -> None:
     assert ("north_of", ids[0], (ids[1],)) in {
         (r.kind, r.subject, r.objects) for r in scene.relations
     }
+
+
+def test_what_a_comparison_is_between_is_no_field() -> None:
+    scene = recipe(
+        "Pear-vs-apple LiDAR comparison. Golden Delicious block between a Comice block and a "
+        "Durondeau block, all three at 3.5 x 1.0 m, 1 ha each, rows E-W."
+    )
+    assert [f.variety for f in scene.fields] == [
+        "Golden Delicious",
+        "Doyenne du Comice",
+        "Durondeau",
+    ]
+    assert all(f.row_bearing_deg == pytest.approx(90.0) for f in scene.fields)
+
+
+def test_beds_on_inch_centres() -> None:
+    (field,) = recipe(
+        "Jalapeño beds for the robot: 6 beds on 60 in centres, 2 rows per bed, 18 in between "
+        "plants, rows 150 ft."
+    ).fields
+    assert (field.bed_count, field.agronomy.row_spacing_m) == (6, 1.524)

@@ -9,7 +9,8 @@ each decides what a word is in its place, where the lexicon alone cannot:
 1   a number with a length unit, a rootstock's name, one  "3.5 m in the pears",
     plant every so far, a count of scenery or of fruit:   "one carrot every 2 cm",
     not a count of fields                                 "lots of fruit"
-1b  "twin" of no rows; a compound such as "Crop-row"      "Citrus twin"
+1b  "twin" of no rows; a compound such as "Crop-row" or   "Citrus twin"
+    "Pear-vs-apple"
 2   a crop word joined to a colour, or a colour crop      "olive-green patches",
     word before scenery, is a colour; a crop word before  "an orange tractor",
     a machine names its load                              "a grain trailer"
@@ -201,6 +202,11 @@ def _twins_and_compounds(items: Sequence[Item], text: str) -> None:
             and text[item.end : following.start] == "-"
         ):
             item.role = "filler"
+        # "Pear-vs-apple LiDAR comparison": what is compared, not a field
+        if text[item.end : following.start] == "-" and "vs" in (item.norm, following.norm):
+            for compared in (item, following):
+                if compared.role in ("head", "plot", "category"):
+                    compared.role = "filler"
     if items and items[-1].role == "number" and items[-1].norm == "twin":
         items[-1].role = "filler"
 
