@@ -14,6 +14,7 @@ import itertools
 from collections.abc import Sequence
 
 from agrirecipe.resolve._decompose import Clause, Mention, MentionBuilder
+from agrirecipe.resolve._relations import ARTICLES
 from agrirecipe.resolve._structure import (
     EACH,
     another_field,
@@ -78,7 +79,7 @@ def _same_modifier(kept: Sequence[Mention], mention: Mention) -> Mention | None:
     if (
         not before
         or before[-1].role not in ("unknown", "filler", "stage", "other")
-        or before[-1].norm in _ARTICLES
+        or before[-1].norm in ARTICLES | definite_words()
     ):
         return None
     word = before[-1].norm
@@ -89,9 +90,6 @@ def _same_modifier(kept: Sequence[Mention], mention: Mention) -> Mention | None:
         if any(a.norm == word and b.role == "plot" for a, b in itertools.pairwise(m.items))
     ]
     return same[0] if len(same) == 1 else None
-
-
-_ARTICLES = frozenset({"the", "a", "an", "this", "that", "our", "my", "its", "their"})
 
 
 def _compatible(builder: MentionBuilder, target: Mention, mention: Mention) -> bool:

@@ -16,7 +16,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable, Sequence
 
-from agrirecipe.resolve._lexicon import Item, tokenize
+from agrirecipe.resolve._lexicon import Item, number_value, tokenize
 
 __all__ = [
     "place_compass_members",
@@ -170,19 +170,16 @@ def _numbered_members(text: str) -> str:
 
 # "the 70k plot lies north of the 95k plot": a member named by the number said for it
 _VALUED_MEMBER = re.compile(
-    r"\b(?i:the)\s+(?P<value>\d[\d,.]*\s?[kK]?)\s+(?i:plot|block|field|strip|bed|parcel)\b"
+    r"\b(?i:the)\s+(?P<value>\d[\d,.]*[kK]?)\s+(?i:plot|block|field|strip|bed|parcel)\b"
 )
-_NUMBER = re.compile(r"\d[\d,.]*\s?[kK]?\b")
+_NUMBER = re.compile(r"\d[\d,.]*[kK]?\b")
 _ORDINAL_WORDS = ("the first", "the second", "the third", "the fourth")
 
 
 def _number_of(text: str) -> float | None:
-    words = text.replace(",", "").replace(" ", "").lower()
-    scale = 1000.0 if words.endswith("k") else 1.0
-    try:
-        return float(words.rstrip("k")) * scale
-    except ValueError:
-        return None
+    """The value of one number as the tokenizer reads it ("70,000", "70k")."""
+    tokens = tokenize(text)
+    return number_value(tokens[0].norm) if len(tokens) == 1 else None
 
 
 def _valued_members(text: str) -> str:
@@ -194,7 +191,7 @@ def _valued_members(text: str) -> str:
     if len(references) < 2 or None in values or len(set(values)) < 2:
         return text
     said = [_number_of(m.group()) for m in _NUMBER.finditer(text[: references[0].start()])]
-    order = [v for v in dict.fromkeys(x for x in said if x in values)]
+    order = list(dict.fromkeys(x for x in said if x in values))
     if len(order) != len(set(values)) or len(order) > len(_ORDINAL_WORDS):
         return text
     out = text

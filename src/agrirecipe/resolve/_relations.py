@@ -18,7 +18,7 @@ from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._intent import RelationIntent, TraceStep
 from agrirecipe.resolve._lexicon import Item
 
-__all__ = ["PRONOUNS", "coordinated", "listing", "read_relations"]
+__all__ = ["ARTICLES", "PRONOUNS", "coordinated", "listing", "read_relations"]
 
 
 def read_relations(
@@ -214,7 +214,7 @@ def read_relations(
     return list(unique.values())
 
 
-_ARTICLES = frozenset({"the", "a", "an", "our", "my", "their", "its"})
+ARTICLES = frozenset({"the", "a", "an", "our", "my", "their", "its"})
 
 
 def _directed_neighbours(clauses: Sequence[Clause]) -> dict[int, int]:
@@ -296,18 +296,19 @@ def _ordinal_pair(clauses: Sequence[Clause], position: int) -> tuple[int, int] |
     """The members "the first ... north of the second" name (0-based), or None."""
 
     def ordinal(clause: Clause) -> int | None:
-        words = [w for i in clause.items for w in i.norm.split() if w not in ("the", "one")]
-        if clause.mentions or len(words) != 1 or words[0] not in _ORDINALS:
+        words = [w for i in clause.items for w in i.norm.split() if w not in _ORDINAL_FILLERS]
+        if clause.mentions or len(words) != 1:
             return None
-        return _ORDINALS[words[0]]
+        return _ORDINALS.get(words[0])
 
     if position == 0:
         return None
-    before = clauses[position - 1]
-    said = [i for i in before.items if i.norm not in ("is", "lies", "sits", "are")]
-    subject = ordinal(Clause(items=said, link=before.link, index=before.index))
-    obj = ordinal(clauses[position])
+    subject, obj = ordinal(clauses[position - 1]), ordinal(clauses[position])
     return (subject, obj) if subject is not None and obj is not None else None
+
+
+#: Words around an ordinal that say nothing more ("the first one is ...").
+_ORDINAL_FILLERS = frozenset({"the", "one", "is", "lies", "sits", "are"})
 
 
 def _own(clause: Clause) -> list[Mention]:
@@ -349,7 +350,7 @@ def _last_named(mentions: Sequence[Mention]) -> list[Mention]:
 def _landmark(clause: Clause) -> str | None:
     """The scenery a relation's object is ("east of the yard ..."), or None."""
     for item in clause.items:
-        if item.norm in _ARTICLES or item.data.get("counts_scenery") or item.role == "unknown":
+        if item.norm in ARTICLES or item.data.get("counts_scenery") or item.role == "unknown":
             continue  # "between the two tracks", "north of the packing shed"
         if (item.role == "filler" and "scenery" in item.data) or item.role == "non_agricultural":
             return item.norm

@@ -40,6 +40,7 @@ from collections.abc import Sequence
 from agrirecipe.resolve._fields import ATTRIBUTE_ROLES
 from agrirecipe.resolve._geometry import geometry_nouns
 from agrirecipe.resolve._lexicon import Item, vocabulary
+from agrirecipe.resolve._structure import descriptive_words
 
 __all__ = ["SENTENCE_MARKS", "purpose_diseases", "read_words", "reader_words"]
 
@@ -119,9 +120,7 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
             item.role = "filler"  # "a combine already working in the spelt": not a field
     # "Jalapenos in the tunnel, lots of fruit turning red": after a crop is named, a vague
     # quantity of fruit, leaves or plants counts plants, not fields
-    described = frozenset(
-        str(w) for w in (*vocabulary()["plant_part_words"], *vocabulary()["descriptive_heads"])
-    )
+    described = descriptive_words()
     # ("a few peppers have scabby spots" after Jalapenos: some of that field's plants,
     # read like "the peppers")
     named: set[str] = set()
