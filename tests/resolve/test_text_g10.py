@@ -184,3 +184,92 @@ def test_beds_on_inch_centres() -> None:
         "plants, rows 150 ft."
     ).fields
     assert (field.bed_count, field.agronomy.row_spacing_m) == (6, 1.524)
+
+
+def test_a_plot_said_after_its_crop_with_of() -> None:
+    fields = recipe(
+        "we only grow onions now, one field of about 6 acres down the lane past the church"
+    ).fields
+    assert [f.crop for f in fields] == ["Onion"]
+    width, length = fields[0].geometry.size_m
+    assert width * length == pytest.approx(6 * 4046.8564, rel=0.01)
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "Plot A is 200 ft by 300 ft of Roma tomatoes. Plot B is the same size, Beefsteak.",
+        "Romaine 20 x 30 m. The same size, Iceberg.",
+    ],
+)
+def test_the_same_size_in_a_sentence_before_the_field(prompt: str) -> None:
+    fields = recipe(prompt).fields
+    assert len(fields) == 2
+    assert fields[1].geometry.size_m == fields[0].geometry.size_m
+
+
+@pytest.mark.parametrize(
+    ("prompt", "crops"),
+    [
+        (
+            "Blight has hit every field this summer - the potatoes, the tomatoes and the "
+            "carrots too.",
+            ["Potato", "Tomato", "Carrot"],
+        ),
+        ("Blight in every field: potatoes and tomatoes", ["Potato", "Tomato"]),
+        ("every field has aphids: apples, pears", ["Apple", "Pear"]),
+    ],
+)
+def test_every_field_says_its_words_of_all_the_fields(prompt: str, crops: list[str]) -> None:
+    fields = recipe(prompt).fields
+    assert [f.crop for f in fields] == crops
+    assert [f.health for f in fields] == ["Ill"] * len(crops)
+
+
+def test_each_plot_gets_a_headland() -> None:
+    fields = recipe(
+        "two lettuce plots for the harvester robot, crisphead and Cos, 30 rows each, 0.35 m "
+        "row spacing, 0.30 m in row, rows 50 m. the Cos plot goes west of the crisphead plot, "
+        "and each plot gets a 4 m headland."
+    ).fields
+    assert [f.variety for f in fields] == ["Iceberg", "Romaine"]
+    assert [f.geometry.headland_m for f in fields] == [4.0, 4.0]
+
+
+def test_each_growing_a_different_vegetable() -> None:
+    fields = recipe(
+        "The market-garden side of the farm is four fields, each growing a different vegetable."
+    ).fields
+    assert len(fields) == 4
+    assert len({f.crop for f in fields}) == 4
+    assert all(f.category == "Vegetables" for f in fields)
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "the vegetable garden south of the vineyard",
+        "a vineyard, a vegetable garden",
+        "Could you lay out my farm? There's the vineyard on the hill, the vegetable garden "
+        "south of it, and a cornfield east of the vegetables.",
+    ],
+)
+def test_a_vegetable_garden_is_a_field_of_vegetables(prompt: str) -> None:
+    fields = recipe(prompt).fields
+    assert [f.category for f in fields if f.crop != "Grape" and f.crop != "Maize"] == ["Vegetables"]
+    assert "Grape" in [f.crop for f in fields]
+
+
+def test_bare_spacings_after_each_crop_and_an_uncounted_heading() -> None:
+    scene = recipe(
+        "sensor test strips: a capsicum strip between a tomato strip and a maize strip. every "
+        "strip is 6 rows of 50 m; tomato rows 1.5 m apart, capsicum 0.9 m, maize 0.75 m"
+    )
+    fields = {f.crop: f for f in scene.fields}
+    assert sorted(fields) == ["Maize", "Pepper", "Tomato"]
+    assert fields["Pepper"].agronomy.row_spacing_m == 0.9
+    assert fields["Tomato"].agronomy.row_spacing_m == 1.5
+    assert fields["Maize"].agronomy.row_spacing_m == 0.75
+    relation = scene.relations[0]
+    assert relation.kind == "between"
+    assert relation.subject == fields["Pepper"].id

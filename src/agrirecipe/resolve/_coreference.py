@@ -380,7 +380,8 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
                 for c in clauses[previous.clause + 1 : mention.clause]
             )
             and previous.clause < mention.clause
-            and all(i.role in ("number", "size", "plot", "filler") for i in clause.items)
+            # ("onions now, one field of about 6 acres")
+            and all(i.role in ("number", "size", "plot", "filler", "of") for i in clause.items)
             and any(i.role == "size" for i in clause.items)
         ):
             previous.items.extend(i for i in mention.items if i.role == "size")

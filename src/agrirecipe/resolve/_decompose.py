@@ -179,6 +179,20 @@ def _combine(
     return combined or None
 
 
+def _plots_agree(one: dict[str, Any], other: dict[str, Any], categories: dict[str, str]) -> bool:
+    """Whether two plot words can name one field: a plot of a category ("vegetable
+    garden") cannot be a plot of crops outside it ("vineyard")."""
+    for first, second in ((one, other), (other, one)):
+        category = first.get("category")
+        if (
+            category is not None
+            and second["options"]
+            and not any(categories.get(c) == category for c in second["options"])
+        ):
+            return False
+    return True
+
+
 class MentionBuilder:
     """Reads a clause's items into mentions; decides which heads can name one field."""
 
@@ -204,6 +218,10 @@ class MentionBuilder:
                 and not set(spec["options"]) & set(mention.plot["options"])
             ):
                 return False  # "an orchard vineyard": two plots, two fields
+            if mention.plot is not None and not _plots_agree(
+                spec, mention.plot, self.crop_categories
+            ):
+                return False  # "the vegetable garden south of the vineyard": two fields
             if mention.has_crop and spec["options"]:
                 return not _plot_excludes(spec, mention)  # "a carrot orchard": two things
             # "cereals at the top, root veg at the bottom": two fields

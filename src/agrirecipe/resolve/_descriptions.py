@@ -9,6 +9,7 @@ mention into words for the field(s) it describes (the words are data:
 from __future__ import annotations
 
 import functools
+import itertools
 from collections.abc import Sequence
 
 from agrirecipe.resolve._decompose import Clause, Mention
@@ -101,6 +102,7 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
             or (
                 mention.count is not None
                 and not (definite or fraction or one_described or predicate)
+                and not _a_different(mention)
             )
             or (mention.quantity is not None and not (definite or predicate))  # "a lot of"
             or mention.other
@@ -249,3 +251,13 @@ def _predicate(clause: Clause, mention: Mention) -> bool:
 @functools.lru_cache(maxsize=1)
 def _describing_verbs() -> frozenset[str]:
     return frozenset(str(word) for word in vocabulary()["describing_verbs"])
+
+
+def _a_different(mention: Mention) -> bool:
+    """'four fields, each growing a different vegetable': "a" before "different" is an
+    article, not a count of one field."""
+    items = sorted(mention.items, key=lambda i: i.start)
+    return any(
+        a.role == "number" and a.norm in ("a", "an") and b.role == "distinct"
+        for a, b in itertools.pairwise(items)
+    )

@@ -196,6 +196,8 @@ class FieldReading:
         plot = member.plot or {}
         options: tuple[str, ...] = tuple(plot.get("options", ()))
         category = member.category
+        if category is None and not strong:
+            category = plot.get("category")  # "a vineyard, a vegetable garden"
         if category is not None:
             options = tuple(o for o in options if self.crop_categories.get(o) == category)
         if crop is None and any(

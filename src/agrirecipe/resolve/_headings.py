@@ -55,7 +55,8 @@ def drop_list_headings(clauses: Sequence[Clause], mentions: list[Mention]) -> li
                 # block": a crop heading the fields of that crop it lists
                 or _heads_its_list(mention, later)
             )
-            and (mention.count or 1) == 1
+            # ("sensor test strips: a capsicum strip between ...": a plural, not counted)
+            and ((mention.count or 1) == 1 or not any(i.role == "number" for i in mention.items))
             and not mention.refinements
             and mention.rest is None
             # "my allotment: three different veg patches": two or more fields listed

@@ -266,28 +266,42 @@ def same_spacing(intent: FieldIntent, before: FieldIntent, words: Sequence[Item]
 
 
 def parallel_spacing(
-    intent: FieldIntent, before: FieldIntent, items: Sequence[Item]
+    intent: FieldIntent,
+    items: Sequence[Item],
+    others: Sequence[tuple[FieldIntent, Sequence[Item]]],
 ) -> FieldIntent:
-    """'Riesling at 1.8 m row spacing and Spätburgunder at 2.0 m': a bare 'at 2.0 m' after
-    a field that said which spacing its 'at' measure was is the same spacing."""
+    """'Riesling at 1.8 m row spacing and Spätburgunder at 2.0 m', 'tomato rows 1.5 m
+    apart, capsicum 0.9 m, maize 0.75 m': a bare 'at 2.0 m' or '0.9 m' after a crop's
+    name is the spacing the field whose measure was said last before it stated."""
     lengths = ("row_spacing_m", "in_row_spacing_m", "bed_width_m")
-    own = intent.rows
-    said = [  # what the field before said and this one does not (a shared 'both' is in both)
-        k
-        for k in lengths
-        if before.rows is not None
-        and getattr(before.rows, k) is not None
-        and (own is None or getattr(own, k) is None)
-    ]
-    if len(said) != 1:
-        return intent
-    for first, number, unit in zip(items, items[1:], items[2:], strict=False):
-        if first.norm != "at" or unit.role != "length_unit":
+    ordered = sorted(items, key=lambda i: i.start)
+    for first, number, unit in zip(ordered, ordered[1:], ordered[2:], strict=False):
+        if unit.role != "length_unit" or not (
+            first.norm == "at" or (first.role == "head" and number.role == "filler")
+        ):
             continue
         value = number_value(number.norm)
         factors = [float(s.value) for s in unit.senses_of("length_unit")]
         if value is None or value <= 0 or not factors:
             continue
+        spoken = [
+            (max(i.start for i in other if i.role == "geometry" and i.start < number.start), before)
+            for before, other in others
+            if any(i.role == "geometry" and i.start < number.start for i in other)
+        ]
+        if not spoken:
+            return intent
+        before = max(spoken, key=lambda s: s[0])[1]
+        own = intent.rows
+        said = [  # what that field said and this one does not (a shared 'both' is in both)
+            k
+            for k in lengths
+            if before.rows is not None
+            and getattr(before.rows, k) is not None
+            and (own is None or getattr(own, k) is None)
+        ]
+        if len(said) != 1:
+            return intent
         metres = round(value * factors[0], 6)
         text = f"{first.raw} {number.raw} {unit.raw}"
         rows = (

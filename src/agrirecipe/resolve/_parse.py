@@ -271,9 +271,9 @@ class PromptReader(FieldReading):
             same = [i for i in fields[index].items if i.role == "same_spacing"]
             if same:
                 intents[index] = same_spacing(intents[index], intents[index - 1], same)
-            intents[index] = parallel_spacing(
-                intents[index], intents[index - 1], fields[index].items
-            )
+        for index, field in enumerate(fields):
+            others = [(intents[j], f.items) for j, f in enumerate(fields) if j != index]
+            intents[index] = parallel_spacing(intents[index], field.items, others)
         for index, intent in enumerate(intents):
             self.trace.append(
                 TraceStep(
@@ -562,6 +562,9 @@ class PromptReader(FieldReading):
                 and starts_bare
             ):
                 targets = [forward] if forward is not None else []
+            elif _same_as_before_next(clauses, position, attributes, forward):
+                # "Plot A is 200 ft by 300 ft of Roma. Plot B is the same size, Beefsteak."
+                targets = [forward] if forward is not None else []
             elif refined is not None and refined.refinements:
                 # The member the clause before named ("carrots (75 cm ridges), onions ..."),
                 # or all of them ("..., 8 rows each at 76 cm").
@@ -704,6 +707,31 @@ def _continues_a_description(clauses: Sequence[Clause], position: int) -> bool:
         and bool(previous.items)
         and previous.items[0].norm in ("the", "their", "its", "those", "these")
         and previous.mentions[-1].heads[-1].end < previous.items[-1].end  # words after it
+    )
+
+
+def _same_as_before_next(
+    clauses: Sequence[Clause],
+    position: int,
+    attributes: Sequence[Item],
+    forward: Mention | None,
+) -> bool:
+    """'Plot B is the same size, Beefsteak': "the same size" compares with a field named
+    before, so in a sentence of its own it belongs to the field named right after it."""
+    clause = clauses[position]
+    following = clauses[position + 1].link if position + 1 < len(clauses) else None
+    return (
+        position > 0
+        and forward is not None
+        and forward.clause == position + 1
+        and clause.link is not None
+        and clause.link.norm in (".", "!", ";")
+        and bool(attributes)
+        and all(i.role in ("same_size", "same_spacing") for i in attributes)
+        # ("the same size as the pears" names what it is compared with)
+        and not any(i.norm.endswith(" as") for i in attributes)
+        and following is not None
+        and following.norm in (",", ":", "-")
     )
 
 

@@ -547,6 +547,12 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             # about the fruit or plants do not end the listing of the members
             last = clause.mentions[-1]
             parent = last if (last.count or 1) >= 2 else None
+    for mention in top:
+        members = len({id(r) for r in mention.refinements})
+        if mention.implied_count and 0 < members < (mention.count or 1):
+            # "sensor test strips: a capsicum strip between a tomato strip and ...": an
+            # uncounted plural is as many fields as it lists, not one more of no crop
+            mention.count = len(mention.refinements)
     return top
 
 

@@ -20,6 +20,7 @@ each decides what a word is in its place, where the lexicon alone cannot:
 3   readiness said of the past or of other things         "ready for the fleece"
 4   a stage word or cue after a negation says nothing     "not in ear yet"
 5   "all" before a plain word stresses it                 "all green and even"
+5b  "every field" says something of every field          "each plot gets a 4 m headland"
 6   plots a list of crops is grown in are its own fields  "A and B in 2 plots"
 7   a plot word inside an unknown phrase is no field      "compare planting systems"
 8   a sentence about the rows or beds of every field      "Ridges and beds all 80 m"
@@ -58,6 +59,7 @@ def read_words(items: Sequence[Item], text: str) -> None:
     _past_and_other_readiness(items)
     _negated_looks(items)
     _all_as_intensifier(items)
+    _every_plot(items)
     _plots_of_a_list(items)
     _plot_words_of_other_things(items)
     _row_words_of_every_field(items)
@@ -395,6 +397,29 @@ def _all_as_intensifier(items: Sequence[Item]) -> None:
         beyond = items[index + 2] if index + 2 < len(items) else None
         if beyond is None or beyond.role not in ATTRIBUTE_ROLES:
             item.role = "filler"
+
+
+def _every_plot(items: Sequence[Item]) -> None:
+    """'Blight has hit every field - the potatoes, ...', 'each plot gets a 4 m headland',
+    'all the strips are 50 m': "every"/"each" before one plot word, or "all (the)" before
+    a plural one, says something of every field; the plot word asks for none."""
+    for index, item in enumerate(items):
+        if item.role != "all" or item.norm not in ("every", "each", "all"):
+            continue
+        at = index + 1
+        if item.norm == "all" and at < len(items) and items[at].norm == "the":
+            at += 1
+        plot = items[at] if at < len(items) else None
+        spec = plot.data.get("value") if plot is not None and plot.role == "plot" else None
+        if plot is None or not isinstance(spec, dict) or spec.get("individual"):
+            continue
+        if bool(spec.get("plural")) != (item.norm == "all"):
+            continue
+        after = items[at + 1] if at + 1 < len(items) else None
+        # ("each field of wheat", "every plot 2 carrots") name the crop of each field
+        if after is not None and after.role in ("head", "weak_variety", "of", "number"):
+            continue
+        plot.role = "filler"
 
 
 def _negated_looks(items: Sequence[Item]) -> None:
