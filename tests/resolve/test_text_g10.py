@@ -273,3 +273,41 @@ def test_bare_spacings_after_each_crop_and_an_uncounted_heading() -> None:
     relation = scene.relations[0]
     assert relation.kind == "between"
     assert relation.subject == fields["Pepper"].id
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "kinda want durondeau pears n granny apples, apples north pears south, spring blossom "
+        "everywhere",
+        "durondeau pears and granny apples, apples to the north and pears to the south",
+    ],
+)
+def test_crops_placed_again_after_they_are_named(prompt: str) -> None:
+    scene = recipe(prompt)
+    by_id = {f.id: f.crop for f in scene.fields}
+    assert sorted(by_id.values()) == ["Apple", "Pear"]
+    assert [(by_id[r.subject], r.kind, [by_id[o] for o in r.objects]) for r in scene.relations] == [
+        ("Apple", "north_of", ["Pear"])
+    ]
+
+
+def test_compass_words_of_one_phrase_stay_together() -> None:
+    scene = recipe("from west 2 east: sturon onions then chantenay carrots then agria spuds")
+    by_id = {f.id: f.crop for f in scene.fields}
+    said = [(by_id[r.subject], r.kind, by_id[r.objects[0]]) for r in scene.relations]
+    assert ("Onion", "west_of", "Carrot") in said
+    assert ("Carrot", "west_of", "Potato") in said
+
+
+def test_the_upper_and_the_lower_orchard() -> None:
+    scene = recipe("Williams pears in the lower orchard, Golden apples in the upper one.")
+    by_id = {f.id: f.crop for f in scene.fields}
+    assert [(by_id[r.subject], r.kind, [by_id[o] for o in r.objects]) for r in scene.relations] == [
+        ("Apple", "north_of", ["Pear"])
+    ]
+
+
+def test_a_second_plural_heading_starts_its_own_list() -> None:
+    fields = recipe("Lower terraces: Chardonnay. Upper terraces: Riesling.").fields
+    assert [f.variety for f in fields] == ["Chardonnay", "Riesling"]

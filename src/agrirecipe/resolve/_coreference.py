@@ -78,7 +78,7 @@ def _same_modifier(kept: Sequence[Mention], mention: Mention) -> Mention | None:
     before = [i for i in mention.items if i.end <= plots[0].start]
     if (
         not before
-        or before[-1].role not in ("unknown", "filler", "stage", "other")
+        or before[-1].role not in ("unknown", "filler", "stage", "other", "zone")
         or before[-1].norm in ARTICLES | definite_words()
     ):
         return None
@@ -131,7 +131,8 @@ def merge_coreferences(
         bare = clause.link is not None and (
             clause.link.role == "separator"
             # "; cabbage and potato rows 75 cm apart": a list of fields named again
-            or (clause.link.role == "conjunction" and clause.index - 1 in merged)
+            # ("apples to the north and pears to the south": past the placement)
+            or (clause.link.role == "conjunction" and _last_named(clauses, clause) in merged)
         )
         summary = _is_summary(mention) or (
             # "the peppers between the two tomato strips": fields of a crop named before
@@ -318,6 +319,11 @@ def _related_to(clauses: Sequence[Clause], clause: Clause, earlier: Mention) -> 
         return False
     before = [m for c in clauses[: clause.index] for m in c.mentions]
     return bool(before) and before[-1] is earlier
+
+
+def _last_named(clauses: Sequence[Clause], clause: Clause) -> int:
+    """The index of the last clause before ``clause`` that names a field (-1 if none)."""
+    return next((c.index for c in reversed(clauses[: clause.index]) if c.mentions), -1)
 
 
 def _is_summary(mention: Mention) -> bool:

@@ -458,6 +458,15 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             lists_members = lists_members or (
                 _names_varieties_of(sub, parent) and (enumerating or link.role == "separator")
             )
+            if (
+                link.norm in (".", "!", "?", ";")
+                and clause.mentions
+                and not sub.has_crop
+                and sub.plot is not None
+                and sub.plot["plural"]
+            ):
+                # "Lower terraces: Chardonnay. Upper terraces: Riesling.": a new heading
+                lists_members = False
             if clause.mentions and any(
                 same_variety(r, sub)
                 # "two different fruits: apples and apples" still lists two members

@@ -20,7 +20,7 @@ import yaml
 
 from agrirecipe.recipe import RelationKind
 from agrirecipe.resolve._intent import RelationIntent
-from agrirecipe.resolve._lexicon import DATA_DIR, Item, Token
+from agrirecipe.resolve._lexicon import DATA_DIR, Item, Token, vocabulary
 
 __all__ = [
     "ZoneMatch",
@@ -67,6 +67,12 @@ def _patterns() -> tuple[tuple[str, re.Pattern[str]], ...]:
         phrases = sorted((str(p) for p in data[zone]), key=len, reverse=True)
         alternation = "|".join(re.escape(p) for p in phrases)
         patterns.append((zone, re.compile(rf"(?<![a-z0-9])(?:{alternation})(?![a-z0-9])")))
+    nouns = sorted((*vocabulary()["plot_nouns"], "one", "ones"), key=len, reverse=True)
+    plots = "|".join(re.escape(str(n)) for n in nouns)
+    for zone, words in data["before_plots"].items():
+        alternation = "|".join(re.escape(str(w)) for w in words)
+        pattern = rf"(?<![a-z0-9])(?:{alternation})(?= (?:{plots})(?![a-z0-9]))"
+        patterns.append((str(zone), re.compile(pattern)))
     return tuple(patterns)
 
 
