@@ -311,3 +311,58 @@ def test_the_upper_and_the_lower_orchard() -> None:
 def test_a_second_plural_heading_starts_its_own_list() -> None:
     fields = recipe("Lower terraces: Chardonnay. Upper terraces: Riesling.").fields
     assert [f.variety for f in fields] == ["Chardonnay", "Riesling"]
+
+
+def test_structures_next_to_each_other_hold_the_list_after_them() -> None:
+    scene = recipe(
+        "Picking-robot trial in two polytunnels next to each other: tunnel 1 is Elsanta, "
+        "tunnel 2 is Centenary. In each one 5 raised beds on 1.5 m centres."
+    )
+    assert [f.variety for f in scene.fields] == ["Elsanta", "Malling Centenary"]
+    assert [(r.kind, r.subject, r.objects) for r in scene.relations] == [
+        ("next_to", scene.fields[0].id, (scene.fields[1].id,))
+    ]
+
+
+@pytest.mark.parametrize(
+    ("prompt", "varieties"),
+    [
+        ("the Conference block with the Royal Gala next to it", ["Conference", "Gala"]),
+        ("a Sonata bed and a Gala block", ["Sonata", "Gala"]),
+    ],
+)
+def test_a_capitalised_variety_before_its_plot(prompt: str, varieties: list[str]) -> None:
+    assert [f.variety for f in recipe(prompt).fields] == varieties
+
+
+def test_ridges_counted_after_them_and_a_seeding_robot() -> None:
+    fields = recipe(
+        "seeding robot field test. carrot ridges, 40 of them at 75 cm, 2 rows per ridge, 150 m "
+        "rows running east-west. south of the carrots a lettuce block, 35 cm rows, 30 cm in-row."
+    ).fields
+    carrots = fields[0]
+    assert carrots._grid()[0] == 40  # beds across the field, as the plant kernel lays them
+    assert carrots.agronomy.row_spacing_m == 0.75  # bed centres, with 2 rows on each
+    assert carrots.agronomy.rows_per_bed == 2
+    assert "stage" not in carrots.stated
+
+
+def test_a_spacing_after_two_crops_is_both_fields() -> None:
+    fields = recipe(
+        "Orchard robot sim with three blocks from north to south: cherries, apples, pears. "
+        "Cherries at 4.6 x 2.4 m; apples and pears at 3.5 x 1 m. 8 rows per block."
+    ).fields
+    spacing = {f.crop: (f.agronomy.row_spacing_m, f.agronomy.in_row_spacing_m) for f in fields}
+    assert spacing == {"Cherry": (4.6, 2.4), "Apple": (3.5, 1.0), "Pear": (3.5, 1.0)}
+
+
+def test_counted_plots_listed_by_a_placement() -> None:
+    scene = recipe(
+        "Could you make two 0.25 ha plots for the drone, carrots north of onions? Carrots at "
+        "150 plants per m², onions at 0.30 m x 0.10 m."
+    )
+    assert [f.crop for f in scene.fields] == ["Carrot", "Onion"]
+    for field in scene.fields:
+        width, length = field.geometry.size_m
+        assert width * length == pytest.approx(2500, rel=0.01)
+    assert scene.relations[0].kind == "north_of"

@@ -73,6 +73,8 @@ def read_relations(
             and any(i.scenery for i in clauses[position - 1].items)
             # (not "bananas along the stream to the east of them": scenery placed itself)
             and _not_placed(clauses[position - 1])
+            # (not "in two polytunnels next to each other: tunnel 1 is Elsanta, ...")
+            and not (link.role == "trailer" and len(_listed_after(clauses, position)) >= 2)
         ):
             # "..., with the village road running along the east side", "Rain covers
             # rolled up above both": the scenery is placed, not a field
@@ -106,7 +108,7 @@ def read_relations(
             after = []
         if link.role == "trailer" and link.data.get("value") in ("next_to", "row"):
             ordered = link.data.get("value") == "row"
-            group = coordinated(clauses, position)
+            group = coordinated(clauses, position) or _listed_after(clauses, position)
             if len(group) > 2:
                 # "potatoes, onions and cabbages side by side": a row, each beside the next.
                 for first, second in zip(group[1:], group, strict=False):
@@ -792,6 +794,30 @@ def _placement_pairs(
 #: Words that point back at a field named before ("north of it", "beside them").
 PRONOUNS = frozenset({"it", "them", "those", "these", "they", "this", "that", "which"})
 _THE_TWO = frozenset({"the two", "both", "the two of them", "those two", "these two", "the pair"})
+
+
+def _listed_after(clauses: Sequence[Clause], position: int) -> list[Mention]:
+    """'in two polytunnels next to each other: tunnel 1 is Elsanta, tunnel 2 is
+    Centenary': the fields listed after a colon, when nothing before it named one."""
+    following = clauses[position + 1 :]
+    if not following or following[0].link is None or following[0].link.norm != ":":
+        return []
+    listed: list[Mention] = []
+    for clause in following:
+        if (
+            clause is not following[0]
+            and clause.link is not None
+            and clause.link.norm
+            in (
+                ".",
+                "!",
+                "?",
+                ";",
+            )
+        ):
+            break
+        listed.extend(clause.mentions)
+    return listed
 
 
 def coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:

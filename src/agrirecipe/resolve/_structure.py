@@ -626,7 +626,11 @@ def _lists_exactly(
             and clause.index > start
             and link is not None
             and not listing(link)
-            and (link.norm in (".", "!", "?", ";") or link.role == "relation")
+            and (
+                link.norm in (".", "!", "?", ";")
+                # ("two 0.25 ha plots, carrots north of onions": the list placed in itself)
+                or (link.role == "relation" and not _bare_crop_first(clause))
+            )
         ):
             break
         # fields named again ("the Comice") or plot words alone ("Beds and ridges run
@@ -639,6 +643,16 @@ def _lists_exactly(
         and count >= 2
         and len(named) == count
         and all((m.count or 1) == 1 for m in named)
+    )
+
+
+def _bare_crop_first(clause: Clause) -> bool:
+    """Whether the clause opens with a crop named without an article ("onions")."""
+    return (
+        bool(clause.mentions)
+        and bool(clause.items)
+        and clause.items[0] in clause.mentions[0].heads
+        and clause.mentions[0].has_crop
     )
 
 
@@ -813,11 +827,24 @@ def share_trailing_attributes(clauses: Sequence[Clause]) -> None:
         if not _bare(previous, first) or not _bare(clause, second):
             continue
         last_head = max(h.start for h in second.heads)
-        trailing = [i for i in second.items if i.role in _SHARED_ROLES and i.start > last_head]
+        # "apples and pears at 3.5 x 1 m": a spacing after both is both fields'
+        trailing = [
+            i
+            for i in second.items
+            if (i.role in _SHARED_ROLES or _spacing(i)) and i.start > last_head
+        ]
         own = {_attribute(i) for i in first.items}
         # "cherry tomatoes with the trusses already red, and peppers, still only
         # flowering": the tomatoes' own cue keeps their stage
         first.items.extend(i for i in trailing if _attribute(i) not in own)
+
+
+def _spacing(item: Item) -> bool:
+    """A measure of how rows and plants are spaced ("at 3.5 x 1 m"), nothing counted."""
+    spacings = ("row_spacing_m", "in_row_spacing_m", "plants_per_ha", "bed_width_m")
+    return item.role == "geometry" and all(
+        m.key in spacings and not m.share for m in item.data["geometry"]
+    )
 
 
 def _attribute(item: Item) -> str:

@@ -17,6 +17,8 @@ each decides what a word is in its place, where the lexicon alone cannot:
 2b  "different" before a measure says nothing of crops    "at different densities"
 2c  a colour change beside a ripeness cue is ripening;   "flopped over and yellowing",
     a young part of the plant is no young field           "the young green bunch"
+2d  a capitalised variety name right before a plot word  "the Conference block"
+    names that plot's crop
 3   readiness said of the past or of other things         "ready for the fleece"
 4   a stage word or cue after a negation says nothing     "not in ear yet"
 5   "all" before a plain word stresses it                 "all green and even"
@@ -56,6 +58,7 @@ def read_words(items: Sequence[Item], text: str) -> None:
     _colours_are_not_crops(items, text)
     _measured_differences(items)
     _ripening_colours(items)
+    _variety_before_its_plot(items)
     _past_and_other_readiness(items)
     _negated_looks(items)
     _all_as_intensifier(items)
@@ -333,6 +336,26 @@ def _measured_differences(items: Sequence[Item]) -> None:
     for item, following in itertools.pairwise(items):
         if item.role == "distinct" and following.norm in reader_words("measured_differences"):
             item.role = "filler"
+
+
+def _variety_before_its_plot(items: Sequence[Item]) -> None:
+    """'the Conference block with the Royal Gala next to it': a capitalised name of one
+    crop's variety, also an everyday word, right before a plot word names the plot's
+    crop, as a lowercase "conference" would not."""
+    for item, plot in itertools.pairwise(items):
+        if item.role not in ("filler", "weak_variety") or plot.role != "plot":
+            continue
+        spec = plot.data.get("value")
+        if not isinstance(spec, dict) or spec.get("individual"):
+            continue
+        senses = item.senses_of("variety")
+        if not item.tokens[0].capitalised or len({s.crop for s in senses}) != 1:
+            continue
+        options = spec.get("options") or ()
+        if options and senses[0].crop not in options:
+            continue
+        item.role = "head"
+        item.data["promoted"] = True
 
 
 def _past_and_other_readiness(items: Sequence[Item]) -> None:
