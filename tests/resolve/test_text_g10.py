@@ -366,3 +366,68 @@ def test_counted_plots_listed_by_a_placement() -> None:
         width, length = field.geometry.size_m
         assert width * length == pytest.approx(2500, rel=0.01)
     assert scene.relations[0].kind == "north_of"
+
+
+def test_a_list_separated_by_bars() -> None:
+    scene = recipe(
+        "Onion strip trial for the drone, west to east: Sturon | Stuttgarter Riesen | Walla "
+        "Walla. Each strip 6 rows at 30 cm, 10 cm in-row, 40 m long."
+    )
+    assert [f.variety for f in scene.fields] == ["Sturon", "Stuttgarter", "Walla Walla"]
+    ids = [f.id for f in scene.fields]
+    said = [(r.kind, r.subject, r.objects) for r in scene.relations]
+    assert ("west_of", ids[0], (ids[1],)) in said
+    assert ("west_of", ids[1], (ids[2],)) in said
+
+
+def test_two_crops_heading_the_list_after_a_colon() -> None:
+    scene = recipe(
+        "Carrot variety strips plus a lettuce strip for our weeding robot, north to south: "
+        "Imperator, then Danvers, then Bibb lettuce, each 10 ridges on 75 cm centres with 50 m "
+        "rows."
+    )
+    assert [f.variety for f in scene.fields] == ["Imperator", "Danvers", "Butterhead"]
+    ids = [f.id for f in scene.fields]
+    said = [(r.kind, r.subject, r.objects) for r in scene.relations]
+    assert ("north_of", ids[0], (ids[1],)) in said
+    assert ("north_of", ids[1], (ids[2],)) in said
+
+
+def test_depth_words_beside_a_compass_zone() -> None:
+    scene = recipe(
+        "Drone shot looking north: wheat at the top of the frame, then a strip of maize, then "
+        "potatoes closest to the camera at the bottom."
+    )
+    ids = {f.crop: f.id for f in scene.fields}
+    said = {(r.kind, r.subject, r.objects) for r in scene.relations}
+    assert ("north_of", ids["Wheat"], (ids["Maize"],)) in said
+    assert ("north_of", ids["Maize"], (ids["Potato"],)) in said
+
+
+@pytest.mark.parametrize(
+    ("prompt", "count"),
+    [
+        ("Iceberg heads hearted up, next to a few beds of Cos that have started bolting", 2),
+        ("Aerial photo of a patchwork of small wheat fields with hedges between them", 4),
+    ],
+)
+def test_vague_amounts_of_beds_and_of_fields(prompt: str, count: int) -> None:
+    assert len(recipe(prompt).fields) == count
+
+
+def test_a_cue_keeps_its_fields_stage_against_words_said_of_the_other() -> None:
+    fields = recipe(
+        "Cayenne chillies going red and beef tomatoes the size of fists but still green"
+    ).fields
+    assert [(f.crop, f.stage) for f in fields] == [
+        ("Pepper", "Maturation"),
+        ("Tomato", "Reproductive"),
+    ]
+
+
+def test_a_vague_number_of_beds_is_as_many_as_the_list_after_it() -> None:
+    fields = recipe(
+        "A patchwork of veg beds behind the house, I can make out onions, carrots and lettuce, "
+        "all still young."
+    ).fields
+    assert [f.crop for f in fields] == ["Onion", "Carrot", "Lettuce"]

@@ -15,7 +15,7 @@ from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._structure import names_a_variety, strong_crops
 from agrirecipe.resolve._words import SENTENCE_MARKS
 
-__all__ = ["drop_list_headings"]
+__all__ = ["drop_joint_headings", "drop_list_headings"]
 
 
 def _heads_its_list(mention: Mention, later: Sequence[Mention]) -> bool:
@@ -114,7 +114,8 @@ def _heads_fitting_list(
     if (
         mention.plot is None
         or mention.has_crop
-        or mention.count not in (None, 1)
+        # ("A patchwork of veg beds ..., I can make out onions, carrots and lettuce")
+        or (mention.count not in (None, 1) and mention.quantity is None)
         or mention.refinements
         or mention.clause + 1 >= len(clauses)
         or clauses[mention.clause].mentions[-1:] != [mention]
@@ -165,3 +166,52 @@ def _heads_counted_plots(clauses: Sequence[Clause], mention: Mention) -> bool:
         and bool(options)
         and all(strong_crops(r) and strong_crops(r) <= options for r in members)
     )
+
+
+def drop_joint_headings(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
+    """'Carrot variety strips plus a lettuce strip ..., north to south: Imperator, then
+    Danvers, then Bibb lettuce': two or more crops named before a colon, each as many
+    times as the list after it names fields of that crop, head that list together; they
+    are dropped before the members are read as those crops named again. Return the
+    fields left."""
+    headings = _joint_headings(clauses, mentions)
+    for heading in headings:
+        clause = clauses[heading.clause]
+        clause.mentions = [m for m in clause.mentions if m is not heading]
+    return [m for m in mentions if not any(m is h for h in headings)]
+
+
+def _joint_headings(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list[Mention]:
+    for colon in clauses:
+        if colon.link is None or colon.link.norm != ":":
+            continue
+        start = colon.index
+        while start > 0 and not _ends_sentence(clauses[start]):
+            start -= 1
+        end = colon.index + 1
+        while end < len(clauses) and not _ends_sentence(clauses[end]):
+            end += 1
+        before = [m for m in mentions if start <= m.clause < colon.index]
+        after = [m for m in mentions if colon.index <= m.clause < end]
+        if len(before) < 2 or not all(
+            strong_crops(m) and not names_a_variety(m) and not m.refinements for m in before
+        ):
+            continue
+        owners: dict[int, int] = {}
+        for member in after:
+            fitting = [h for h in before if strong_crops(member) <= strong_crops(h)]
+            if len(fitting) != 1 or not strong_crops(member):
+                break
+            owners[id(fitting[0])] = owners.get(id(fitting[0]), 0) + (member.count or 1)
+        else:
+            if all(
+                owners.get(id(h), 0) == (h.count or 1)
+                or (h.implied_count and owners.get(id(h), 0) >= 1)
+                for h in before
+            ):
+                return list(before)
+    return []
+
+
+def _ends_sentence(clause: Clause) -> bool:
+    return clause.link is not None and clause.link.norm in SENTENCE_MARKS

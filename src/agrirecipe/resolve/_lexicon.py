@@ -165,6 +165,10 @@ def normalise(text: str) -> str:
 _TOKEN = re.compile(r"\d+(?:[.,]\d+)*|[^\W\d_]+|[^\w\s'’\-]|(?<=\s)-(?=\s)|(?<![\w.])[-−](?=\d)")
 
 
+#: Marks that separate the members of a list as commas do.
+_LIST_MARKS = frozenset({"|", "•", "·", "¦"})
+
+
 def tokenize(prompt: str) -> list[Token]:
     """The prompt's tokens; ``"50x100m"`` is ``50``, ``x``, ``100``, ``m``."""
     text = prompt.replace("²", "2")
@@ -174,6 +178,8 @@ def tokenize(prompt: str) -> list[Token]:
         norm = normalise(raw)
         if re.fullmatch(r"\d+(?:[.,]\d+)*", raw):
             norm = _number_text(raw)
+        if raw in _LIST_MARKS:
+            norm = ","  # "Sturon | Stuttgarter Riesen | Walla Walla": a list's commas
         if (
             norm == "k"
             and tokens

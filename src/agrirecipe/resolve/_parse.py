@@ -58,7 +58,7 @@ from agrirecipe.resolve._fields import (
     give_respectively,
 )
 from agrirecipe.resolve._geometry import find_geometry, hoist_counted_crops
-from agrirecipe.resolve._headings import drop_list_headings
+from agrirecipe.resolve._headings import drop_joint_headings, drop_list_headings
 from agrirecipe.resolve._intent import (
     Hemisphere,
     ResolveContext,
@@ -102,6 +102,7 @@ from agrirecipe.resolve._structure import (
     apply_each_side,
     apply_plural_counts,
     apply_refinements,
+    attribute_of,
     drop_negated,
     per_bed,
     promote_weak_varieties,
@@ -225,6 +226,7 @@ class PromptReader(FieldReading):
         share_trailing_attributes(clauses)
         mentions = apply_refinements(clauses, self.crop_categories)
         mentions = share_counted_fields(mentions)
+        mentions = drop_joint_headings(clauses, mentions)
         mentions = merge_coreferences(clauses, mentions, builder)
         mentions = merge_appositive_plots(clauses, mentions)
         mentions = drop_list_headings(clauses, mentions)
@@ -617,10 +619,12 @@ class PromptReader(FieldReading):
             for target in targets:
                 # "ripe wheat and maize, still green": words shared by a list go to the
                 # members that do not state that attribute themselves.
+                # ("Cayenne chillies going red and beef tomatoes ..., but still green":
+                # a visual cue states the chillies' stage)
                 own = {
-                    i.role
+                    attribute_of(i)
                     for i in target.items
-                    if i.role in ("stage", "health") and i not in target.borrowed
+                    if i.role in ("stage", "health", "cue") and i not in target.borrowed
                 }
                 shared = seasons + others
                 if len(targets) > 1:

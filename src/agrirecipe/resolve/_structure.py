@@ -32,6 +32,7 @@ __all__ = [
     "apply_each_side",
     "apply_plural_counts",
     "apply_refinements",
+    "attribute_of",
     "definite_before_head",
     "definite_words",
     "descriptive_words",
@@ -190,7 +191,10 @@ def apply_plural_counts(clauses: Sequence[Clause], plural_count: int) -> None:
             fields_named = any(not h.data["value"]["individual"] for h in plots)
             if mention.count is None and mention.quantity is not None:
                 # "several vegetable fields", "lots of vegetables": fields; "lots of grapes":
-                # many vines in one vineyard.
+                # many vines in one vineyard; "a few beds of Cos": one field of beds.
+                one_field = bool(plots) and plots[-1].data["value"].get("one_field")
+                if one_field and mention.has_crop:
+                    continue
                 if fields_named or (mention.category is not None and not mention.has_crop):
                     mention.count = mention.quantity
                 continue
@@ -443,6 +447,17 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             # A generic plural mention followed by ':' lists its members; so does a
             # plural crop followed by its varieties ("two beds of lettuce, lollo rosso
             # and bibb").
+            if (
+                parent.quantity is not None
+                and parent.count == parent.quantity
+                and not parent.refinements
+                and link.norm == ","
+                and len(vague := _listed(clauses, clause.index)) >= 2
+                and all((m.count or 1) == 1 for m in vague)
+            ):
+                # "A patchwork of veg beds ..., I can make out onions, carrots and lettuce":
+                # a vague number of fields is as many as the list after it names
+                parent.count = len(vague)
             lists_members = not strong_crops(parent) and (
                 enumerating
                 or link.norm in (":", "-", "—", "–")
@@ -618,6 +633,18 @@ def _lists_exactly(
 ) -> bool:
     """Whether the clauses from ``start`` to the end of the sentence (or of the prompt)
     name exactly ``count`` single fields, joined as a list (commas and "and")."""
+    named = _listed(clauses, start, to_the_end=to_the_end)
+    return (
+        count is not None
+        and count >= 2
+        and len(named) == count
+        and all((m.count or 1) == 1 for m in named)
+    )
+
+
+def _listed(clauses: Sequence[Clause], start: int, *, to_the_end: bool = False) -> list[Mention]:
+    """The fields of named crops the clauses from ``start`` name, to the end of the
+    sentence (or of the prompt), joined as a list (commas and "and")."""
     named: list[Mention] = []
     for clause in clauses[start:]:
         link = clause.link
@@ -638,12 +665,7 @@ def _lists_exactly(
         named.extend(
             m for m in clause.mentions if m.has_crop and not definite_before_head(clause, m)
         )
-    return (
-        count is not None
-        and count >= 2
-        and len(named) == count
-        and all((m.count or 1) == 1 for m in named)
-    )
+    return named
 
 
 def _bare_crop_first(clause: Clause) -> bool:
@@ -833,10 +855,10 @@ def share_trailing_attributes(clauses: Sequence[Clause]) -> None:
             for i in second.items
             if (i.role in _SHARED_ROLES or _spacing(i)) and i.start > last_head
         ]
-        own = {_attribute(i) for i in first.items}
+        own = {attribute_of(i) for i in first.items}
         # "cherry tomatoes with the trusses already red, and peppers, still only
         # flowering": the tomatoes' own cue keeps their stage
-        first.items.extend(i for i in trailing if _attribute(i) not in own)
+        first.items.extend(i for i in trailing if attribute_of(i) not in own)
 
 
 def _spacing(item: Item) -> bool:
@@ -847,7 +869,7 @@ def _spacing(item: Item) -> bool:
     )
 
 
-def _attribute(item: Item) -> str:
+def attribute_of(item: Item) -> str:
     """The attribute an item states: its role, or for a visual cue the cue's attribute."""
     cue = item.data.get("cue") if item.role == "cue" else None
     return str(cue.attribute) if cue is not None else item.role

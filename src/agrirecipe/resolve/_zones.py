@@ -104,10 +104,13 @@ def find_zones(tokens: Sequence[Token], claimed: Sequence[bool] = ()) -> list[Zo
                 found.append(ZoneMatch(zone, first, last))
             for index in range(first, last):
                 taken[index] = True
-    if any(m.zone in _PLACES and "depth" not in _PLACES[m.zone] for m in found):
-        # "looking east ...: potatoes closest to me": the compass places, not the depth
-        found = [m for m in found if m.zone not in ("near", "far")]
+    compass = any(m.zone in _PLACES and "depth" not in _PLACES[m.zone] for m in found)
+    # "looking east ...: potatoes closest to me": the compass places, not the depth; the
+    # depth words stay zone words ("potatoes closest to the camera at the bottom"), read
+    # after a field's compass zone
     sides = {m.zone for m in found if m.zone != "middle"}
+    if compass:
+        sides -= {"near", "far"}
     if len(sides) < 2 and not (sides and any(m.zone == "middle" for m in found)):
         return []
     return sorted(found, key=lambda m: m.first)
