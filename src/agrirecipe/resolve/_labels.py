@@ -219,8 +219,9 @@ _LEADING = re.compile(
     r"(?:\b(?i:the)\s+|(?:^|(?<=[,;.:]\s)))(?P<side>(?i:north|south|east|west|top|bottom|upper|lower))(?i:ern)?\s+"
     r"(?i:plot|block|field|one|part|half|strip|parcel|section|paddock|area)\b\s*"
     r"(?:(?i:is|are|has|holds|gets|grows|has got)\s+|[:\-–—]\s*)?"
-    # (the rest runs to a mark, past a decimal point: "drilled in 12.5 cm rows")
-    r"(?P<rest>(?!(?i:of|to|and|with|in|on|at|is|are)\b)[^\s,;.:()](?:[^,;.:()]|\.(?=\d))*)"
+    # (the rest runs to a mark, past a decimal point or a thousands comma: "drilled in
+    # 12.5 cm rows", "at 80,000 plants/ha")
+    r"(?P<rest>(?!(?i:of|to|and|with|in|on|at|is|are)\b)[^\s,;.:()](?:[^,;.:()]|[.,](?=\d))*)"
 )
 
 

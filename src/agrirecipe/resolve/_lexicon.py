@@ -337,6 +337,11 @@ class Lexicon:
         phrase, score = str(match[0]), 100.0 * float(match[1])
         if text.startswith(phrase) and text[len(phrase) :] in _DERIVING_ENDINGS:
             return None  # "blocky" fruit is a word made from "block", not a misspelt one
+        said, known = text.split(), phrase.split()
+        if len(said) == len(known) and any(
+            a != b and a in everyday_words() for a, b in zip(said, known, strict=True)
+        ):
+            return None  # "fire blight on some shoots" is no misspelt "side shoots"
         return phrase, score, self._fuzzy_senses[phrase]
 
 

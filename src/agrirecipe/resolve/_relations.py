@@ -55,8 +55,9 @@ def read_relations(
             link.role == "relation"
             and not clause.mentions
             and clause.items
-            and all(i.role == "filler" for i in clause.items)
-            and any("scenery" in i.data for i in clause.items)
+            # ("a lettuce field east of the big barn, and east of that again ...")
+            and all(i.role in ("filler", "non_agricultural") for i in clause.items)
+            and any("scenery" in i.data or i.role == "non_agricultural" for i in clause.items)
         ):
             # "a test strip along the farm track": placed by scenery, not by a field
             trace.append(

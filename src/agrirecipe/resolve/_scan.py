@@ -123,6 +123,8 @@ def assign_roles(items: Sequence[Item]) -> None:
                 item.role == "non_agricultural"
                 or (item.role == "filler" and "scenery" in item.data)
             )
+            # ("a vineyard on the south-facing slope": where it is, not the machine's kind)
+            and item.data.get("scenery") != "aspects"
             and not (index >= 2 and items[index - 2].role in ("head", "weak_variety"))
         ):
             # "a row-crop robot test", "an orchard sprayer": the machine's kind, not a field
