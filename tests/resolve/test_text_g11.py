@@ -85,3 +85,88 @@ def test_a_south_facing_slope_places_nothing() -> None:
     assert [f.crop for f in scene.fields][::2] == ["Grape", "Wheat"]
     assert scene.fields[1].category == "Vegetables"
     assert ("Grape", "south_of", (scene.fields[1].crop,)) not in relations(scene)
+
+
+def test_sides_joined_by_by_are_one_size() -> None:
+    scene = recipe(
+        "Three camera test strips, all 10 m wide by 80 m long, laid out from west to east: "
+        "Savoy cabbage, Red Baron onions, Romaine lettuce."
+    )
+    assert [f.geometry.size_m for f in scene.fields] == [(10.0, 80.0)] * 3
+    assert ("Cabbage", "west_of", ("Onion",)) in relations(scene)
+    assert all(r.kind != "next_to" for r in scene.relations)
+
+
+def test_a_field_placed_east_of_both_fields_split_by_a_hedge() -> None:
+    scene = recipe(
+        "two wheat fields split by a hawthorn hedge, and a maize field to the east of both"
+    )
+    assert [f.crop for f in scene.fields] == ["Wheat", "Wheat", "Maize"]
+    assert {r.kind for r in scene.relations} == {"east_of"}
+
+
+def test_a_block_between_two_groves_named_before() -> None:
+    scene = recipe(
+        "Hamlin oranges on the west, Valencia Late on the east, and between the two groves a "
+        "block of Grande Naine bananas."
+    )
+    assert [f.crop for f in scene.fields] == ["Orange", "Orange", "Banana"]
+    banana = scene.fields[2].id
+    between = [r for r in scene.relations if r.kind == "between"]
+    assert [r.subject for r in between] == [banana]
+
+
+def test_quarters_named_bare_and_a_grid_of_plots() -> None:
+    scene = recipe(
+        "Four 0.25 ha plots in a 2x2 grid for the drone: strawberries NW, lettuce NE, cabbage "
+        "SW, onions SE."
+    )
+    assert [f.crop for f in scene.fields] == ["Strawberry", "Lettuce", "Cabbage", "Onion"]
+    assert relations(scene) == {
+        ("Strawberry", "north_of", ("Cabbage",)),
+        ("Lettuce", "north_of", ("Onion",)),
+        ("Strawberry", "west_of", ("Lettuce",)),
+        ("Cabbage", "west_of", ("Onion",)),
+    }
+
+
+def test_quarters_as_leading_labels() -> None:
+    scene = recipe(
+        "Think of the farm as four squares. North-west: Bing cherries. North-east: Williams "
+        "pears. South-west: Butterhead lettuce. South-east: Flint corn."
+    )
+    assert ("Cherry", "west_of", ("Pear",)) in relations(scene)
+    assert ("Cherry", "north_of", ("Lettuce",)) in relations(scene)
+
+
+def test_a_square_grid_that_matches_the_density_is_the_planting_grid() -> None:
+    (field,) = recipe(
+        "banana plants for a drone LAI survey: 3 m by 3 m, 1,111 plants per hectare, 5 ha, "
+        "rows north-south"
+    ).fields
+    assert (field.agronomy.row_spacing_m, field.agronomy.in_row_spacing_m) == (3.0, 3.0)
+    width, length = field.geometry.size_m
+    assert width * length == pytest.approx(50_000, rel=0.01)
+
+
+def test_this_one_is_the_photo_not_a_count() -> None:
+    scene = recipe(
+        "Two strawberry fields in this one, Sonata on the south side with red fruit ready to "
+        "pick and Albion to the north still flowering."
+    )
+    assert [(f.variety, f.stage) for f in scene.fields] == [
+        ("Sonata", "Maturation"),
+        ("Albion", "Reproductive"),
+    ]
+    assert relations(scene) == {("Strawberry", "south_of", ("Strawberry",))}
+
+
+def test_flowers_all_over_one_member_stay_with_it() -> None:
+    fields = recipe(
+        "Two fields in this one: spuds, lush and green with white flowers all over the ridges, "
+        "and a wheat field gone completely straw-coloured with the heads drooping."
+    ).fields
+    assert [(f.crop, f.stage) for f in fields] == [
+        ("Potato", "Reproductive"),
+        ("Wheat", "Maturation"),
+    ]

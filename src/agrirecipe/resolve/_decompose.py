@@ -319,9 +319,19 @@ class MentionBuilder:
                 # "west of the vineyard there's a block of ...": a plot named by its kind
                 # alone, then a new one ("on the chilli side there's a plot of ..." is
                 # still the chilli plot); "the cherry orchard has a plot of ..."
-                item.role == "plot"
-                and (
-                    (not current.has_crop and _existential(clause, pending)) or _possessed(pending)
+                (
+                    item.role == "plot"
+                    and (
+                        (not current.has_crop and _existential(clause, pending))
+                        or _possessed(pending)
+                    )
+                )
+                # "between the two groves a block of bananas": a plot counted again
+                or (
+                    current.plot is not None
+                    and (current.count or 1) >= 2
+                    and any(p.role == "number" and p.norm in ("a", "an") for p in pending)
+                    and not any(p.role in ("of", "size", "geometry") for p in pending)
                 )
             ):
                 current.conflict = current.conflict or _plot_conflict(current, item, pending)

@@ -242,12 +242,16 @@ class FieldReading:
         """'Cripps Pink 3.4 x 1.0 m, 18 rows', 'Savoy cabbage, 60 x 40 cm': two lengths
         that fit the crop's row and plant spacing, and no field, are its planting grid
         (rows that far apart, plants that far apart in the row), not the field's size."""
-        if not crops or (rows is not None and _SPACED & rows.stated().keys()):
+        spaced = _SPACED & rows.stated().keys() if rows is not None else set()
+        density = rows.plants_per_ha if rows is not None and spaced == {"plants_per_ha"} else None
+        if not crops or (spaced and density is None):
             return sizes, rows
         for size in sizes:
             width, length = size.width_m, size.length_m
             if width is None or length is None or max(width, length) > _GRID_MAX_M:
                 continue
+            if density is not None and abs(density * width * length / 10_000 - 1) > 0.02:
+                continue  # "3 m by 3 m, 1,111 plants per hectare": the grid the density is
             if all(self._fits_grid(crop, width, length) for crop in crops):
                 said = rows.stated() if rows is not None else {}
                 grid = RowSpec(

@@ -56,7 +56,13 @@ def drop_list_headings(clauses: Sequence[Clause], mentions: list[Mention]) -> li
                 or _heads_its_list(mention, later)
             )
             # ("sensor test strips: a capsicum strip between ...": a plural, not counted)
-            and ((mention.count or 1) == 1 or not any(i.role == "number" for i in mention.items))
+            and (
+                (mention.count or 1) == 1
+                or not any(i.role == "number" for i in mention.items)
+                # ("Two fields in this one, separated by a ditch: on the near side wheat
+                # ..., and on the far side onions": as many as it counts)
+                or mention.count == sum(m.count or 1 for m in later)
+            )
             and not mention.refinements
             and mention.rest is None
             # "my allotment: three different veg patches": two or more fields listed

@@ -55,8 +55,13 @@ def read_relations(
             link.role == "relation"
             and not clause.mentions
             and clause.items
-            # ("a lettuce field east of the big barn, and east of that again ...")
-            and all(i.role in ("filler", "non_agricultural") for i in clause.items)
+            # ("a lettuce field east of the big barn, and east of that again ...", "split
+            # by a hawthorn hedge")
+            and all(
+                i.role in ("filler", "non_agricultural")
+                or (i.role == "number" and i.norm in ARTICLES)
+                for i in clause.items
+            )
             and any("scenery" in i.data or i.role == "non_agricultural" for i in clause.items)
         ):
             # "a test strip along the farm track": placed by scenery, not by a field

@@ -393,6 +393,14 @@ def read_sizes(items: list[Item]) -> list[Item]:
     pending_side: dict[str, float] = {}
     pending_items: list[Item] = []
     while index < len(items):
+        layout = _match_layout(items, index)
+        if layout:
+            # "four plots in a 2x2 grid": how the plots are laid out, not a size or a count
+            for item in items[index : index + layout]:
+                item.role = "filler"
+            out.extend(items[index : index + layout])
+            index += layout
+            continue
         matched = _match_area(items, index) or _match_rectangle(items, index)
         if matched is not None or _match_side(items, index) is not None:
             _reject_negative(items, index)
@@ -415,6 +423,15 @@ def read_sizes(items: list[Item]) -> list[Item]:
                 out.append(_size_item(pending_items, size))
                 pending_side, pending_items = {}, []
             index += width
+            continue
+        if (
+            len(pending_side) == 1
+            and items[index].norm in ("by", "x", "and", "×")
+            and _match_side(items, index + 1) is not None
+        ):
+            # "10 m wide by 80 m long": the word between two sides joins them
+            pending_items.append(items[index])
+            index += 1
             continue
         out.append(items[index])
         index += 1
@@ -514,6 +531,24 @@ def _match_rectangle(items: Sequence[Item], index: int) -> tuple[SizeIntent, int
         text=text,
     )
     return size, position - index
+
+
+def _match_layout(items: Sequence[Item], index: int) -> int:
+    """The number of items of a layout of plots at ``index`` ("2 x 2 grid"), or 0."""
+    window = items[index : index + 4]
+    if (
+        len(window) == 4
+        and _number_at(items, index) is not None
+        and window[1].has("dimension_joiner")
+        and _number_at(items, index + 2) is not None
+        and window[3].norm in _ARRANGEMENTS
+    ):
+        return 4
+    return 0
+
+
+#: Words after "2 x 2" that make it a layout of plots, not a plot's size.
+_ARRANGEMENTS = frozenset({"grid", "layout", "arrangement", "pattern", "matrix", "array", "square"})
 
 
 def _number_at(items: Sequence[Item], index: int) -> float | None:

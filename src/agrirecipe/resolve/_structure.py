@@ -371,7 +371,13 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             clause.refined_parent = parent
             # "field corn, flint corn and popping corn, 8 rows each at 76 cm": for them all
             # ("75 cm ridges, 2 rows on each": each ridge, not each member)
-            shared = any(t.norm in EACH for i in clause.items if not per_bed(i) for t in i.tokens)
+            # ("with white flowers all over the ridges": "all over" is no "all")
+            shared = any(
+                t.norm in EACH
+                for i in clause.items
+                if not per_bed(i) and i.role != "filler"
+                for t in i.tokens
+            )
             # "Two strawberry plots of 10 beds each, Elsanta and Albion, beds 1.3 m ...":
             # measures after the last member of a full list describe them all
             ended = (

@@ -9,6 +9,7 @@ each decides what a word is in its place, where the lexicon alone cannot:
 1   a number with a length unit, a rootstock's name, one  "3.5 m in the pears",
     plant every so far, a count of scenery or of fruit:   "one carrot every 2 cm",
     not a count of fields                                 "lots of fruit"
+1a  "one" after "this"/"that" points, it counts nothing "Two fields in this one"
 1b  "twin" of no rows; a compound such as "Crop-row" or   "Citrus twin"
     "Pear-vs-apple"
 2   a crop word joined to a colour, or a colour crop      "olive-green patches",
@@ -54,6 +55,7 @@ SENTENCE_MARKS = frozenset({".", "!", "?", ";"})
 def read_words(items: Sequence[Item], text: str) -> None:
     """Run the word passes, in order, over a prompt's items (see the module's table)."""
     _measures_are_not_counts(items)
+    _this_one(items)
     _twins_and_compounds(items, text)
     _colours_are_not_crops(items, text)
     _measured_differences(items)
@@ -406,6 +408,18 @@ def _respective_sizes(items: Sequence[Item]) -> None:
 _ALL_CARRIERS = frozenset(
     {"in", "at", "on", "of", "with", "the", "are", "is", "were", "was", "have", "look", "looking"}
 )
+
+
+def _this_one(items: Sequence[Item]) -> None:
+    """'Two strawberry fields in this one': "one" after "this", "that" or "which" points
+    at a thing (the photo, a field named), it does not count one field."""
+    for before, item in itertools.pairwise(items):
+        if (
+            item.role == "number"
+            and item.norm == "one"
+            and before.norm in ("this", "that", "which")
+        ):
+            item.role = "filler"
 
 
 def _all_as_intensifier(items: Sequence[Item]) -> None:
