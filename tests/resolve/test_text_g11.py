@@ -170,3 +170,71 @@ def test_flowers_all_over_one_member_stay_with_it() -> None:
         ("Potato", "Reproductive"),
         ("Wheat", "Maturation"),
     ]
+
+
+@pytest.mark.parametrize(
+    ("prompt", "crops"),
+    [
+        (
+            "Spätburgunder bunches hanging dark purple, pickers with buckets working down the "
+            "row and a tractor with a grape hopper waiting.",
+            ["Grape"],
+        ),
+        (
+            "Winter wheat, just a couple of leaves per plant poking through the frosty clods, "
+            "rooks all over it and the tramlines from the drill clearly visible.",
+            ["Wheat"],
+        ),
+        (
+            "Washington Navels, fruit hanging ripe and orange, packed crates and a forklift on "
+            "the track, and snow on the mountains far off.",
+            ["Orange"],
+        ),
+        ("ripe wheat and orange trees", ["Wheat", "Orange"]),
+    ],
+)
+def test_loads_leaves_and_colours_are_no_fields(prompt: str, crops: list[str]) -> None:
+    assert [f.crop for f in recipe(prompt).fields] == crops
+
+
+def test_the_two_plots_counted_together_before() -> None:
+    scene = recipe(
+        "two tomato plots and one pepper plot, each 15 x 40 m. Tomatoes on 1.5 m rows, peppers "
+        "on 1.4 m beds, and the pepper plot sits between the two tomato plots."
+    )
+    assert [f.crop for f in scene.fields] == ["Tomato", "Tomato", "Pepper"]
+    tomato_1, tomato_2, pepper = (f.id for f in scene.fields)
+    assert [(r.kind, r.subject, r.objects) for r in scene.relations] == [
+        ("between", pepper, (tomato_1, tomato_2))
+    ]
+
+
+def test_a_count_said_again_before_the_varieties_are_placed() -> None:
+    scene = recipe(
+        "centenary & albion strawberries, 2 fields, albion south of centenary, polytunnels "
+        "everywhere"
+    )
+    assert [f.variety for f in scene.fields] == ["Malling Centenary", "Albion"]
+    centenary, albion = (f.id for f in scene.fields)
+    assert [(r.kind, r.subject, r.objects) for r in scene.relations] == [
+        ("south_of", albion, (centenary,))
+    ]
+
+
+@pytest.mark.parametrize(
+    ("prompt", "varieties"),
+    [
+        (
+            "plot list for the home farm - plot 1 Bintje potatoes on 75 cm ridges, plot 2 Nantes "
+            "carrots, plot 3 Sturon onions.",
+            ["Bintje", "Nantes", "Sturon"],
+        ),
+        (
+            "Tunnel one has Roma tomatoes, all fine; tunnel two has California Wonder peppers "
+            "with bacterial spot; tunnel three is Jalapeño seedlings.",
+            ["Roma", "California Wonder", "Jalapeno"],
+        ),
+    ],
+)
+def test_plots_and_tunnels_labelled_by_number(prompt: str, varieties: list[str]) -> None:
+    assert [f.variety for f in recipe(prompt).fields] == varieties

@@ -238,7 +238,9 @@ def merge_coreferences(
             # "a strip of Jalapeños between the two groves": the two earlier fields that
             # are groves, whatever was named in between
             fitting = [m for m in reversed(kept) if _compatible(builder, m, mention)]
-            if len(fitting) != mention.count:
+            if len(fitting) == 1 and fitting[0].count == mention.count:
+                pass  # "the two tomato plots": the two counted together before
+            elif len(fitting) != mention.count:
                 # "plots: Big Mike and Lady Finger, ..., the two plots adjacent": the members
                 fitting = [
                     r
@@ -246,9 +248,11 @@ def merge_coreferences(
                     for r in {id(x): x for x in m.refinements[::-1]}.values()
                     if _compatible(builder, r, mention)
                 ]
-            if len(fitting) == mention.count:
+            if len(fitting) == mention.count or (
+                len(fitting) == 1 and fitting[0].count == mention.count
+            ):
                 run = fitting
-        if summary and len(run) != mention.count:
+        if summary and sum(m.count or 1 for m in run) != mention.count:
             kept.append(mention)
             continue
         names_variety = names_a_variety(mention)

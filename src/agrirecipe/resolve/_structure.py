@@ -488,11 +488,18 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
             ):
                 # "Lower terraces: Chardonnay. Upper terraces: Riesling.": a new heading
                 lists_members = False
-            if clause.mentions and any(
-                same_variety(r, sub)
-                # "two different fruits: apples and apples" still lists two members
-                or (link.role == "separator" and not parent.distinct and _names_again(r, sub))
-                for r in parent.refinements
+            named_before = [m for c in clauses[: parent.clause] for m in c.mentions]
+            if clause.mentions and (
+                any(
+                    same_variety(r, sub)
+                    # "two different fruits: apples and apples" still lists two members
+                    or (link.role == "separator" and not parent.distinct and _names_again(r, sub))
+                    for r in parent.refinements
+                )
+                # "centenary & albion strawberries, 2 fields, albion south of centenary":
+                # the count says again how many fields were named; the varieties after it
+                # are those fields named again
+                or (names_a_variety(sub) and any(same_variety(m, sub) for m in named_before))
             ):
                 # "..., Valencia east of Hamlin", "bintje spuds & nantes carrots, carrots
                 # east of the spuds": a member named again

@@ -15,6 +15,7 @@ each decides what a word is in its place, where the lexicon alone cannot:
 2   a crop word joined to a colour, or a colour crop      "olive-green patches",
     word before scenery, is a colour; a crop word before  "an orange tractor",
     a machine names its load                              "a grain trailer"
+2a  a colour crop word after "ripe and" is a colour     "hanging ripe and orange"
 2b  "different" before a measure says nothing of crops    "at different densities"
 2c  a colour change beside a ripeness cue is ripening;   "flopped over and yellowing",
     a young part of the plant is no young field           "the young green bunch"
@@ -58,6 +59,7 @@ def read_words(items: Sequence[Item], text: str) -> None:
     _this_one(items)
     _twins_and_compounds(items, text)
     _colours_are_not_crops(items, text)
+    _colour_after_a_look(items)
     _measured_differences(items)
     _ripening_colours(items)
     _variety_before_its_plot(items)
@@ -95,6 +97,18 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
             and (after is None or after.role not in ("plot", "head", "weak_variety", "category"))
         ):
             item.role = "filler"  # "on Gisela 6": a rootstock's or machine's name
+    # "just a couple of leaves per plant": leaves on each plant, no count of fields
+    for index, item in enumerate(items):
+        if item.role == "plot" and index and items[index - 1].norm in ("per", "each", "a"):
+            spec = item.data.get("value")
+            if isinstance(spec, dict) and spec.get("individual"):
+                item.role = "filler"
+        if (
+            item.role == "number"
+            and index + 1 < len(items)
+            and items[index + 1].norm in ("leaves", "leaf", "true leaves", "flowers", "fruits")
+        ):
+            item.role = "filler"
     # "Three pepper varieties, one strip each: ...": how each member is planted
     for first, plot, each in zip(items, items[1:], items[2:], strict=False):
         if (
@@ -297,6 +311,23 @@ def _colours_are_not_crops(items: Sequence[Item], text: str) -> None:
                 crop.data["colour"] = True
 
 
+def _colour_after_a_look(items: Sequence[Item]) -> None:
+    """'Washington Navels, fruit hanging ripe and orange, packed crates': a crop word that
+    is a colour, joined by "and" to a stage or look and ending its phrase, is a colour."""
+    for index in range(2, len(items)):
+        look, joiner, word = items[index - 2], items[index - 1], items[index]
+        after = items[index + 1] if index + 1 < len(items) else None
+        if (
+            word.role == "head"
+            and word.norm in reader_words("colour_crops")
+            and joiner.norm in ("and", "&")
+            and (look.role in ("stage", "cue") or look.norm in reader_words("colours"))
+            and (after is None or after.role in ("separator", "conjunction"))
+        ):
+            word.role = "filler"
+            word.data["colour"] = True
+
+
 def _ripening_colours(items: Sequence[Item]) -> None:
     """'tops all flopped over and yellowing': a colour change said with a ripeness cue is
     the crop ripening (senescence), not disease; 'the young green bunch': a young part of
@@ -472,14 +503,32 @@ def _plot_numbers_are_names(items: Sequence[Item]) -> None:
     not count fields (a count comes before its noun)."""
     for index, (item, number) in enumerate(itertools.pairwise(items)):
         spec = item.data.get("value") if item.role == "plot" else None
-        if not isinstance(spec, dict) or spec.get("plural") or number.role != "number":
-            continue
-        if not number.norm.isdigit():
+        structure = item.norm in ("tunnel", "polytunnel", "greenhouse", "glasshouse", "house")
+        if (
+            not (isinstance(spec, dict) or structure)
+            or (isinstance(spec, dict) and spec.get("plural"))
+            or number.role != "number"
+        ):
             continue
         after = items[index + 2] if index + 2 < len(items) else None
-        if after is None or after.role not in ("head", "plot", "weak_variety", "size", "geometry"):
+        # "plot 2 Nantes carrots", "tunnel two has California Wonder peppers": a label
+        # opening what it names (a count would come before the plot word)
+        opening = index == 0 or items[index - 1].role in ("separator", "conjunction")
+        if not number.norm.isdigit() and not (opening and number.norm in _NUMBER_WORDS):
+            continue
+        if (
+            after is None
+            or after.role not in ("head", "plot", "weak_variety", "size", "geometry")
+            or (opening and after.role in ("head", "weak_variety"))
+        ):
             number.role = "filler"
             number.data["label"] = True
+
+
+#: Number words a plot or tunnel is labelled with ("tunnel two has ...").
+_NUMBER_WORDS = frozenset(
+    {"one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten"}
+)
 
 
 def _row_words_of_every_field(items: Sequence[Item]) -> None:
