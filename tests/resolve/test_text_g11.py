@@ -238,3 +238,61 @@ def test_a_count_said_again_before_the_varieties_are_placed() -> None:
 )
 def test_plots_and_tunnels_labelled_by_number(prompt: str, varieties: list[str]) -> None:
     assert [f.variety for f in recipe(prompt).fields] == varieties
+
+
+@pytest.mark.parametrize(
+    ("prompt", "health"),
+    [
+        (
+            "Dwarf Cavendish up front with heavy green bunches, and the Ladyfinger block next to "
+            "them has yellowing, mottled leaves and some plants wilting.",
+            ["Healthy", "Ill"],
+        ),
+        (
+            "Beefsteak tomatoes staked up in the foreground with big fruit still green, and "
+            "behind them a bed of Padrón peppers whose leaves are spotted dark and whose fruit "
+            "has raised scabby spots.",
+            ["Healthy", "Ill"],
+        ),
+        (
+            "Bibb and Lollo lettuce just planted out side by side, tiny plants in black plastic, "
+            "fleece hoops waiting to go over them on a gusty spring day.",
+            ["Healthy", "Healthy"],
+        ),
+    ],
+)
+def test_damage_stays_with_the_field_it_is_said_of(prompt: str, health: list[str]) -> None:
+    assert [f.health for f in recipe(prompt).fields] == health
+
+
+@pytest.mark.parametrize(
+    ("prompt", "stages"),
+    [
+        (
+            "Flint corn, waist high and green, no tassels yet, rows 75 cm apart",
+            ["Vegetative"],
+        ),
+        (
+            "Spelt on one side of the hedge, straw-coloured with the heads bowed, and Walla "
+            "Walla onions on the other, lifted and drying in windrows.",
+            ["Maturation", "Maturation"],
+        ),
+    ],
+)
+def test_stages_seen_before_tassels_and_after_lifting(prompt: str, stages: list[str]) -> None:
+    assert [f.stage for f in recipe(prompt).fields] == stages
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "Spelt on one side of the hedge, straw-coloured with the heads bowed, and Walla Walla "
+        "onions on the other, lifted and drying in windrows.",
+        "This is the corner where the Imperator carrots meet the Danvers: the Imperator look "
+        "healthy, the Danvers have dark spots with yellow rings on the leaves.",
+    ],
+)
+def test_two_fields_that_meet(prompt: str) -> None:
+    scene = recipe(prompt)
+    assert len(scene.fields) == 2
+    assert [r.kind for r in scene.relations] == ["next_to"]

@@ -485,6 +485,7 @@ class PromptReader(FieldReading):
     def _attach_loose(self, clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list[Item]:
         """Give each head-less clause's attributes to its field(s); return scene-wide items."""
         scene: list[Item] = []
+        carried: tuple[int, list[Mention]] | None = None  # the last clause's own targets
         for position, clause in enumerate(clauses):
             _detach_trailing_all(clause)
             if position and mentions:
@@ -585,10 +586,19 @@ class PromptReader(FieldReading):
             elif any(i.data.get("list_plots") for i in clause.items):
                 # "carrots (...) and potatoes (...) in 25 x 60 m plots": the list's plots
                 targets = sentence_fields(clauses, position)
+            elif before and clause.items and clause.items[0].norm in ("whose", "which"):
+                # "Padrón peppers whose leaves are spotted and whose fruit has raised
+                # scabby spots": a relative clause about the field named last
+                targets = [before[-1]]
+            elif carried is not None and carried[0] == position - 1 and _goes_on(clause):
+                # "the Ladyfinger block next to them has yellowing, mottled leaves and some
+                # plants wilting": the description goes on for the field it was about
+                targets = carried[1]
             else:
                 targets = coordinated(clauses, position)
                 targets = _past_a_reference(clauses, position, targets)
                 targets = _described_crop(clause, before) or targets
+            carried = (position, targets)
             # Rows and spacings describe one plot: the nearest field named ("each" shares them).
             geometry = [i for i in others if i.role == "geometry"]
             others = [i for i in others if i.role != "geometry"]
@@ -736,6 +746,19 @@ def _same_as_before_next(
         and not any(i.norm.endswith(" as") for i in attributes)
         and following is not None
         and following.norm in (",", ":", "-")
+    )
+
+
+def _goes_on(clause: Clause) -> bool:
+    """Whether a clause of only descriptive words goes on with the one before it (", mottled
+    leaves", "and some plants wilting")."""
+    return (
+        not clause.mentions
+        and clause.link is not None
+        and clause.link.norm in (",", "and")
+        and all(
+            i.role in ("filler", "cue", "health", "stage", "unknown", "of") for i in clause.items
+        )
     )
 
 

@@ -208,6 +208,7 @@ def read_relations(
     relations += _across_landmarks(landmarks, members, trace)
     related = {frozenset((r.subject, *r.objects)) for r in relations if len(r.objects) == 1}
     relations += _then_chain(clauses, members, related, trace)
+    relations += _one_side_and_the_other(clauses, members, relations, trace)
     # "San Marzano and beef tomatoes, with cherry tomatoes in between them": two fields
     # with a third between them are not next to each other
     flanking = {frozenset(r.objects) for r in relations if r.kind == "between"}
@@ -508,6 +509,37 @@ def _listed_middle(
     if len(listed) != 3 or listed[1] is not member:
         return None
     return member, (listed[0], listed[2])
+
+
+def _one_side_and_the_other(
+    clauses: Sequence[Clause],
+    members: dict[int, list[int]],
+    relations: Sequence[RelationIntent],
+    trace: list[TraceStep],
+) -> list[RelationIntent]:
+    """'Spelt on one side of the hedge, ..., and Walla Walla onions on the other': two
+    fields on the two sides of one thing are next to each other."""
+    mentions = [m for c in clauses for m in c.mentions]
+    one = next((m for m in mentions if _says(m, ("one", "side"))), None)
+    other = next(
+        (m for m in mentions if m is not one and any(i.norm == "the other" for i in m.items)),
+        None,
+    )
+    if one is None or other is None or len(members.get(id(one), [])) != 1:
+        return []
+    if len(members.get(id(other), [])) != 1:
+        return []
+    pair = {members[id(one)][0], members[id(other)][0]}
+    if any({r.subject, *r.objects} == pair for r in relations):
+        return []
+    side = next(i for i in one.items if i.norm == "side")
+    return _pair("next_to", other, (one,), members, side, trace)
+
+
+def _says(mention: Mention, words: tuple[str, str]) -> bool:
+    """Whether the mention's words hold ``words`` one right after the other."""
+    ordered = sorted(mention.items, key=lambda i: i.start)
+    return any((a.norm, b.norm) == words for a, b in itertools.pairwise(ordered))
 
 
 def _pair(
