@@ -296,3 +296,49 @@ def test_two_fields_that_meet(prompt: str) -> None:
     scene = recipe(prompt)
     assert len(scene.fields) == 2
     assert [r.kind for r in scene.relations] == ["next_to"]
+
+
+@pytest.mark.parametrize(
+    ("prompt", "expected"),
+    [
+        (
+            "Block 1: Cabernet, 32 rows, 2.7 m spacing. Block 2, south of block 1: Riesling, 20 "
+            "rows, 2.7 m spacing.",
+            ("Grape", "south_of", ("Grape",)),
+        ),
+        (
+            "Plot A: Bintje potatoes, 16 rows at 75 cm, rows 60 m. Plot B sits directly east of "
+            "A: Nantes carrots on 8 ridges (75 cm ridge centres, 2 rows per ridge).",
+            ("Carrot", "east_of", ("Potato",)),
+        ),
+    ],
+)
+def test_a_label_placed_against_another_label(
+    prompt: str, expected: tuple[str, str, tuple[str, ...]]
+) -> None:
+    scene = recipe(prompt)
+    assert len(scene.fields) == 2
+    assert relations(scene) == {expected}
+    # the field defined second is the one placed
+    assert scene.relations[0].subject == scene.fields[1].id
+
+
+def test_versus_lists_two_fields_and_ridged_at_is_the_bed_width() -> None:
+    scene = recipe(
+        "weeding robot A/B test -> carrots vs onions, 100 m rows, both ridged at 75 cm, carrots "
+        "on the north side of the onions please"
+    )
+    assert [f.crop for f in scene.fields] == ["Carrot", "Onion"]
+    assert all(f.agronomy.row_spacing_m == 0.75 for f in scene.fields)
+    assert relations(scene) == {("Carrot", "north_of", ("Onion",))}
+
+
+def test_squares_counted_with_their_size() -> None:
+    scene = recipe(
+        "We need three 20 x 20 m calibration squares for the multispectral camera, stacked "
+        "north to south: potatoes at the north end, then carrots, then onions at the south end."
+    )
+    assert [f.crop for f in scene.fields] == ["Potato", "Carrot", "Onion"]
+    assert [f.geometry.size_m for f in scene.fields] == [(20.0, 20.0)] * 3
+    assert ("Potato", "north_of", ("Carrot",)) in relations(scene)
+    assert ("Carrot", "north_of", ("Onion",)) in relations(scene)

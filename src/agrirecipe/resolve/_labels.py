@@ -29,7 +29,8 @@ __all__ = [
 _NOUNS = r"(?:block|plot|field|parcel|area|section|strip|zone|bay|compartment|trial plot)"
 # "Block A:", "plot 2 -", "Field B," : a label that introduces what follows it.
 _DEFINITION = re.compile(
-    rf"\b(?i:{_NOUNS})\s+(?P<label>[A-H]|\d{{1,2}})\b\s*(?P<mark>[:,(\-–—]|(?i:is|has)\b)"
+    rf"\b(?i:{_NOUNS})\s+(?P<label>[A-H]|\d{{1,2}})\b\s*"
+    rf"(?P<mark>[:,(\-–—]|(?i:is|has|sits|lies|stands|goes)\b)"
 )
 # "plot 2 Kordia cherries" among labels defined with a mark
 _LOOSE_DEFINITION = re.compile(
@@ -47,6 +48,10 @@ _BEFORE_REFERENCE = (
     r"(?:of|to|from|beside|besides|by|and|than|next to|alongside|between|put|place|with)"
 )
 
+# "Block 2, south of block 1: Riesling": a label after a relation word is referred to,
+# not defined
+_REFERRED = re.compile(rf"\b(?i:{_BEFORE_REFERENCE})\s+(?:(?i:the)\s+)?$")
+
 #: What comes before a label that opens a sentence.
 _SENTENCE_START = re.compile(r"(?:^|[.;:!?])\s*$")
 #: The items a crop phrase keeps ("Jonagored apples"): crop, variety and category words.
@@ -63,7 +68,7 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
     text = _valued_members(_numbered_members(text))
     definitions = sorted(
         [
-            *_DEFINITION.finditer(text),
+            *(m for m in _DEFINITION.finditer(text) if not _REFERRED.search(text[: m.start()])),
             *_BARE_DEFINITION.finditer(text),
             *_SENTENCE_DEFINITION.finditer(text),
         ],
