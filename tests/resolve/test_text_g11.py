@@ -342,3 +342,65 @@ def test_squares_counted_with_their_size() -> None:
     assert [f.geometry.size_m for f in scene.fields] == [(20.0, 20.0)] * 3
     assert ("Potato", "north_of", ("Carrot",)) in relations(scene)
     assert ("Carrot", "north_of", ("Onion",)) in relations(scene)
+
+
+def test_same_size_right_after_a_dropped_label() -> None:
+    scene = recipe(
+        "Field A is 200 m by 150 m of dent corn in 30-inch rows. Field B, same size, is spelt, "
+        "and it's west of A."
+    )
+    assert [f.geometry.size_m for f in scene.fields] == [(200.0, 150.0), (200.0, 150.0)]
+    assert relations(scene) == {("Wheat", "west_of", ("Maize",))}
+
+
+@pytest.mark.parametrize(
+    ("prompt", "expected"),
+    [
+        (
+            "It's April; the Winter Wheat east of the farmhouse is well up, and west of the "
+            "house the Russet potatoes have just been planted.",
+            {("Wheat", "east_of", ("Potato",))},
+        ),
+        (
+            "Half the farm is fruit and half is veg, split down the middle by the old railway "
+            "line, with the fruit on the east side.",
+            None,
+        ),
+        (
+            "strawberies in the polytunnels, tomatos right next to them in the glasshouse, and a "
+            "potato field out the back",
+            {("Tomato", "next_to", ("Strawberry",))},
+        ),
+    ],
+)
+def test_fields_placed_by_a_landmark_a_half_and_a_pronoun(
+    prompt: str, expected: set[tuple[str, str, tuple[str, ...]]] | None
+) -> None:
+    scene = recipe(prompt)
+    if expected is not None:
+        assert expected <= relations(scene)
+    else:
+        fruit, veg = scene.fields
+        assert (fruit.category, veg.category) == ("Fruits", "Vegetables")
+        assert ("east_of", fruit.id, (veg.id,)) in {
+            (r.kind, r.subject, r.objects) for r in scene.relations
+        }
+
+
+def test_a_row_heading_east_from_the_field_before_then() -> None:
+    scene = recipe(
+        "From the farm gate: Gala trees first, then heading east the Durondeau pears, then "
+        "further east the Regina cherries, all of them in blossom."
+    )
+    said = relations(scene)
+    assert ("Apple", "west_of", ("Pear",)) in said
+    assert ("Cherry", "east_of", ("Pear",)) in said
+
+
+def test_a_size_before_a_plus_and_a_week_ago() -> None:
+    onions, spuds = recipe("wala wala onions, mature, sept, 1 ha + 1 ha of spuds nxt door").fields
+    for field in (onions, spuds):
+        width, length = field.geometry.size_m
+        assert width * length == pytest.approx(10_000, rel=0.01)
+    fields = recipe("padron peppers 🌶 & red express cabbage, both planted last wk so v tiny").fields
+    assert [f.stage for f in fields] == ["Vegetative", "Vegetative"]

@@ -89,6 +89,10 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
             or _held_by_scenery(clause, mention)
             or (others_before and _bare_part_after_with(clause, mention))
         )
+        if definite and _named_so_before(clauses[:position], mention):
+            # "Half the farm is fruit and half is veg, ..., with the fruit on the east side":
+            # the field named by that word before, named again
+            continue
         if own_fruit:
             listed, described = False, True
         elif listed and _continues_with(clauses[position - 1], mention):
@@ -260,4 +264,15 @@ def _a_different(mention: Mention) -> bool:
     return any(
         a.role == "number" and a.norm in ("a", "an") and b.role == "distinct"
         for a, b in itertools.pairwise(items)
+    )
+
+
+def _named_so_before(clauses: Sequence[Clause], mention: Mention) -> bool:
+    """Whether an earlier field was asked for by the same word as this mention's head
+    (a field of "fruit", a field of "vegetables"), naming no crop."""
+    words = {h.norm for h in mention.heads}
+    return any(
+        not earlier.has_crop and words & {h.norm for h in earlier.heads}
+        for clause in clauses
+        for earlier in clause.mentions
     )

@@ -563,6 +563,8 @@ class PromptReader(FieldReading):
                 and forward is not None
                 and forward.clause == position + 1
                 and starts_bare
+                # ("onions, mature, sept, 1 ha + 1 ha of spuds": the spuds say their own)
+                and not {i.role for i in attributes} & {i.role for i in forward.items}
             ):
                 targets = [forward] if forward is not None else []
             elif _same_as_before_next(clauses, position, attributes, forward):
@@ -724,6 +726,10 @@ def _continues_a_description(clauses: Sequence[Clause], position: int) -> bool:
     )
 
 
+#: Marks that end a sentence.
+_ENDS = (".", "!", ";")
+
+
 def _same_as_before_next(
     clauses: Sequence[Clause],
     position: int,
@@ -732,14 +738,17 @@ def _same_as_before_next(
 ) -> bool:
     """'Plot B is the same size, Beefsteak': "the same size" compares with a field named
     before, so in a sentence of its own it belongs to the field named right after it."""
-    clause = clauses[position]
     following = clauses[position + 1].link if position + 1 < len(clauses) else None
+    start = position
+    while start > 0 and (link := clauses[start].link) is not None and link.norm not in _ENDS:
+        start -= 1
     return (
         position > 0
         and forward is not None
         and forward.clause == position + 1
-        and clause.link is not None
-        and clause.link.norm in (".", "!", ";")
+        # the sentence names no field before it ("Field B, same size, is spelt")
+        and start > 0
+        and not any(c.mentions for c in clauses[start:position])
         and bool(attributes)
         and all(i.role in ("same_size", "same_spacing") for i in attributes)
         # ("the same size as the pears" names what it is compared with)

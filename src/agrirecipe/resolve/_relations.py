@@ -55,6 +55,8 @@ def read_relations(
             link.role == "relation"
             and not clause.mentions
             and clause.items
+            # ("tomatos right next to them in the glasshouse": next to the fields before)
+            and clause.items[0].norm not in PRONOUNS
             # ("a lettuce field east of the big barn, and east of that again ...", "split
             # by a hawthorn hedge")
             and all(
@@ -64,6 +66,13 @@ def read_relations(
             )
             and any("scenery" in i.data or i.role == "non_agricultural" for i in clause.items)
         ):
+            # "the Winter Wheat east of the farmhouse ..., and west of the house the Russet
+            # potatoes": kept to pair with a field on the landmark's other side
+            named = [m for c in clauses[:position] for m in c.named]
+            landmark = _landmark(clause)
+            if named and landmark is not None and position - 1 == named[-1].clause:
+                landmarks.append((str(link.data.get("value")), landmark, named[-1], link))
+                continue
             # "a test strip along the farm track": placed by scenery, not by a field
             trace.append(
                 TraceStep(
@@ -362,7 +371,8 @@ def _landmark(clause: Clause) -> str | None:
         if item.norm in ARTICLES or item.data.get("counts_scenery") or item.role == "unknown":
             continue  # "between the two tracks", "north of the packing shed"
         if (item.role == "filler" and "scenery" in item.data) or item.role == "non_agricultural":
-            return item.norm
+            # ("the farmhouse" and "the house" are one landmark)
+            return item.norm.removeprefix("farm").strip()
         return None
     return None
 
@@ -458,7 +468,13 @@ def _directed_row(
         # "going west to east: tomatoes first, then the jalapenos, then peppers";
         # "going east you pass Hamlin oranges, then Navel": the clause's own field first
         own = clauses[position].mentions[-1:]
-        fields = _fields_of(following_list(clauses, position, own), members)
+        previous = clauses[position - 1] if position else None
+        start: list[Mention] = []
+        if previous is not None and previous.link is not None and previous.link.norm == "then":
+            # "Gala trees first, then heading east the Durondeau pears": from the field
+            # named before "then"
+            start = [m for c in clauses[:position] for m in c.mentions][-1:]
+        fields = _fields_of(start + following_list(clauses, position, own), members)
     if len(fields) < 2:
         warnings.append(f"ignored {link.raw!r}: it needs two or more fields before it")
         return []
