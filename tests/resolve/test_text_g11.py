@@ -404,3 +404,21 @@ def test_a_size_before_a_plus_and_a_week_ago() -> None:
         assert width * length == pytest.approx(10_000, rel=0.01)
     fields = recipe("padron peppers 🌶 & red express cabbage, both planted last wk so v tiny").fields
     assert [f.stage for f in fields] == ["Vegetative", "Vegetative"]
+
+
+def test_rows_of_each_field_both_so_long() -> None:
+    fields = recipe(
+        "Weed-mapping drone scene with Stuttgarter Riesen onions, 20 rows at 30 cm, and Danvers "
+        "carrots, 20 rows at 45 cm, carrots north of the onions, both 40 m long."
+    ).fields
+    assert all("row_length" in f.stated for f in fields)
+    assert [f.agronomy.row_spacing_m for f in fields] == [0.3, 0.45]
+
+
+def test_the_article_of_a_farm_counts_no_field() -> None:
+    fields = recipe(
+        "A mixed farm with some vegetable plots and a couple of cereal fields round the yard, a "
+        "few cows by the gate."
+    ).fields
+    assert [f.category for f in fields].count("Vegetables") == 2
+    assert [f.category for f in fields].count("Cereals") == 2

@@ -9,26 +9,27 @@ each decides what a word is in its place, where the lexicon alone cannot:
 1   a number with a length unit, a rootstock's name, one  "3.5 m in the pears",
     plant every so far, a count of scenery or of fruit:   "one carrot every 2 cm",
     not a count of fields                                 "lots of fruit"
-1a  "one" after "this"/"that" points, it counts nothing "Two fields in this one"
+1a  "one" after "this" or "that" counts nothing, and      "Two fields in this one",
+    an article before a farm is the farm's                "A mixed farm with ..."
 1b  "twin" of no rows; a compound such as "Crop-row" or   "Citrus twin"
     "Pear-vs-apple"
 2   a crop word joined to a colour, or a colour crop      "olive-green patches",
     word before scenery, is a colour; a crop word before  "an orange tractor",
     a machine names its load                              "a grain trailer"
-2a  a colour crop word after "ripe and" is a colour     "hanging ripe and orange"
+2a  a colour crop word after "ripe and" is a colour       "hanging ripe and orange"
 2b  "different" before a measure says nothing of crops    "at different densities"
-2c  a colour change beside a ripeness cue is ripening;   "flopped over and yellowing",
+2c  a colour change beside a ripeness cue is ripening;    "flopped over and yellowing",
     a young part of the plant is no young field           "the young green bunch"
-2d  a capitalised variety name right before a plot word  "the Conference block"
+2d  a capitalised variety name right before a plot word   "the Conference block"
     names that plot's crop
 3   readiness said of the past or of other things         "ready for the fleece"
 4   a stage word or cue after a negation says nothing     "not in ear yet"
 5   "all" before a plain word stresses it                 "all green and even"
-5b  "every field" says something of every field          "each plot gets a 4 m headland"
+5b  "every field" says something of every field           "each plot gets a headland"
 6   plots a list of crops is grown in are its own fields  "A and B in 2 plots"
 7   a plot word inside an unknown phrase is no field      "compare planting systems"
 8   a sentence about the rows or beds of every field      "Ridges and beds all 80 m"
-9   a number after one plot names it                      "in plot 2"
+9   a number after one plot or tunnel names it            "in plot 2", "tunnel two has"
 10  a size followed by "in total" is the farm's           "40 ha in total"
 11  sizes given "respectively"                            "2 ha and 3 ha respectively"
 ==  ====================================================  ===========================
@@ -57,6 +58,7 @@ def read_words(items: Sequence[Item], text: str) -> None:
     """Run the word passes, in order, over a prompt's items (see the module's table)."""
     _measures_are_not_counts(items)
     _this_one(items)
+    _article_of_a_container(items)
     _twins_and_compounds(items, text)
     _colours_are_not_crops(items, text)
     _colour_after_a_look(items)
@@ -439,6 +441,20 @@ def _respective_sizes(items: Sequence[Item]) -> None:
 _ALL_CARRIERS = frozenset(
     {"in", "at", "on", "of", "with", "the", "are", "is", "were", "was", "have", "look", "looking"}
 )
+
+
+def _article_of_a_container(items: Sequence[Item]) -> None:
+    """'A mixed farm with some vegetable plots': the article is the farm's, no count of
+    the fields the farm holds."""
+    for index, item in enumerate(items):
+        if item.role != "number" or item.norm not in ("a", "an"):
+            continue
+        for following in items[index + 1 : index + 4]:
+            if following.role == "container":
+                item.role = "filler"
+                break
+            if following.role not in ("filler", "distinct", "unknown"):
+                break
 
 
 def _this_one(items: Sequence[Item]) -> None:
