@@ -25,9 +25,10 @@ step  pass                                        module (data)
       (counts that are not, labels, negations)    ``reader_words``)
 8     scenery-only prompts, unknown crops         ``PromptReader._reject_*``
 9     clauses and mentions                        ``_decompose``
-10    counts, corrections, shared attributes,     ``_structure``,
-      refinements; descriptions of plants         ``_descriptions``,
-      named; back-references; list headings       ``_coreference``, ``_headings``
+10    counts, corrections, shared attributes;     ``_structure``,
+      the members a plural lists; descriptions    ``_refinements``,
+      of plants named; back-references; list      ``_descriptions``,
+      headings                                    ``_coreference``, ``_headings``
 11    head-less clauses' words to their fields    ``PromptReader._attach_loose``,
       (which fields a measure is said of)         ``_measures``
 12    fields of each mention, their attributes    ``_fields``
@@ -95,13 +96,13 @@ from agrirecipe.resolve._measures import (
     shared_by_all,
     shared_by_all_after,
 )
+from agrirecipe.resolve._refinements import apply_refinements
 from agrirecipe.resolve._relations import PRONOUNS, coordinated, read_relations
 from agrirecipe.resolve._scan import assign_roles, read_heights, read_latitude, read_sizes
 from agrirecipe.resolve._structure import (
     apply_corrections,
     apply_each_side,
     apply_plural_counts,
-    apply_refinements,
     attribute_of,
     drop_negated,
     per_bed,

@@ -3,8 +3,8 @@
 - *Shared heads*: "navel and valencia orange groves" is two groves; a bare
   variety name gets its crop from the mention it is coordinated with.
 - *Corrections*: "cherry tomatoes? no, I mean cherry trees" keeps the trees.
-- *Refinements*: "Two orchards: one of Gala, one of Fuji" and "three
-  fields: wheat, maize and potatoes" describe the members of a plural mention.
+- *Refinements* ("Two orchards: one of Gala, one of Fuji") are read in
+  ``_refinements``.
 - *Shared attributes*: "ripe wheat and maize", "..., both 2 ha".
 
 Descriptions of plants already named are in ``_descriptions``; mentions that point
@@ -15,23 +15,20 @@ back at fields already named ("the carrots ...", "a carrot field, nantes variety
 from __future__ import annotations
 
 import functools
-import itertools
 from collections.abc import Sequence
 from typing import Any
 
-from agrirecipe._errors import PromptError
 from agrirecipe.resolve._decompose import Clause, Mention, MentionBuilder
-from agrirecipe.resolve._geometry import geometry_nouns
 from agrirecipe.resolve._lexicon import Item, vocabulary
 from agrirecipe.resolve._relations import listing
 
 __all__ = [
     "EACH",
+    "POINTER_WORDS",
     "another_field",
     "apply_corrections",
     "apply_each_side",
     "apply_plural_counts",
-    "apply_refinements",
     "attribute_of",
     "definite_before_head",
     "definite_words",
@@ -281,316 +278,9 @@ def first_word(mention: Mention) -> Item | None:
     return ordered[0] if ordered else None
 
 
-def _fits(sub: Mention, parent: Mention, crop_categories: dict[str, str]) -> bool:
-    """Whether ``sub`` can describe members of ``parent``."""
-    sub_crops = strong_crops(sub)
-    if sub.plot is not None and sub.plot["narrows"] and not sub_crops:
-        options = set(sub.plot["options"])
-        if sub.plot["category"] is not None:
-            options |= {c for c, cat in crop_categories.items() if cat == sub.plot["category"]}
-        sub_crops = options
-    if sub.category is not None and not sub_crops:
-        sub_crops = {c for c, cat in crop_categories.items() if cat == sub.category}
-    if not sub_crops:
-        return True
-    parent_crops = strong_crops(parent)
-    if parent_crops:
-        return bool(parent_crops & sub_crops)
-    if parent.category is not None:
-        return any(crop_categories.get(c) == parent.category for c in sub_crops)
-    if parent.plot is not None and parent.plot["options"]:
-        return bool(set(parent.plot["options"]) & sub_crops)
-    return True
-
-
 def has_room(parent: Mention) -> bool:
     """Whether a counted plural can take another listed member."""
     return parent.rest is None and len(parent.refinements) < (parent.count or 1)
-
-
-def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]) -> list[Mention]:
-    """Fold refinements into their plural mention; return the remaining top-level mentions."""
-    _join_of_which(clauses)
-    top: list[Mention] = []
-    parent: Mention | None = None
-    enumerating = False
-    for clause in clauses:
-        previous = clauses[clause.index - 1] if clause.index else None
-        if (
-            not clause.items
-            and not clause.mentions
-            and clause.link is not None
-            and clause.link.role in ("separator", "conjunction", "trailer")
-        ):
-            # ", and potatoes", "(...), then", "onions in the middle, ...": words between
-            # members end no listing.
-            if previous is not None:
-                clause.refined_parent = previous.refined_parent
-                clause.refinement = previous.refinement
-            continue
-        if (
-            enumerating
-            and parent is not None
-            and previous is not None
-            and previous.refined_parent is parent
-            and not clause.mentions
-            and clause.items
-            and clause.link is not None
-            and clause.link.norm not in (".", "!", "?")  # a new sentence ends the listing
-            and (
-                all(_member_detail(i) for i in clause.items)
-                # "Jalapeños hanging dark and shiny", "Spelt furthest away and gone the
-                # colour of straw": words about the member, joined by "and"
-                # "Conference pears on one side, branches bent with fruit, ...": or by a
-                # comma
-                or (
-                    (clause.link.role == "conjunction" or clause.link.norm == ",")
-                    and all(
-                        i.role in ("unknown", "filler", "of", "cue", "stage", "health")
-                        for i in clause.items
-                    )
-                )
-                # "Conference pears heavy with fruit that is just starting to turn yellow"
-                or clause.link.norm in _RELATIVE
-                # "Riesling north of it, 25 rows at 2 m": placed against the one before;
-                # "Padron peppers along the other side, still flowering": likewise
-                or (
-                    clause.link.role == "relation"
-                    and (
-                        clause.items[0].norm in _POINTERS
-                        or (
-                            clause.items[0].role == "reference"
-                            and all(i.role in ("reference", "filler") for i in clause.items)
-                        )
-                    )
-                )
-            )
-        ):
-            # "carrots (75 cm ridges, 2 rows per ridge), onions ...": the listed member's
-            # own details; the listing goes on after them.
-            clause.refined_parent = parent
-            # "field corn, flint corn and popping corn, 8 rows each at 76 cm": for them all
-            # ("75 cm ridges, 2 rows on each": each ridge, not each member)
-            # ("with white flowers all over the ridges": "all over" is no "all")
-            shared = any(
-                t.norm in EACH
-                for i in clause.items
-                if not per_bed(i) and i.role != "filler"
-                for t in i.tokens
-            )
-            # "Two strawberry plots of 10 beds each, Elsanta and Albion, beds 1.3 m ...":
-            # measures after the last member of a full list describe them all
-            ended = (
-                parent.count is not None
-                and len({id(r) for r in parent.refinements}) >= parent.count
-                and previous.link is not None
-                and previous.link.role == "conjunction"
-                and all(i.role in ("geometry", "of", "filler") for i in clause.items)
-                and any(i.role == "geometry" for i in clause.items)
-                # ("Comice, 16 rows, and Durondeau, 12 rows": each member its own)
-                and not any(i.role == "geometry" for r in parent.refinements for i in r.items)
-                and not any(
-                    i.role == "geometry"
-                    for c in clauses[: clause.index]
-                    if c.refined_parent is parent and c.refinement is not None
-                    for i in c.items
-                )
-            )
-            clause.refinement = None if shared or ended else previous.refinement
-            continue
-        first = next((i for i in clause.items if i.norm != "the"), None)
-        share_of = _counted_reference(clause.items)
-        is_reference = share_of is not None or (
-            first is not None
-            and (
-                first.role == "reference"
-                or (first.role == "number" and bool(first.data.get("reference")))
-            )
-        )
-        link = clause.link
-        joined = link is not None and link.role in ("separator", "conjunction")
-        if (
-            parent is not None
-            and link is not None
-            and link.role == "relation"
-            and clauses[clause.index - 1].refined_parent is parent
-            and len(clause.mentions) == 1
-            and (
-                _names_varieties_of(clause.mentions[0], parent)
-                # "two plots: a pear orchard, and north of it a strawberry field"
-                or (
-                    enumerating
-                    and not strong_crops(parent)
-                    and _fits(clause.mentions[0], parent, crop_categories)
-                )
-            )
-        ):
-            joined = True  # "two vineyards, chardonnay west of riesling": the next member
-        if (
-            parent is not None
-            and link is not None
-            and link.norm == ":"
-            and not strong_crops(parent)
-            and len(clause.mentions) >= 2
-            and all(m.count is not None and m.has_crop for m in clause.mentions)
-            and sum(m.count or 0 for m in clause.mentions) == parent.count
-        ):
-            # "4 fields: 2 wheat 2 corn": counted members said without a comma
-            for member in clause.mentions:
-                members, member.count = member.count or 1, None
-                member.is_refinement = True
-                parent.refinements.extend([member] * members)
-            clause.mentions, clause.loose = [], []
-            clause.refined_parent = parent
-            continue
-        if parent is not None and joined and len(clause.mentions) <= 1:
-            assert link is not None
-            sub = (
-                clause.mentions[0]
-                if clause.mentions
-                else Mention(items=list(clause.loose), clause=clause.index)
-            )
-            # A generic plural mention followed by ':' lists its members; so does a
-            # plural crop followed by its varieties ("two beds of lettuce, lollo rosso
-            # and bibb").
-            if (
-                parent.quantity is not None
-                and parent.count == parent.quantity
-                and not parent.refinements
-                and link.norm == ","
-                and len(vague := _listed(clauses, clause.index)) >= 2
-                and all((m.count or 1) == 1 for m in vague)
-            ):
-                # "A patchwork of veg beds ..., I can make out onions, carrots and lettuce":
-                # a vague number of fields is as many as the list after it names
-                parent.count = len(vague)
-            lists_members = not strong_crops(parent) and (
-                enumerating
-                or link.norm in (":", "-", "—", "–")
-                # "two blocks, 150 cherry trees ... and 300 apple trees ...": as many
-                # fields as announced, listed after a comma
-                or (link.norm == "," and _lists_exactly(clauses, clause.index, parent.count))
-                # "... on two bed plots. Lollo Rosso: 4 beds ... Beside it, carrots: ..."
-                or (
-                    link.norm == "."
-                    and _lists_exactly(clauses, clause.index, parent.count, to_the_end=True)
-                )
-            )
-            lists_members = lists_members or (
-                _names_varieties_of(sub, parent) and (enumerating or link.role == "separator")
-            )
-            if (
-                link.norm in (".", "!", "?", ";")
-                and clause.mentions
-                and not sub.has_crop
-                and sub.plot is not None
-                and sub.plot["plural"]
-            ):
-                # "Lower terraces: Chardonnay. Upper terraces: Riesling.": a new heading
-                lists_members = False
-            named_before = [m for c in clauses[: parent.clause] for m in c.mentions]
-            if clause.mentions and (
-                any(
-                    same_variety(r, sub)
-                    # "two different fruits: apples and apples" still lists two members
-                    or (link.role == "separator" and not parent.distinct and _names_again(r, sub))
-                    for r in parent.refinements
-                )
-                # "centenary & albion strawberries, 2 fields, albion south of centenary":
-                # the count says again how many fields were named; the varieties after it
-                # are those fields named again
-                or (names_a_variety(sub) and any(same_variety(m, sub) for m in named_before))
-            ):
-                # "..., Valencia east of Hamlin", "bintje spuds & nantes carrots, carrots
-                # east of the spuds": a member named again
-                lists_members = False
-            room = (parent.count or 1) - len(parent.refinements)
-            if (
-                parent.implied_count
-                and lists_members
-                and clause.mentions
-                and (sub.count or 1) > room
-            ):
-                # "camera plots: Jalapeño, Padrón and California Wonder": as many as listed
-                parent.count = len(parent.refinements) + (sub.count or 1)
-                room = sub.count or 1
-            # "five fields: 2 of maize and 3 of wheat": a listed member may be counted
-            listable = lists_members and bool(clause.mentions)
-            listed = listable and 1 <= (sub.count or 1) <= room
-            follows_parent = clauses[clause.index - 1].refined_parent is None
-            if (
-                is_reference
-                and link.role == "conjunction"
-                and follows_parent
-                and _adds_a_field(clause, parent)
-            ):
-                is_reference = False  # "three fields of sweet peppers and one of chillies"
-            fits = _fits(sub, parent, crop_categories)
-            definite = (bool(clause.items) and clause.items[0].norm in definite_words()) or (
-                bool(clause.mentions) and definite_before_head(clause, clause.mentions[0])
-            )  # "..., with the popping corn between the other two" points back
-            if (
-                listable
-                and (enumerating or (sub.count or 1) > 1)
-                and fits
-                and not definite  # "..., the carrots have blight" points back
-                and listing(link)
-                and (sub.count or 1) > room
-                and parent.rest is None
-            ):
-                # "two fields: sweetcorn, durum wheat and romaine lettuce"
-                raise PromptError(
-                    f"{parent.text!r} announces {parent.count} field(s), but "
-                    f"{len(parent.refinements) + (sub.count or 1)} or more are listed after it",
-                    stage="resolve",
-                    hint="make the count match the list, or drop the count",
-                )
-            if (is_reference or listed) and fits and has_room(parent):
-                sub.is_refinement = True
-                kind = first.data.get("value") if first is not None else "one"
-                if share_of is not None:
-                    # "four fields, two of them blighted": exactly that many members.
-                    sub.count = None
-                    room = (parent.count or 1) - len(parent.refinements)
-                    parent.refinements.extend([sub] * min(share_of, room))
-                elif kind == "rest":
-                    parent.rest = sub
-                elif kind in ("some", "half"):
-                    # "five fields, some of them diseased": the first half of the members.
-                    total = parent.count or 1
-                    share = (total + 1) // 2 if kind == "some" else max(1, total // 2)
-                    parent.refinements.extend([sub] * min(share, total - len(parent.refinements)))
-                elif listed and (sub.count or 1) > 1:
-                    members, sub.count = sub.count or 1, None
-                    parent.refinements.extend([sub] * members)
-                else:
-                    parent.refinements.append(sub)
-                clause.mentions, clause.loose = [], []
-                clause.refined_parent = parent
-                clause.refinement = sub if listed or is_reference else None
-                enumerating = listed
-                continue
-        placement = link is not None and link.role == "trailer" and not clause.items
-        describing = parent is not None and _describes_plants(clause.mentions)
-        if describing and previous is not None:
-            clause.refined_parent = previous.refined_parent  # the listing goes on after it
-            clause.refinement = previous.refinement
-        if not placement and not describing:
-            # "imperator on the north side and danvers ..." goes on listing
-            enumerating = False
-        top.extend(clause.mentions)
-        if clause.mentions and not describing:
-            # "two apple blocks: Granny ..., fruit bright green ..., and Fuji ...": words
-            # about the fruit or plants do not end the listing of the members
-            last = clause.mentions[-1]
-            parent = last if (last.count or 1) >= 2 else None
-    for mention in top:
-        members = len({id(r) for r in mention.refinements})
-        if mention.implied_count and 0 < members < (mention.count or 1):
-            # "sensor test strips: a capsicum strip between a tomato strip and ...": an
-            # uncounted plural is as many fields as it lists, not one more of no crop
-            mention.count = len(mention.refinements)
-    return top
 
 
 def per_bed(item: Item) -> bool:
@@ -598,132 +288,16 @@ def per_bed(item: Item) -> bool:
     return item.role == "geometry" and any(m.key == "rows_per_bed" for m in item.data["geometry"])
 
 
-def _describes_plants(mentions: Sequence[Mention]) -> bool:
-    """One uncounted mention named only by a word for plants or their parts ("fruit")."""
-    if len(mentions) != 1 or mentions[0].count is not None:
-        return False
-    heads = mentions[0].heads
-    return bool(heads) and all(h.norm in descriptive_words() for h in heads)
-
-
-#: Words that open a relative clause about the member just listed.
-_RELATIVE = frozenset({"that", "which", "where", "whose"})
-
 #: Pronouns after a relation word that point back at the member before.
-_POINTERS = frozenset({"it", "them", "this", "that", "these", "those"})
+POINTER_WORDS = frozenset({"it", "them", "this", "that", "these", "those"})
 
 #: Words that give a listed member's details to every member listed.
 EACH = frozenset({"each", "all", "both"})
 
 
-def _member_detail(item: Item) -> bool:
-    """A word of a listed member's details: "ridges 100 m long", "(75 cm, 2 rows per ridge)"."""
-    return item.role in _MEMBER_DETAIL_ROLES or (
-        item.role in ("unknown", "length_unit") and item.norm in (*geometry_nouns(), "cm", "m")
-    )
-
-
-#: Words a listed member's details may hold without naming another field.
-_MEMBER_DETAIL_ROLES = frozenset(
-    {
-        "stage",
-        "health",
-        "size",
-        "geometry",
-        "cue",
-        "same_size",
-        "same_spacing",
-        "filler",
-        "of",
-        "month",
-        "season",
-    }
-)
-
-
-def _lists_exactly(
-    clauses: Sequence[Clause], start: int, count: int | None, *, to_the_end: bool = False
-) -> bool:
-    """Whether the clauses from ``start`` to the end of the sentence (or of the prompt)
-    name exactly ``count`` single fields, joined as a list (commas and "and")."""
-    named = _listed(clauses, start, to_the_end=to_the_end)
-    return (
-        count is not None
-        and count >= 2
-        and len(named) == count
-        and all((m.count or 1) == 1 for m in named)
-    )
-
-
-def _listed(clauses: Sequence[Clause], start: int, *, to_the_end: bool = False) -> list[Mention]:
-    """The fields of named crops the clauses from ``start`` name, to the end of the
-    sentence (or of the prompt), joined as a list (commas and "and")."""
-    named: list[Mention] = []
-    for clause in clauses[start:]:
-        link = clause.link
-        if (
-            not to_the_end
-            and clause.index > start
-            and link is not None
-            and not listing(link)
-            and (
-                link.norm in (".", "!", "?", ";")
-                # ("two 0.25 ha plots, carrots north of onions": the list placed in itself)
-                or (link.role == "relation" and not _bare_crop_first(clause))
-            )
-        ):
-            break
-        # fields named again ("the Comice") or plot words alone ("Beds and ridges run
-        # NW-SE") name no new field
-        named.extend(
-            m for m in clause.mentions if m.has_crop and not definite_before_head(clause, m)
-        )
-    return named
-
-
-def _bare_crop_first(clause: Clause) -> bool:
-    """Whether the clause opens with a crop named without an article ("onions")."""
-    return (
-        bool(clause.mentions)
-        and bool(clause.items)
-        and clause.items[0] in clause.mentions[0].heads
-        and clause.mentions[0].has_crop
-    )
-
-
 def names_a_variety(mention: Mention) -> bool:
     """Whether the mention names a variety (not only a crop)."""
     return any(v is not None for _, v, weak in mention.interpretations or () if not weak)
-
-
-def _names_again(member: Mention, sub: Mention) -> bool:
-    """Whether ``sub`` (no count, no variety, no plot of its own) names ``member``'s crop."""
-    crops = strong_crops(sub)
-    return (
-        sub.count is None
-        and bool(crops)
-        and crops == strong_crops(member)
-        and not names_a_variety(sub)
-        and not any(h.role == "plot" for h in sub.heads)
-    )
-
-
-def _names_varieties_of(sub: Mention, parent: Mention) -> bool:
-    """``sub`` names, without a count of its own, a variety of the crop ``parent`` names."""
-    crops = strong_crops(parent)
-    if not crops and parent.plot is not None and len(parent.plot["options"]) == 1:
-        crops = {parent.plot["options"][0]}  # "two vineyards, chardonnay ..."
-    named = {(c, v) for c, v, weak in sub.interpretations or () if v is not None and not weak}
-    # "3 cherry blocks: Lapins, Regina and Bing": "cherry" may also be a tomato variety;
-    # the crop the members name decides which reading the parent has
-    common = crops & {c for c, _ in named}
-    return (
-        (sub.count is None or (sub.count == 1 and pronoun_one(sub)))
-        and len(common) == 1
-        and bool(named)
-        and {c for c, _ in named} <= crops
-        and not any(v is not None for c, v, _ in parent.interpretations or () if c in common)
-    )
 
 
 def pronoun_one(mention: Mention) -> bool:
@@ -747,7 +321,7 @@ def another_field(clauses: Sequence[Clause], clause: Clause, mention: Mention) -
         and following.link.role == "relation"
         and not following.mentions
         and bool(following.items)
-        and all(i.norm in _POINTERS or i.role == "reference" for i in following.items)
+        and all(i.norm in POINTER_WORDS or i.role == "reference" for i in following.items)
     )
 
 
@@ -764,53 +338,6 @@ def one_of_the(clause: Clause, mention: Mention) -> bool:
         and before[-2].role == "of"
         and before[-1].norm in definite_words()
     )
-
-
-def _adds_a_field(clause: Clause, parent: Mention) -> bool:
-    """'... and one of chillies' after a plural that named its crop: one more field.
-
-    "one of" followed by a crop or variety (not "them"), joined by "and" to a plural
-    mention that already says what its fields are, counts a further field.
-    """
-    words = [i for i in clause.items if i.norm != "the"]
-    if len(words) < 3 or words[0].role != "number" or words[1].role != "of":
-        return False
-    return words[2].role == "head" and bool(strong_crops(parent))
-
-
-#: Words after "<number> of" that point back at a plural mention ("two of them").
-_BACK_POINTERS = frozenset({"them", "which", "these", "those", "the fields", "the plots"})
-
-
-def _join_of_which(clauses: Sequence[Clause]) -> None:
-    """ "three of which are blighted": "which" cut the clause; put it back together."""
-    for clause, following in itertools.pairwise(clauses):
-        words = [i.role for i in clause.items]
-        if (
-            words == ["number", "of"]
-            and not clause.mentions
-            and following.link is not None
-            and following.link.norm in _BACK_POINTERS
-        ):
-            clause.items = [*clause.items, following.link, *following.items]
-            clause.loose = [*clause.loose, following.link, *following.loose]
-            clause.mentions, following.mentions = following.mentions, []
-            for mention in clause.mentions:
-                mention.clause = clause.index
-            following.items, following.loose = [], []
-
-
-def _counted_reference(items: Sequence[Item]) -> int | None:
-    """The count of "<number> of them" / "two of which" opening a clause, else None."""
-    words = [i for i in items if i.norm != "the"]
-    if len(words) < 3 or words[0].role != "number" or words[1].role != "of":
-        return None
-    if words[2].norm not in _BACK_POINTERS:
-        return None
-    value = float(words[0].data.get("value", 0))
-    if value != int(value) or value < 1:
-        return None
-    return int(value)
 
 
 _SHARED_ROLES = ("stage", "health", "cue")
