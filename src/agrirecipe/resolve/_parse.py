@@ -29,7 +29,7 @@ step  pass                                        module (data)
       the members a plural lists; descriptions    ``_refinements``,
       of plants named; back-references; list      ``_descriptions``,
       headings                                    ``_coreference``, ``_headings``
-11    head-less clauses' words to their fields    ``PromptReader._attach_loose``,
+11    head-less clauses' words to their fields    ``_loose``,
       (which fields a measure is said of)         ``_measures``
 12    fields of each mention, their attributes    ``_fields``
       (stated, else visual cues), sizes, rows
@@ -53,7 +53,6 @@ from agrirecipe.resolve._decompose import (
 )
 from agrirecipe.resolve._descriptions import dissolve_plant_parts
 from agrirecipe.resolve._fields import (
-    ATTRIBUTE_ROLES,
     FieldReading,
     describe_intent,
     give_respectively,
@@ -83,35 +82,25 @@ from agrirecipe.resolve._lexicon import (
     vocabulary,
 )
 from agrirecipe.resolve._lists import spread_value_lists
+from agrirecipe.resolve._loose import attach_loose
 from agrirecipe.resolve._measures import (
-    after_list_plots,
-    bracketed_by,
-    in_a_sentence_of_measures,
-    opens_with_rows,
-    parallel_fields,
     parallel_spacing,
     same_spacing,
-    sentence_fields,
     share_each_measures,
-    shared_by_all,
-    shared_by_all_after,
 )
 from agrirecipe.resolve._refinements import apply_refinements
-from agrirecipe.resolve._relations import PRONOUNS, coordinated, read_relations
+from agrirecipe.resolve._relations import read_relations
 from agrirecipe.resolve._scan import assign_roles, read_heights, read_latitude, read_sizes
 from agrirecipe.resolve._structure import (
     apply_corrections,
     apply_each_side,
     apply_plural_counts,
-    attribute_of,
     drop_negated,
-    per_bed,
     promote_weak_varieties,
     raise_conflicts,
     share_counted_fields,
     share_leading_attributes,
     share_trailing_attributes,
-    strong_crops,
 )
 from agrirecipe.resolve._words import purpose_diseases, read_words, reader_words
 from agrirecipe.resolve._zones import (
@@ -236,7 +225,7 @@ class PromptReader(FieldReading):
             # "... and there's a duck pond in the middle": the zone of scenery, not a field
             if not clause.mentions and any(i.scenery for i in clause.loose):
                 clause.loose = [i for i in clause.loose if i.role != "zone"]
-        scene_items = self._attach_loose(clauses, mentions)
+        scene_items = attach_loose(clauses, mentions)
         share_each_measures(clauses)
         for mention in mentions:
             for sub in (mention, *mention.refinements):
@@ -483,194 +472,6 @@ class PromptReader(FieldReading):
 
     # --- structure ---
 
-    def _attach_loose(self, clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list[Item]:
-        """Give each head-less clause's attributes to its field(s); return scene-wide items."""
-        scene: list[Item] = []
-        carried: tuple[int, list[Mention]] | None = None  # the last clause's own targets
-        for position, clause in enumerate(clauses):
-            _detach_trailing_all(clause)
-            if position and mentions:
-                _apply_group_words(clause.loose, coordinated(clauses, position))
-            attributes = [i for i in clause.loose if i.role in ATTRIBUTE_ROLES]
-            if not attributes or not mentions:
-                continue
-            before = [m for c in clauses[:position] for m in c.mentions]
-            refined = clauses[position - 1].refined_parent if position else None
-            after = [m for c in clauses[position + 1 :] for m in c.mentions]
-            says_all = any(i.role == "all" for i in attributes)
-            seasons = [i for i in attributes if i.role in ("season", "month")]
-            others = [i for i in attributes if i.role not in ("season", "month", "all")]
-            if _about_the_others(clause):
-                # "make the corn biggest like 5 ha, the others 1 ha each": every field
-                # that does not say the same of itself
-                for mention in mentions:
-                    for sub in (mention, *mention.refinements):
-                        roles = {i.role for i in sub.items}
-                        sub.items.extend(i for i in others if i.role not in roles)
-                continue
-            alls = [i for i in attributes if i.role == "all"]
-            if says_all and after and all(i.norm in reader_words("here_everywhere") for i in alls):
-                # "Field A - Russet potatoes, blight everywhere. Field B - ...": everywhere
-                # in the field just named, when more fields follow
-                attributes = [i for i in attributes if i.role != "all"]
-                says_all = False
-            if says_all:
-                owner = bracketed_by(clauses, position)  # "two lettuce plots (10 rows each"
-                (owner.items if owner is not None else scene).extend(attributes)
-                continue
-            several = len(mentions) > 1 or any((m.count or 1) > 1 for m in mentions)
-            if not before or (several and not after):
-                # Opening words ("In autumn, ...") or closing words after several fields:
-                # a time of year belongs to the whole scene.
-                scene.extend(seasons)
-                seasons = []
-            if (
-                before
-                and not after
-                and (len(before) > 1 or any((m.count or 1) > 1 for m in before))
-                and (
-                    any(_says_all_plants(i) for i in others)
-                    # "... 8 rows. Trees in bloom.": a sentence about the plants in general
-                    or (
-                        clause.link is not None
-                        and clause.link.norm in (".", "!")
-                        and bool(clause.items)
-                        # ("... 80 m rows. Fruit ripening, mid-August.")
-                        and clause.items[0].norm in (*_ALL_PLANTS, "fruit")
-                    )
-                    # "... onions in 12 rows. Rows are 60 m.": a closing sentence of
-                    # row measures is about every field's rows
-                    # ("... Granny Smith. Tall spindle, 3.5 m between rows, trees 1 m
-                    # apart, rows 120 m long.": each clause of a sentence of measures)
-                    or in_a_sentence_of_measures(clauses, position)
-                )
-            ):
-                # "A next to B, young plants": closing words about "the plants" describe all.
-                for target in before:
-                    target.items.extend(others)
-                continue
-            targets: list[Mention] = []
-            shared_by_list = False
-            forward = after[0] if after else None
-            next_link = clauses[position + 1].link if position + 1 < len(clauses) else None
-            starts_bare = (
-                position + 1 < len(clauses)
-                and bool(clauses[position + 1].items)
-                and clauses[position + 1].items[0].role not in ("number", "quantity", "filler")
-            )
-            if not before or (
-                next_link is not None
-                and next_link.role == "conjunction"
-                and forward is not None
-                and forward.clause == position + 1
-                and starts_bare
-                # ("onions, mature, sept, 1 ha + 1 ha of spuds": the spuds say their own)
-                and not {i.role for i in attributes} & {i.role for i in forward.items}
-            ):
-                targets = [forward] if forward is not None else []
-            elif _same_as_before_next(clauses, position, attributes, forward):
-                # "Plot A is 200 ft by 300 ft of Roma. Plot B is the same size, Beefsteak."
-                targets = [forward] if forward is not None else []
-            elif refined is not None and refined.refinements:
-                # The member the clause before named ("carrots (75 cm ridges), onions ..."),
-                # or all of them ("..., 8 rows each at 76 cm").
-                member = clauses[position - 1].refinement
-                if clause.refined_parent is refined and clause.refinement is None:
-                    targets = list({id(m): m for m in refined.refinements}.values())
-                    shared_by_list = True
-                else:
-                    targets = [member or refined.refinements[-1]]
-            elif clause.link is not None and clause.link.norm == "also" and before:
-                # "a popping corn block, also 30 rows at 30 in": the same again, for it
-                targets = [before[-1]]
-            elif _continues_a_description(clauses, position):
-                # "the oranges colouring up, the bananas still small and just planted"
-                targets = [clauses[position - 1].mentions[-1]]
-            elif any(i.data.get("list_plots") for i in clause.items):
-                # "carrots (...) and potatoes (...) in 25 x 60 m plots": the list's plots
-                targets = sentence_fields(clauses, position)
-            elif before and clause.items and clause.items[0].norm in ("whose", "which"):
-                # "Padrón peppers whose leaves are spotted and whose fruit has raised
-                # scabby spots": a relative clause about the field named last
-                targets = [before[-1]]
-            elif carried is not None and carried[0] == position - 1 and _goes_on(clause):
-                # "the Ladyfinger block next to them has yellowing, mottled leaves and some
-                # plants wilting": the description goes on for the field it was about
-                targets = carried[1]
-            else:
-                targets = coordinated(clauses, position)
-                targets = _past_a_reference(clauses, position, targets)
-                targets = _described_crop(clause, before) or targets
-            carried = (position, targets)
-            # Rows and spacings describe one plot: the nearest field named ("each" shares them).
-            geometry = [i for i in others if i.role == "geometry"]
-            others = [i for i in others if i.role != "geometry"]
-            if before:
-                # "Gala and Fuji, 40 and 36 rows respectively": the list stays with the
-                # fields named before it (give_respectively shares it out)
-                listed = [i for i in geometry if any(m.share for m in i.data["geometry"])]
-                before[-1].items.extend(listed)
-                geometry = [i for i in geometry if i not in listed]
-            if geometry and (
-                shared_by_all(clauses, position)
-                # "Rows run east-west in both blocks": said of both in its own clause
-                or any(i.role == "all" and i.norm in ("both", "each") for i in clause.items)
-                or opens_with_rows(clauses, position)
-                or shared_by_all_after(clauses, position)
-                # "8 rows each at 1.5 m": "each" inside the measure itself
-                or any(
-                    t.norm in ("each", "both") for i in geometry if not per_bed(i) for t in i.tokens
-                )
-            ):
-                # "A, B and C, each 20 x 30 m, rows at 90°": still about each of them;
-                # "two lettuce plots (10 rows each, 35 cm row spacing)": each of those
-                owner = bracketed_by(clauses, position)
-                (owner.items if owner is not None else scene).extend(geometry)
-                if not any(i.role == "all" for i in scene):
-                    scene.extend(i for i in clause.items if i.role == "all")
-                geometry = []
-            for target in targets:
-                # "ripe wheat and maize, still green": words shared by a list go to the
-                # members that do not state that attribute themselves.
-                # ("Cayenne chillies going red and beef tomatoes ..., but still green":
-                # a visual cue states the chillies' stage)
-                own = {
-                    attribute_of(i)
-                    for i in target.items
-                    if i.role in ("stage", "health", "cue") and i not in target.borrowed
-                }
-                shared = seasons + others
-                if len(targets) > 1:
-                    shared = [i for i in shared if i.role not in own]
-                said = {i.role for i in shared}
-                # Its own words replace what a list lent it ("ripe wheat and maize, ...").
-                target.items[:] = [
-                    i for i in target.items if not (i in target.borrowed and i.role in said)
-                ]
-                target.items.extend(shared)
-            # "Bing and Lapins cherry blocks, 5 m rows": a plural noun shared by the list
-            shared_noun = (
-                len(targets) > 1
-                and any(h.role == "plot" and h.data["value"]["plural"] for h in targets[0].heads)
-                # (a plot word of its own, named before the shared noun, ends the sharing)
-                and not any(
-                    h.role == "plot" and h.start < min(x.start for x in targets[0].heads)
-                    for t in targets[1:]
-                    for h in t.heads
-                )
-            )
-            parallel = parallel_fields(clauses, position) if geometry else []
-            if parallel:
-                for target in parallel:
-                    target.items.extend(geometry)
-                geometry = []
-            # "Durondeau and Bartlett pears in neighbouring blocks, 3.5 m x 1 m": measures
-            # said after the plots a list is grown in are each plot's
-            in_plots = len(targets) > 1 and after_list_plots(clauses, position)
-            for target in targets if shared_by_list or shared_noun or in_plots else targets[-1:]:
-                target.items.extend(geometry)
-        return scene
-
     def _place(
         self, items: Sequence[Item], prompt_latitude: float | None, latitude_text: str | None
     ) -> tuple[float | None, Hemisphere | None, str | None]:
@@ -706,189 +507,6 @@ class PromptReader(FieldReading):
 
 
 # --- helpers ---
-
-
-_ALL_PLANTS = frozenset({"plants", "trees", "vines", "crops", "bushes"})
-
-
-def _continues_a_description(clauses: Sequence[Clause], position: int) -> bool:
-    """'..., the bananas still small and just planted': words joined by "and" to a
-    sentence about a field named before ("the bananas ...") go on describing it."""
-    previous = clauses[position - 1] if position else None
-    link = clauses[position].link
-    return (
-        previous is not None
-        and link is not None
-        and link.role == "conjunction"
-        and bool(previous.mentions)
-        and bool(previous.items)
-        and previous.items[0].norm in ("the", "their", "its", "those", "these")
-        and previous.mentions[-1].heads[-1].end < previous.items[-1].end  # words after it
-    )
-
-
-#: Marks that end a sentence.
-_ENDS = (".", "!", ";")
-
-
-def _same_as_before_next(
-    clauses: Sequence[Clause],
-    position: int,
-    attributes: Sequence[Item],
-    forward: Mention | None,
-) -> bool:
-    """'Plot B is the same size, Beefsteak': "the same size" compares with a field named
-    before, so in a sentence of its own it belongs to the field named right after it."""
-    following = clauses[position + 1].link if position + 1 < len(clauses) else None
-    start = position
-    while start > 0 and (link := clauses[start].link) is not None and link.norm not in _ENDS:
-        start -= 1
-    return (
-        position > 0
-        and forward is not None
-        and forward.clause == position + 1
-        # the sentence names no field before it ("Field B, same size, is spelt")
-        and start > 0
-        and not any(c.mentions for c in clauses[start:position])
-        and bool(attributes)
-        and all(i.role in ("same_size", "same_spacing") for i in attributes)
-        # ("the same size as the pears" names what it is compared with)
-        and not any(i.norm.endswith(" as") for i in attributes)
-        and following is not None
-        and following.norm in (",", ":", "-")
-    )
-
-
-def _goes_on(clause: Clause) -> bool:
-    """Whether a clause of only descriptive words goes on with the one before it (", mottled
-    leaves", "and some plants wilting")."""
-    return (
-        not clause.mentions
-        and clause.link is not None
-        and clause.link.norm in (",", "and")
-        and all(
-            i.role in ("filler", "cue", "health", "stage", "unknown", "of") for i in clause.items
-        )
-    )
-
-
-def _described_crop(clause: Clause, before: Sequence[Mention]) -> list[Mention]:
-    """'The Riesling vineyard ... of the Fuji orchard. Half the vines show mildew': words
-    about the plants of one crop go to the last field of that crop ([] if none)."""
-    crops: set[str] = set()
-    for item in clause.loose:
-        crops |= set(item.data.get("describes", ()))
-    if not crops:
-        return []
-    fields = [m for m in before if strong_crops(m) & crops]
-    return fields[-1:]
-
-
-def _about_the_others(clause: Clause) -> bool:
-    """A clause that opens with 'the others' / 'the rest' and says something of them."""
-    first = next((i for i in clause.items if i.role != "filler"), None)
-    return (
-        first is not None
-        and first.role == "reference"
-        and first.data.get("value") == "rest"
-        and any(i.role in ATTRIBUTE_ROLES and i.role != "all" for i in clause.loose)
-    )
-
-
-def _past_a_reference(
-    clauses: Sequence[Clause], position: int, targets: list[Mention]
-) -> list[Mention]:
-    """'a wheat plot to the south of the vineyard, 25 x 100 m': words after a field
-    named again as a relation's object describe the relation's subject."""
-    for at in (position, position - 1):
-        # "Padron plot north of it, 20 rows", "the Danvers carrots beside them have
-        # Alternaria, dark lesions ...": the words after "north of it" / "beside them"
-        # are the placed field's, not those of the field the pronoun points at
-        pointer = clauses[at] if at >= 1 else None
-        if (
-            pointer is not None
-            and pointer.link is not None
-            and pointer.link.role == "relation"
-            and not pointer.mentions
-            and bool(pointer.items)
-            and pointer.items[0].norm in PRONOUNS
-            and clauses[at - 1].mentions
-        ):
-            return clauses[at - 1].mentions[-1:]
-    if len(targets) != 1:
-        return targets
-    index = position - 1
-    while index >= 0 and not clauses[index].mentions:
-        index -= 1
-    if index < 1:
-        return targets
-    relation = clauses[index]
-    named_before = any(targets[0] is m for c in clauses[:index] for m in c.mentions)
-    subject = clauses[index - 1].mentions[-1] if clauses[index - 1].mentions else None
-    if (
-        relation.link is not None
-        and relation.link.role == "relation"
-        and relation.mentions == [targets[0]]
-        and named_before
-        and subject is not None
-        and subject is not targets[0]
-    ):
-        return [subject]
-    return targets
-
-
-def _says_all_plants(item: Item) -> bool:
-    """'young plants', 'healthy trees': an attribute phrase about the plants in general."""
-    words = item.norm.split()
-    # "1.2 m between trees" is one field's spacing, not words about all the plants
-    return item.role != "geometry" and len(words) > 1 and words[-1] in _ALL_PLANTS
-
-
-def _detach_trailing_all(clause: Clause) -> None:
-    """'cherry trees and apple trees both carrying ripe fruit': after the last field of a
-    clause, "both"/"all" and the words after it describe every field, not only that one."""
-    if not clause.mentions:
-        return
-    mention = clause.mentions[-1]
-    last_head = max(h.start for h in mention.heads)
-    marker = next(
-        (
-            i
-            for i in sorted(mention.items, key=lambda i: i.start)
-            if i.role == "all" and i.start > last_head
-        ),
-        None,
-    )
-    if marker is None:
-        return
-    moved = [i for i in mention.items if i.start >= marker.start and i not in mention.heads]
-    if not any(i.role in ATTRIBUTE_ROLES for i in moved if i is not marker):
-        return
-    mention.items = [i for i in mention.items if i not in moved]
-    clause.loose = [*clause.loose, *moved]
-
-
-def _apply_group_words(loose: Sequence[Item], group: Sequence[Mention]) -> None:
-    """Words about the fields listed just before: "grains and veggies: two of each" counts
-    each of them; "five fields, each a different crop" makes them different crops."""
-    roles = [i.role for i in loose if i.role != "filler"]
-    if (
-        len(roles) >= 2
-        and roles[0] == "number"
-        and roles[-1] == "all"
-        and (roles[1:-1] in ([], ["of"]))
-    ):
-        number = next(i for i in loose if i.role == "number")
-        count = float(number.data.get("value", 1))
-        if count == int(count) and 1 <= count <= 64:
-            for mention in group:
-                if mention.count is None or mention.count == 1:
-                    mention.count = int(count)
-    if any(i.role == "distinct" for i in loose):
-        for mention in group:
-            if (mention.count or 1) > 1:
-                mention.distinct = True
-                mention.distinct_crops = not mention.has_crop
 
 
 def _word_before(items: Sequence[Item], index: int | None) -> Item | None:
