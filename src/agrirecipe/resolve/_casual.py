@@ -51,12 +51,15 @@ def expand_casual(prompt: str) -> str:
     text = lower.sub(lambda match: lower_forms[match.group(0)], text)
     # "2 carrot fields, one nantes one chantenay": a list of members without commas
     text = _ONE_AFTER_ONE.sub(r"\g<first>, \g<second>", text)
+    # "1) Roma tomatoes 2) San Marzano tomatoes": a numbered list's marks are its commas
+    text = _NUMBERED_ITEM.sub(", ", text)
     # "apples north pears south": a compass word ends one placement, the next crop begins
     text = _PLACED_AFTER_PLACED.sub(r"\g<first>, ", text)
     # "1 of them 5 ha the other 3 ha": a measure ends one member, "the other" begins the next
     return _OTHER_AFTER_MEASURE.sub(r"\g<unit>, ", text)
 
 
+_NUMBERED_ITEM = re.compile(r"(?<![\w.,(])\d{1,2}\)\s+(?=[A-Za-z])")
 _COMPASS = r"(?i:north|south|east|west)"
 _PLACED_AFTER_PLACED = re.compile(
     rf"(?P<first>\b[A-Za-z]+\s+{_COMPASS})\s+"

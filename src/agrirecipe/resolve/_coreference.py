@@ -20,6 +20,7 @@ from agrirecipe.resolve._structure import (
     another_field,
     definite_before_head,
     definite_words,
+    descriptive_words,
     first_word,
     has_room,
     names_a_variety,
@@ -390,8 +391,13 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
                 for c in clauses[previous.clause + 1 : mention.clause]
             )
             and previous.clause < mention.clause
-            # ("onions now, one field of about 6 acres")
-            and all(i.role in ("number", "size", "plot", "filler", "of") for i in clause.items)
+            # ("onions now, one field of about 6 acres"; "Navel oranges, a 2 ha block with
+            # the fruit still small": the crop's own fruit)
+            and all(
+                i.role in ("number", "size", "plot", "filler", "of", "cue", "stage", "health")
+                or (i.role == "head" and i.norm in descriptive_words())
+                for i in clause.items
+            )
             and any(i.role == "size" for i in clause.items)
         ):
             previous.items.extend(i for i in mention.items if i.role == "size")

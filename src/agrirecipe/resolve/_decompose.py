@@ -323,6 +323,10 @@ class MentionBuilder:
                     item.role == "plot"
                     and (
                         (not current.has_crop and _existential(clause, pending))
+                        # ("... the 2 ha maize field there's a 1 ha strip of onions")
+                        or (
+                            _existential(clause, pending) and any(p.role == "size" for p in pending)
+                        )
                         or _possessed(pending)
                     )
                 )

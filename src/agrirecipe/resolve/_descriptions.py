@@ -89,6 +89,8 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
             or _held_by_scenery(clause, mention)
             or (others_before and _bare_part_after_with(clause, mention))
         )
+        if any(i.role == "zone" for i in mention.items):
+            continue  # "the vines are on the left and the orange grove on the right": placed
         if definite and _named_so_before(clauses[:position], mention):
             # "Half the farm is fruit and half is veg, ..., with the fruit on the east side":
             # the field named by that word before, named again

@@ -173,7 +173,12 @@ class FieldReading:
                     )
         return cast(Season, seasons[0]) if seasons else None
 
-    def _field_intent(self, member: FieldDraft, hemisphere: Hemisphere | None) -> FieldIntent:
+    def _field_intent(
+        self,
+        member: FieldDraft,
+        hemisphere: Hemisphere | None,
+        scene_season: Season | None = None,
+    ) -> FieldIntent:
         text = member.mention.text
         if member.sub is not None and member.sub is not member.mention and member.sub.items:
             text = f"{text} ({member.sub.text})"
@@ -182,7 +187,9 @@ class FieldReading:
             member.items, ("season", "month"), "season", text, hemisphere
         )  # type: ignore[assignment]
         health: HealthState | None = health_of(member.items, text)
-        stage, season, health = self._cues(member, text, stage, season, health)
+        # a season said for the whole scene ("Frosty blue April morning") beats a cue
+        stage, said_season, health = self._cues(member, text, stage, season or scene_season, health)
+        season = season if said_season == scene_season and season is None else said_season
         sizes = [item.data["size"] for item in member.items if item.role == "size"]
         rows = row_spec(member.items, text)
         interpretations = member.interpretations or []

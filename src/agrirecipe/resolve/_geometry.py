@@ -549,7 +549,9 @@ _COUNTED_CROP_ROWS = re.compile(
     r"(?<![\w.,])(?P<n>\d+|(?i:two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|"
     r"fifteen|twenty|thirty|forty|fifty|sixty))\s+(?P<mod>(?i:single|double|twin)\s+)?"
     r"(?P<words>[A-Za-z][\w'’-]*(?:\s+[A-Za-z][\w'’-]*)?)\s+"
-    r"(?P<noun>(?i:rows|ridges|drills|beds(?=\s*(?:,\s*)?(?:(?:at|on|of|x|by|with|spaced|each)\s|\d|\())))\b"
+    # ("10 Sonata strawberry beds south of 10 Centenary beds, all beds on 1.5 m centres")
+    r"(?P<noun>(?i:rows|ridges|drills|beds(?=\s*(?:,\s*)?(?:(?:at|on|of|x|by|with|spaced|each|all|"
+    r"north|south|east|west)\s|\d|\())))\b"
 )
 
 
@@ -569,6 +571,10 @@ def hoist_counted_crops(text: str, tag: Callable[[str], Sequence[Any]]) -> str:
             words = match.group("words")
             if not names_a_crop(words):
                 return match.group(0)
+            after = match.string[match.end() :].lstrip(" ,").split(" ", 1)[0].lower()
+            number = match.group("n")
+            if after in _PLACED_AFTER and not (number.isdigit() and int(number) >= 3):
+                return match.group(0)  # "two strawberry beds south of ...": two plots
             modifier = match.groupdict().get("mod") or ""  # "10 single cabbage rows"
             return f"{words} in {match.group('n')} {modifier}{match.group('noun')}" + tail.format(
                 **match.groupdict()
@@ -595,6 +601,9 @@ def hoist_counted_crops(text: str, tag: Callable[[str], Sequence[Any]]) -> str:
     return _COUNTED_CROP_ROWS.sub(crop_rows(""), text)
 
 
+#: Words after "N <crop> beds" that place them: only a larger number counts beds there
+#: ("10 Sonata strawberry beds south of ..."; "two strawberry beds ..." are two plots).
+_PLACED_AFTER = frozenset({"all", "north", "south", "east", "west"})
 #: "8 rows x 76 cm x 30 m": the rows, their spacing and their length.
 _ROW_TRIPLE = re.compile(
     r"(?<![\w.,])(?P<n>\d+)\s+(?P<rows>rows|ridges|beds)\s*[x×]\s*"

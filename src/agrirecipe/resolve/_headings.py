@@ -39,7 +39,7 @@ def drop_list_headings(clauses: Sequence[Clause], mentions: list[Mention]) -> li
             (
                 c
                 for c in clauses[mention.clause + 1 :]
-                if c.mentions or (c.link is not None and c.link.norm == ":")
+                if c.mentions or (c.link is not None and c.link.norm in (":", "-", "–", "—"))
             ),
             None,
         )
@@ -47,10 +47,22 @@ def drop_list_headings(clauses: Sequence[Clause], mentions: list[Mention]) -> li
         if (
             following is not None
             and following.link is not None
-            and following.link.norm == ":"
+            # ("the veg garden at the school farm - a bed of peppers, a bed of ...")
+            and following.link.norm in (":", "-", "–", "—")
             and clauses[mention.clause].mentions[-1:] == [mention]
             and (
                 (mention.plot is not None and not mention.has_crop and mention.category is None)
+                # "this is the veg garden at the school farm - a bed of peppers, a bed of ..."
+                # ("Vegetables for the weeder: a ... cabbage plot ..., and ... a carrot plot")
+                or (
+                    (
+                        (mention.plot is not None and following.link.norm != ":")
+                        or (mention.plot is None and mention.category is not None)
+                    )
+                    and not mention.has_crop
+                    and len(later) >= 2
+                    and all(strong_crops(m) for m in later[:2])
+                )
                 # "Citrus test site in Chile, July: a blood orange block next to a Valencia
                 # block": a crop heading the fields of that crop it lists
                 or _heads_its_list(mention, later)

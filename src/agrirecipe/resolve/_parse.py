@@ -254,7 +254,7 @@ class PromptReader(FieldReading):
         relations += complete_orders(relations, owned)
         scene_season = self._apply_scene_items(scene_items, fields, hemisphere)
         give_respectively(fields)
-        intents = [self._field_intent(f, hemisphere) for f in fields]
+        intents = [self._field_intent(f, hemisphere, scene_season) for f in fields]
         for index in range(1, len(intents)):  # "... & same size of romaine"
             if intents[index].size is None and any(
                 i.role == "same_size" for i in fields[index].items

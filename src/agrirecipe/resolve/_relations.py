@@ -114,6 +114,23 @@ def read_relations(
             pronoun
             and not clause.mentions
             and position
+            and not clauses[position - 1].named
+            and any(i.scenery for i in clauses[position - 1].items)
+            # (not "bananas along the stream to the east of them": a placement goes on)
+            and (
+                (placed_by := clauses[position - 1].link) is None
+                or placed_by.role not in ("relation", "trailer", "between")
+            )
+        ):
+            # "..., kids in yellow hats weeding between them": scenery placed, no field
+            trace.append(
+                TraceStep(stage="decompose", subject=link.raw, detail="said of scenery: not used")
+            )
+            continue
+        if (
+            pronoun
+            and not clause.mentions
+            and position
             and clauses[position - 1].named
             and clauses[position - 1].items  # not "one ... and, north of it, one ..."
         ):

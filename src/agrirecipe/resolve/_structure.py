@@ -192,6 +192,9 @@ def apply_plural_counts(clauses: Sequence[Clause], plural_count: int) -> None:
                 one_field = bool(plots) and plots[-1].data["value"].get("one_field")
                 if one_field and mention.has_crop:
                     continue
+                first = first_word(mention)
+                if first is not None and (first.norm in definite or first.role == "reference"):
+                    continue  # "the harvester has lifted the first few beds": of a field named
                 if fields_named or (mention.category is not None and not mention.has_crop):
                     mention.count = mention.quantity
                 continue

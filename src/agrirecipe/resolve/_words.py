@@ -459,7 +459,8 @@ def _article_of_a_container(items: Sequence[Item]) -> None:
 
 def _this_one(items: Sequence[Item]) -> None:
     """'Two strawberry fields in this one': "one" after "this", "that" or "which" points
-    at a thing (the photo, a field named), it does not count one field."""
+    at a thing (the photo, a field named), it does not count one field; nor does "two" in
+    "a vegetable plot in between the two" (the two fields named)."""
     for before, item in itertools.pairwise(items):
         if (
             item.role == "number"
@@ -467,6 +468,17 @@ def _this_one(items: Sequence[Item]) -> None:
             and before.norm in ("this", "that", "which")
         ):
             item.role = "filler"
+    for index in range(2, len(items)):
+        between, the, number = items[index - 2], items[index - 1], items[index]
+        after = items[index + 1] if index + 1 < len(items) else None
+        if (
+            number.role == "number"
+            and the.norm == "the"
+            and ("between" in between.norm or between.norm in ("among", "amongst"))
+            # ("between the two groves" counts the groves named before)
+            and (after is None or after.role not in ("plot", "head", "category"))
+        ):
+            number.role = "filler"
 
 
 def _all_as_intensifier(items: Sequence[Item]) -> None:
@@ -494,11 +506,20 @@ def _every_plot(items: Sequence[Item]) -> None:
         if item.norm == "all" and at < len(items) and items[at].norm == "the":
             at += 1
         plot = items[at] if at < len(items) else None
+        if (
+            plot is not None
+            and plot.role == "head"
+            and item.norm in ("every", "each")
+            and plot.norm in descriptive_words()
+        ):
+            plot.role = "filler"  # "it's on nearly every vine": the plants of the field
+            continue
         spec = plot.data.get("value") if plot is not None and plot.role == "plot" else None
-        if plot is None or not isinstance(spec, dict) or spec.get("individual"):
+        if plot is None or not isinstance(spec, dict):
             continue
-        if bool(spec.get("plural")) != (item.norm == "all"):
+        if bool(spec.get("plural")) != (item.norm == "all") and not spec.get("individual"):
             continue
+        # ("it's on nearly every vine", "every tree has fruit": the plants of the fields)
         after = items[at + 1] if at + 1 < len(items) else None
         # ("each field of wheat", "every plot 2 carrots") name the crop of each field
         if after is not None and after.role in ("head", "weak_variety", "of", "number"):

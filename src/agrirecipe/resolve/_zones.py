@@ -108,6 +108,7 @@ def find_zones(tokens: Sequence[Token], claimed: Sequence[bool] = ()) -> list[Zo
                 found.append(ZoneMatch(zone, first, last))
             for index in range(first, last):
                 taken[index] = True
+    found = _as_seen(found, tokens)
     compass = any(m.zone in _PLACES and "depth" not in _PLACES[m.zone] for m in found)
     # "looking east ...: potatoes closest to me": the compass places, not the depth; the
     # depth words stay zone words ("potatoes closest to the camera at the bottom"), read
@@ -118,6 +119,37 @@ def find_zones(tokens: Sequence[Token], claimed: Sequence[bool] = ()) -> list[Zo
     if len(sides) < 2 and not (sides and any(m.zone == "middle" for m in found)):
         return []
     return sorted(found, key=lambda m: m.first)
+
+
+#: Compass sides in clockwise order, and how far each turns a view that faces north.
+_CLOCKWISE = ("north", "east", "south", "west")
+#: Words of a zone said from where the viewer stands ("on the left", "top of the frame").
+_VIEWED = frozenset({"left", "right", "frame", "picture", "photo", "shot"})
+
+
+def _as_seen(found: Sequence[ZoneMatch], tokens: Sequence[Token]) -> list[ZoneMatch]:
+    """'Looking south from the yard: Centenary on the left, ... Sonata on the right': a
+    viewer facing south has east on the left, so left and right (and the top and bottom
+    of the frame) turn with the way the viewer faces; a map's own sides do not."""
+    facing = next(
+        (
+            b.norm
+            for a, b in itertools.pairwise(tokens)
+            if a.norm in ("looking", "facing") and b.norm in _CLOCKWISE
+        ),
+        "north",
+    )
+    turn = _CLOCKWISE.index(facing)
+    if not turn:
+        return list(found)
+    seen: list[ZoneMatch] = []
+    for match in found:
+        words = {t.norm for t in tokens[match.first : match.last]}
+        if match.zone in _CLOCKWISE and words & _VIEWED:
+            zone = _CLOCKWISE[(_CLOCKWISE.index(match.zone) + turn) % 4]
+            match = ZoneMatch(zone, match.first, match.last)
+        seen.append(match)
+    return seen
 
 
 def _zone_of(items: Sequence[Item]) -> str | None:
