@@ -171,3 +171,23 @@ def test_a_season_said_for_the_scene_beats_a_cue() -> None:
 )
 def test_cues_of_ripening(prompt: str, stages: list[str]) -> None:
     assert [f.stage for f in recipe(prompt).fields] == stages
+
+
+def test_a_month_opening_the_prompt() -> None:
+    fields = recipe(
+        "March on our farm in Sicily: the Moro blood oranges on the south terrace are ripe, and "
+        "the Washington Navel trees north of them are already flowering."
+    ).fields
+    assert [f.season for f in fields] == ["Spring", "Spring"]
+    assert [f.season for f in recipe("May the apples be ripe").fields] == ["Fall"]
+
+
+def test_a_month_after_harvest_and_a_bearing_with_an_en_dash() -> None:
+    (lettuce,) = recipe("butterhed lettuce🥬 ready 2 harvest sept, 30cm apart in the row").fields
+    assert lettuce.season == "Fall"
+    (maize,) = recipe(
+        "Small maize plot for testing the stereo camera between rows: 8 rows at 30 in, 15 m "
+        "long, NE–SW."
+    ).fields
+    assert "row_direction" in maize.stated
+    assert abs(maize.geometry.rotation_deg) == pytest.approx(45.0)

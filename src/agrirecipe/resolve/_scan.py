@@ -65,7 +65,8 @@ def assign_roles(items: Sequence[Item]) -> None:
     previous: Item | None = None
     for index, item in enumerate(items):
         following = items[index + 1] if index + 1 < len(items) else None
-        item.role = _role(item, previous, cues, alone=_alone(previous, following))
+        alone = _alone(previous, following) or _opening_month(item, previous, following)
+        item.role = _role(item, previous, cues, alone=alone)
         if item.role == "relation" and _attributive(item, previous, following):
             item.role = "filler"  # "three adjacent fields": the fields in a row
             item.data["adjacent"] = True
@@ -288,6 +289,17 @@ def _role(item: Item, previous: Item | None, cues: set[str], *, alone: bool = Fa
         item.data["value"] = sense.value
         return {"relation_trailer": "trailer"}.get(kind, kind)
     return "filler"
+
+
+def _opening_month(item: Item, previous: Item | None, following: Item | None) -> bool:
+    """'March on our farm in Sicily: ...': a capitalised month word opening a sentence,
+    before "on", "in", "at" or a mark, is the month (a verb would take an object)."""
+    return (
+        (previous is None or previous.norm in (".", "!", "?", ";"))
+        and item.raw[:1].isupper()
+        and following is not None
+        and following.norm in ("on", "in", "at", ",", ":", "-", "and")
+    )
 
 
 def _named_month(item: Item, previous: Item | None) -> bool:
