@@ -30,6 +30,7 @@ from agrirecipe.resolve._measures import (
     opens_with_rows,
     parallel_fields,
     sentence_fields,
+    sentence_start,
     shared_by_all,
     shared_by_all_after,
 )
@@ -253,10 +254,6 @@ def _continues_a_description(clauses: Sequence[Clause], position: int) -> bool:
     )
 
 
-#: Marks that end a sentence.
-_ENDS = (".", "!", ";")
-
-
 def _same_as_before_next(
     clauses: Sequence[Clause],
     position: int,
@@ -266,9 +263,7 @@ def _same_as_before_next(
     """'Plot B is the same size, Beefsteak': "the same size" compares with a field named
     before, so in a sentence of its own it belongs to the field named right after it."""
     following = clauses[position + 1].link if position + 1 < len(clauses) else None
-    start = position
-    while start > 0 and (link := clauses[start].link) is not None and link.norm not in _ENDS:
-        start -= 1
+    start = sentence_start(clauses, position)
     return (
         position > 0
         and forward is not None

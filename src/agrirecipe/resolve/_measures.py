@@ -29,6 +29,7 @@ __all__ = [
     "parallel_spacing",
     "same_spacing",
     "sentence_fields",
+    "sentence_start",
     "share_each_measures",
     "shared_by_all",
     "shared_by_all_after",
@@ -37,7 +38,7 @@ __all__ = [
 
 def sentence_fields(clauses: Sequence[Clause], position: int) -> list[Mention]:
     """The fields named in the sentence before clause ``position``, each once."""
-    start = _sentence_start(clauses, position)
+    start = sentence_start(clauses, position)
     return list({id(m): m for c in clauses[start:position] for m in c.mentions}.values())
 
 
@@ -45,7 +46,7 @@ def after_list_plots(clauses: Sequence[Clause], position: int) -> bool:
     """Whether the sentence so far named the plots of a list ("... in adjacent strips")."""
     return any(
         i.data.get("list_plots")
-        for clause in clauses[_sentence_start(clauses, position) : position + 1]
+        for clause in clauses[sentence_start(clauses, position) : position + 1]
         for i in clause.items
     )
 
@@ -104,7 +105,7 @@ def _ends_a_sentence(clause: Clause) -> bool:
     return link is not None and link.norm in _SENTENCE_ENDS
 
 
-def _sentence_start(clauses: Sequence[Clause], position: int) -> int:
+def sentence_start(clauses: Sequence[Clause], position: int) -> int:
     """The index of the clause that begins the sentence clause ``position`` is in."""
     start = position
     while start > 0 and not _ends_a_sentence(clauses[start]):
