@@ -191,3 +191,87 @@ def test_a_month_after_harvest_and_a_bearing_with_an_en_dash() -> None:
     ).fields
     assert "row_direction" in maize.stated
     assert abs(maize.geometry.rotation_deg) == pytest.approx(45.0)
+
+
+def test_plants_poking_out_of_a_plot_of_no_crop_are_the_crop_just_named() -> None:
+    scene = recipe(
+        "The January King cabbages in the snow, purple-tinged leaves poking out of a white "
+        "field, a fox track across the middle and the hedge behind all frosted."
+    )
+    assert [f.variety for f in scene.fields] == ["January King"]
+    # a plot of no crop said on its own is still asked for
+    assert len(recipe("onions next to a field").fields) == 2
+
+
+def test_tillage_implements_and_worn_scenery_are_not_fields_or_cues() -> None:
+    scene = recipe(
+        "In the middle of the frame there are three different vegetable crops in strips and "
+        "a tractor with a bed-former parked at the end."
+    )
+    assert len(scene.fields) == 3
+    assert {f.category for f in scene.fields} == {"Vegetables"}
+    vines = recipe(
+        "Spelt nearest the camera and up on the hill the Pinot Nero vines in full leaf. "
+        "A rusty old harvester by the track."
+    ).fields
+    assert [f.health for f in vines] == ["Healthy", "Healthy"]
+    assert recipe("pinot noir vines, rusty leaves, an old tractor").fields[0].health == "Ill"
+
+
+def test_a_zone_after_a_bracketed_variety_stays_with_its_crop() -> None:
+    scene = recipe(
+        "onions (stuttgarter) at the top, golden acre cabbage in the middle, danvers carrots "
+        "at the bottom"
+    )
+    assert {
+        ("Stuttgarter", "north_of", ("Golden Acre",)),
+        ("Golden Acre", "north_of", ("Danvers",)),
+    } <= relations(scene)
+
+
+def test_a_closing_cue_about_the_fruit_of_fields_of_one_crop_is_said_of_all() -> None:
+    scene = recipe("comice pears west of bartlett pears, late summer, fruit colouring up nicely")
+    assert [f.stage for f in scene.fields] == ["Maturation", "Maturation"]
+    # a relative clause stays with the field it follows
+    blocks = recipe(
+        "a Navel block and, south of it, a blood orange block whose trees have blotchy "
+        "mottled leaves"
+    ).fields
+    assert [f.health for f in blocks] == ["Healthy", "Ill"]
+
+
+@pytest.mark.parametrize(
+    ("prompt", "kind"),
+    [
+        (
+            "In the tomato tunnel: 8 rows of Beefsteak tomatoes. Outside, right beside the "
+            "tunnel, 6 rows of California Wonder peppers.",
+            "next_to",
+        ),
+        (
+            "Beefsteak tomatoes in a tunnel. North of the tunnel, 6 rows of California Wonder "
+            "peppers.",
+            "north_of",
+        ),
+        ("Beefsteak tomatoes in the tunnel, peppers beside the tunnel.", "next_to"),
+    ],
+)
+def test_a_field_placed_by_the_structure_another_grows_in(prompt: str, kind: str) -> None:
+    assert relations(recipe(prompt)) == {("California Wonder", kind, ("Beefsteak",))}
+
+
+def test_a_crop_word_in_a_machine_is_not_near_rows() -> None:
+    scene = recipe(
+        "Three 0.25 ha plots for a root-crop harvester sim, laid out north to south: onions, "
+        "carrots, potatoes."
+    )
+    assert all("row_direction" not in f.stated for f in scene.fields)
+    assert {
+        ("Sturon", "north_of", ("Nantes",)),
+        ("Nantes", "north_of", ("Bintje",)),
+    } <= relations(scene)
+    # a direction a few measures after the rows is still theirs
+    (potato,) = recipe(
+        "12 rows of Bintje potatoes, 75 cm apart, 60 m long, running east-west. Crop at flowering."
+    ).fields
+    assert "row_direction" in potato.stated

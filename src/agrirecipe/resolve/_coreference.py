@@ -473,7 +473,32 @@ def _where_it_grows(previous: Mention, mention: Mention) -> bool:
         and not mention.refinements
         and not mention.other
         and len(words) >= 3
-        and words[0] in ("in", "on")
-        and words[1] in ("a", "an", "one")
         and previous.clause < mention.clause
+        and (
+            (words[0] in ("in", "on") and words[1] in ("a", "an", "one"))
+            or _plants_in_a_plot(mention)
+        )
+    )
+
+
+#: Words that put plants inside a plot ("leaves poking out of a white field").
+_INSIDE = frozenset({"in", "on", "across", "over", "through", "throughout", "within"})
+
+
+def _plants_in_a_plot(mention: Mention) -> bool:
+    """'..., purple-tinged leaves poking out of a white field': the plants of the crop
+    just named, said to grow in a plot of no crop (a plant-part word, then "in"/"out
+    of"/"across" a plot), describe that crop's field."""
+    items = sorted(mention.items, key=lambda i: i.start)
+    words = [i.norm for i in items]
+    article = next((k for k, w in enumerate(words) if w in ("a", "an", "one")), -1)
+    if article < 2:
+        return False
+    inside = words[article - 1] in _INSIDE or words[article - 2 : article] == ["out", "of"]
+    before = items[: article - (1 if words[article - 1] in _INSIDE else 2)]
+    parts = descriptive_words()
+    return (
+        inside
+        and any(i.norm in parts for i in before)
+        and all(i.role in ("filler", "unknown", "cue", "health", "stage") for i in before)
     )

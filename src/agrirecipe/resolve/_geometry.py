@@ -12,6 +12,7 @@ size does; :func:`row_spec` merges a field's items into a :class:`RowSpec`.
 from __future__ import annotations
 
 import functools
+import itertools
 import math
 import re
 from collections.abc import Callable, Iterable, Sequence
@@ -36,7 +37,8 @@ __all__ = [
 # Keys whose value is a whole number.
 _COUNTS = frozenset({"rows", "beds", "rows_per_bed", "plant_count", "plants_per_row"})
 _MINUS = frozenset({"-", "−", "–"})
-# How far (in tokens) a row word may be from "80 m long" for it to be the rows' length.
+# How far (in words, punctuation not counted) a row word may be from "80 m long" for it
+# to be the rows' length.
 _NEAR_ROWS = 10
 
 
@@ -162,9 +164,8 @@ def _tables() -> _Tables:
         units=units,
         areas=areas,
         directions=directions,
-        row_words=frozenset(
-            w for phrase in (*words["rows"], *words["beds"]) for w in str(phrase).split()
-        ),
+        # the nouns only: "crop rows" is near rows, "a root-crop harvester" is not
+        row_words=frozenset(str(phrase).split()[-1] for phrase in (*words["rows"], *words["beds"])),
     )
 
 
@@ -190,6 +191,7 @@ def find_geometry(tokens: Sequence[Token]) -> list[GeometryMatch]:
         text_parts.append(token.norm)
         offset += len(token.norm) + 1
     text = " ".join(text_parts)
+    word = list(itertools.accumulate(any(c.isalnum() for c in t.norm) for t in tokens))
     row_positions = [i for i, t in enumerate(tokens) if t.norm in tables.row_words]
     claimed = [False] * len(tokens)
     found: list[GeometryMatch] = []
@@ -214,7 +216,7 @@ def find_geometry(tokens: Sequence[Token]) -> list[GeometryMatch]:
             if any(claimed[first:last]):
                 continue
             if pattern.near_rows and not any(
-                abs(position - first) <= _NEAR_ROWS for position in row_positions
+                abs(word[position] - word[first]) <= _NEAR_ROWS for position in row_positions
             ):
                 continue
             groups = match.groupdict()

@@ -100,6 +100,17 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
                     # ("... 80 m rows. Fruit ripening, mid-August.")
                     and clause.items[0].norm in (*_ALL_PLANTS, "fruit")
                 )
+                # "comice pears west of bartlett pears, late summer, fruit colouring
+                # up": the plants of fields of one crop, said after them all
+                or (
+                    bool(clause.items)
+                    and clause.link is not None
+                    and clause.link.norm == ","
+                    and clause.items[0].norm.split()[0] in (*_ALL_PLANTS, "fruit")
+                    and len({id(m) for m in before}) > 1
+                    and len({frozenset(strong_crops(m)) for m in before}) == 1
+                    and bool(strong_crops(before[0]))
+                )
                 # "... onions in 12 rows. Rows are 60 m.": a closing sentence of
                 # row measures is about every field's rows
                 # ("... Granny Smith. Tall spindle, 3.5 m between rows, trees 1 m

@@ -70,6 +70,14 @@ def read_relations(
             # potatoes": kept to pair with a field on the landmark's other side
             named = [m for c in clauses[:position] for m in c.named]
             landmark = _landmark(clause)
+            held = _held_by(clauses, position, landmark)
+            if held is not None:
+                # "In the tomato tunnel: ... Outside, right beside the tunnel, 6 rows of
+                # peppers": placed by the field the scenery holds
+                container, subject = held
+                kind = str(link.data["value"])
+                relations.extend(_pair(kind, subject, (container,), members, link, trace))
+                continue
             if named and landmark is not None and position - 1 == named[-1].clause:
                 landmarks.append((str(link.data.get("value")), landmark, named[-1], link))
                 continue
@@ -380,6 +388,45 @@ def _last_named(mentions: Sequence[Mention]) -> list[Mention]:
         order.pop(id(mention), None)
         order[id(mention)] = mention
     return list(order.values())
+
+
+def _held_by(
+    clauses: Sequence[Clause], position: int, landmark: str | None
+) -> tuple[Mention, Mention] | None:
+    """The field a structure holds ("In the tomato tunnel: ...") and the field placed
+    against that structure by clause ``position`` ("... beside the tunnel, 6 rows of
+    peppers"; "peppers beside the tunnel"), or None."""
+    if landmark is None:
+        return None
+    named = [m for c in clauses[:position] for m in c.named]
+    holders = list({id(m): m for m in named if _holds(m, landmark)}.values())
+    if len(holders) != 1:
+        return None
+    container = holders[0]
+    if named[-1] is not container and named[-1].clause == position - 1:
+        return container, named[-1]
+    following = clauses[position + 1] if position + 1 < len(clauses) else None
+    if (
+        following is not None
+        and following.link is not None
+        and following.link.norm == ","
+        and len(following.named) == 1
+    ):
+        return container, following.named[0]
+    return None
+
+
+def _holds(mention: Mention, landmark: str) -> bool:
+    """Whether ``mention`` is said to grow in ``landmark`` ("In the tomato tunnel")."""
+    items = sorted(mention.items, key=lambda i: i.start)
+    for index, item in enumerate(items):
+        if (
+            item.role == "filler"
+            and item.data.get("scenery") in ("structures", "buildings")
+            and item.norm.removeprefix("farm").strip() == landmark
+        ):
+            return any(i.norm in ("in", "inside") for i in items[max(0, index - 4) : index])
+    return False
 
 
 def _landmark(clause: Clause) -> str | None:

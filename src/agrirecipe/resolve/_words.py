@@ -260,6 +260,20 @@ def _totals_are_not_sizes(items: Sequence[Item]) -> None:
             item.data["total"] = True
 
 
+def _worn_scenery(items: Sequence[Item], first: Item) -> bool:
+    """'Rusty watering can', 'a rusted gate', 'a rusty old harvester': the scenery's look
+    (a worn look before scenery, past at most two plain adjectives), not the crop's."""
+    if first.role != "health" or first.norm not in reader_words("worn_looks"):
+        return False
+    after = [i for i in items if i.start > first.start][:3]
+    for item in after:
+        if item.has("scenery") and not item.has("crop", "variety", "plot", "category"):
+            return True
+        if item.role not in ("filler", "unknown") or item.has("crop", "variety", "plot"):
+            return False
+    return False
+
+
 def _colours_are_not_crops(items: Sequence[Item], text: str) -> None:
     """'striped yellow-orange with rust', 'olive-green velvety patches': a crop word joined
     by a hyphen to a colour is a colour, not a field (nor an unknown crop). 'an orange
@@ -283,13 +297,7 @@ def _colours_are_not_crops(items: Sequence[Item], text: str) -> None:
                     )
                 )
             )
-        ) or (
-            # "Rusty watering can", "a rusted gate": the scenery's look, not the crop's
-            first.role == "health"
-            and first.norm in reader_words("worn_looks")
-            and second.has("scenery")
-            and not second.has("crop", "variety", "plot", "category")
-        ):
+        ) or _worn_scenery(items, first):
             first.role = "filler"
             first.data["colour"] = True
             continue

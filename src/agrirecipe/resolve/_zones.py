@@ -245,7 +245,15 @@ def zone_owners(items: Sequence[Item], fields: Sequence[Sequence[Item]]) -> list
         if item.role != "zone" or id(item) not in owner:
             continue
         broken = True
+        depth = 0
         for before in reversed(items[:position]):
+            # "onions (stuttgarter) at the top": a bracket after the name does not break
+            if before.role == "separator" and before.norm in (")", "("):
+                depth += 1 if before.norm == ")" else -1
+                if depth >= 0:
+                    continue
+            if depth > 0:
+                continue
             if before.role == "separator" and before.norm in _SENTENCE_ENDS:
                 break
             if before.role in ("separator", "conjunction"):
