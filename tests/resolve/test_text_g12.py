@@ -275,3 +275,17 @@ def test_a_crop_word_in_a_machine_is_not_near_rows() -> None:
         "12 rows of Bintje potatoes, 75 cm apart, 60 m long, running east-west. Crop at flowering."
     ).fields
     assert "row_direction" in potato.stated
+
+
+def test_the_only_total_of_one_field_is_its_size() -> None:
+    (banana,) = recipe(
+        "Banana test area, 1.5 ha in total. Double rows 1 m apart with 3.75 m alleys, 2.25 m "
+        "between plants."
+    ).fields
+    assert banana.geometry.area_m2 == pytest.approx(15_000, rel=0.001)
+    # a total of several fields is no field's size
+    for prompt in ("two banana blocks, 1.5 ha in total", "wheat and maize, 2 ha in total"):
+        assert all(
+            f.geometry.area_m2 != pytest.approx(15_000, rel=0.01) for f in recipe(prompt).fields
+        )
+        assert all("size" not in f.stated for f in recipe(prompt).fields)

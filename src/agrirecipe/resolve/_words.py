@@ -249,15 +249,32 @@ def _purpose(item: Item) -> bool:
 
 
 def _totals_are_not_sizes(items: Sequence[Item]) -> None:
-    """'we farm about 40 ha in total - 25 ha of wheat, ...': a total is not a field's size."""
+    """'we farm about 40 ha in total - 25 ha of wheat, ...': a total is not a field's size.
+
+    'Banana test area, 1.5 ha in total': the only size said of one field of one crop is
+    that field's size."""
     norms = [i.norm for i in items]
+    totals = []
     for index, item in enumerate(items):
         if item.role != "size":
             continue
         after = tuple(norms[index + 1 : index + 3])
         if any(after[: len(words)] == tuple(words.split()) for words in reader_words("totals")):
-            item.role = "filler"
-            item.data["total"] = True
+            totals.append(item)
+    sizes = [i for i in items if i.role == "size"]
+    crops = {crop for i in items if i.role == "head" for crop in _crops_of(i)}
+    one_field = (
+        len(totals) == len(sizes) == 1
+        and len(crops) == 1
+        and not any(i.role == "category" for i in items)
+        and not any(i.role == "number" and i.data.get("value", 1) != 1 for i in items)
+        and not any(
+            i.role == "plot" and i.data["value"]["plural"] for i in items if "value" in i.data
+        )
+    )
+    for item in [] if one_field else totals:
+        item.role = "filler"
+        item.data["total"] = True
 
 
 def _worn_scenery(items: Sequence[Item], first: Item) -> bool:
