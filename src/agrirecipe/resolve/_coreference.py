@@ -14,7 +14,7 @@ import itertools
 from collections.abc import Sequence
 
 from agrirecipe.resolve._decompose import Clause, Mention, MentionBuilder
-from agrirecipe.resolve._relations import ARTICLES
+from agrirecipe.resolve._links import ARTICLES
 from agrirecipe.resolve._structure import (
     EACH,
     another_field,

@@ -23,6 +23,7 @@ from agrirecipe.resolve._fields import (
 from agrirecipe.resolve._lexicon import (
     Item,
 )
+from agrirecipe.resolve._links import PRONOUNS, coordinated
 from agrirecipe.resolve._measures import (
     after_list_plots,
     bracketed_by,
@@ -34,7 +35,6 @@ from agrirecipe.resolve._measures import (
     shared_by_all,
     shared_by_all_after,
 )
-from agrirecipe.resolve._relations import PRONOUNS, coordinated
 from agrirecipe.resolve._structure import (
     attribute_of,
     per_bed,

@@ -16,7 +16,7 @@ from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._geometry import geometry_nouns
 from agrirecipe.resolve._intent import FieldIntent, RowSpec
 from agrirecipe.resolve._lexicon import Item, number_value
-from agrirecipe.resolve._relations import listing
+from agrirecipe.resolve._links import listing
 from agrirecipe.resolve._structure import per_bed, strong_crops
 from agrirecipe.resolve._words import SENTENCE_MARKS
 

@@ -16,7 +16,7 @@ from agrirecipe._errors import PromptError
 from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._geometry import geometry_nouns
 from agrirecipe.resolve._lexicon import Item
-from agrirecipe.resolve._relations import listing
+from agrirecipe.resolve._links import listing
 from agrirecipe.resolve._structure import (
     EACH,
     POINTER_WORDS,

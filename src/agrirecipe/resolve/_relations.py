@@ -16,9 +16,24 @@ from typing import Any, get_args
 from agrirecipe.recipe import RelationKind
 from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._intent import RelationIntent, TraceStep
+from agrirecipe.resolve._landmarks import across_landmarks, held_by, landmark_of
 from agrirecipe.resolve._lexicon import Item
+from agrirecipe.resolve._links import (
+    ARTICLES,
+    OPPOSITE,
+    PRONOUNS,
+    THE_TWO,
+    coordinated,
+    field_relations,
+    fields_of,
+    following_list,
+    last_named,
+    listed_after,
+    own_mentions,
+    says,
+)
 
-__all__ = ["ARTICLES", "PRONOUNS", "coordinated", "listing", "read_relations"]
+__all__ = ["read_relations"]
 
 
 def read_relations(
@@ -37,7 +52,7 @@ def read_relations(
         link = clauses[position].link
         assert link is not None
         kind = link.data["value"]
-        relations.extend(_pair(kind, subject, (centre,), members, link, trace))
+        relations.extend(field_relations(kind, subject, (centre,), members, link, trace))
     landmarks: list[tuple[str, str, Mention, Item]] = []
     directed = _directed_neighbours(clauses)
     for position, clause in enumerate(clauses):
@@ -46,7 +61,7 @@ def read_relations(
             continue
         if position in placed or position in directed.values():
             continue
-        landmark = _landmark(clause)
+        landmark = landmark_of(clause)
         if landmark is not None and clause.mentions:
             # "east of the yard there's 2 ha of apples": placed by the yard
             landmarks.append((str(link.data.get("value")), landmark, clause.mentions[0], link))
@@ -69,14 +84,14 @@ def read_relations(
             # "the Winter Wheat east of the farmhouse ..., and west of the house the Russet
             # potatoes": kept to pair with a field on the landmark's other side
             named = [m for c in clauses[:position] for m in c.named]
-            landmark = _landmark(clause)
-            held = _held_by(clauses, position, landmark)
+            landmark = landmark_of(clause)
+            held = held_by(clauses, position, landmark)
             if held is not None:
                 # "In the tomato tunnel: ... Outside, right beside the tunnel, 6 rows of
                 # peppers": placed by the field the scenery holds
                 container, subject = held
                 kind = str(link.data["value"])
-                relations.extend(_pair(kind, subject, (container,), members, link, trace))
+                relations.extend(field_relations(kind, subject, (container,), members, link, trace))
                 continue
             if named and landmark is not None and position - 1 == named[-1].clause:
                 landmarks.append((str(link.data.get("value")), landmark, named[-1], link))
@@ -97,7 +112,7 @@ def read_relations(
             # (not "bananas along the stream to the east of them": scenery placed itself)
             and _not_placed(clauses[position - 1])
             # (not "in two polytunnels next to each other: tunnel 1 is Elsanta, ...")
-            and not (link.role == "trailer" and len(_listed_after(clauses, position)) >= 2)
+            and not (link.role == "trailer" and len(listed_after(clauses, position)) >= 2)
         ):
             # "..., with the village road running along the east side", "Rain covers
             # rolled up above both": the scenery is placed, not a field
@@ -108,11 +123,13 @@ def read_relations(
             )
             continue
         # each field once, where last named ("blood oranges (Moro)" names one twice)
-        before = _last_named([m for c in clauses[:position] for m in c.named])
+        before = last_named([m for c in clauses[:position] for m in c.named])
         # a pronoun's clause ("north of it") names no field of its own after the word
-        after = [m for c in clauses[position:] for m in (c.named if c is not clause else _own(c))]
+        after = [
+            m for c in clauses[position:] for m in (c.named if c is not clause else own_mentions(c))
+        ]
         said = " ".join(i.norm for i in clause.items)
-        the_two = not clause.mentions and said in _THE_TWO
+        the_two = not clause.mentions and said in THE_TWO
         pronoun = bool(clause.items) and (
             clause.items[0].norm in PRONOUNS
             # "cherry tomatoes in between the two", "between both"
@@ -148,19 +165,25 @@ def read_relations(
             after = []
         if link.role == "trailer" and link.data.get("value") in ("next_to", "row"):
             ordered = link.data.get("value") == "row"
-            group = coordinated(clauses, position) or _listed_after(clauses, position)
+            group = coordinated(clauses, position) or listed_after(clauses, position)
             if len(group) > 2:
                 # "potatoes, onions and cabbages side by side": a row, each beside the next.
                 for first, second in zip(group[1:], group, strict=False):
-                    relations.extend(_pair("next_to", first, (second,), members, link, trace))
+                    relations.extend(
+                        field_relations("next_to", first, (second,), members, link, trace)
+                    )
                 if ordered and len(group) == 3:
                     relations.extend(
-                        _pair("between", group[1], (group[2], group[0]), members, link, trace)
+                        field_relations(
+                            "between", group[1], (group[2], group[0]), members, link, trace
+                        )
                     )
                 continue
             if len(group) == 2:
                 # "comice and bartlett pears next to each other": the two side by side
-                relations.extend(_pair("next_to", group[0], (group[1],), members, link, trace))
+                relations.extend(
+                    field_relations("next_to", group[0], (group[1],), members, link, trace)
+                )
                 continue
             fields = members.get(id(group[0]), []) if len(group) == 1 else []
             if len(fields) >= 2:
@@ -178,7 +201,9 @@ def read_relations(
             # named on the relation's side
             kind = link.data["value"]
             if len(before) >= 2:
-                relations.extend(_pair(kind, before[-2], (before[-1],), members, link, trace))
+                relations.extend(
+                    field_relations(kind, before[-2], (before[-1],), members, link, trace)
+                )
             elif (
                 before
                 and len(fields := members.get(id(before[-1]), [])) == 2
@@ -211,7 +236,7 @@ def read_relations(
                 continue
         listed = _listed_middle(clauses, position, link)
         if listed is not None:
-            relations.extend(_pair("between", listed[0], listed[1], members, link, trace))
+            relations.extend(field_relations("between", listed[0], listed[1], members, link, trace))
             continue
         if link.role == "trailer" and link.data.get("value") in ("each_side", "middle"):
             pairs = _surrounded(str(link.data["value"]), clauses, position, before, after)
@@ -229,7 +254,7 @@ def read_relations(
         kind, subject, objects = pairs
         if position in directed and kind == "next_to":
             kind = str(clauses[directed[position]].link.data["value"])  # type: ignore[union-attr]
-        relations.extend(_pair(kind, subject, objects, members, link, trace))
+        relations.extend(field_relations(kind, subject, objects, members, link, trace))
         if (
             the_two
             and kind != "between"
@@ -238,8 +263,8 @@ def read_relations(
             and objects == (before[-2],)
         ):
             # "Padron on the west side, Cayenne on the east side, and corn south of both"
-            relations.extend(_pair(kind, subject, (before[-3],), members, link, trace))
-    relations += _across_landmarks(landmarks, members, trace)
+            relations.extend(field_relations(kind, subject, (before[-3],), members, link, trace))
+    relations += across_landmarks(landmarks, members, trace)
     related = {frozenset((r.subject, *r.objects)) for r in relations if len(r.objects) == 1}
     relations += _then_chain(clauses, members, related, trace)
     relations += _one_side_and_the_other(clauses, members, relations, trace)
@@ -257,9 +282,6 @@ def read_relations(
     return list(unique.values())
 
 
-ARTICLES = frozenset({"the", "a", "an", "our", "my", "their", "its"})
-
-
 def _directed_neighbours(clauses: Sequence[Clause]) -> dict[int, int]:
     """'further north again, beyond the orchard, there's wheat': a direction said on its
     own just before a 'next to' word gives that word its side. Maps the position of
@@ -270,7 +292,7 @@ def _directed_neighbours(clauses: Sequence[Clause]) -> dict[int, int]:
         if (
             link is None
             or link.role != "trailer"
-            or link.data.get("value") not in _OPPOSITE
+            or link.data.get("value") not in OPPOSITE
             or clause.mentions
             or any(i.role != "filler" for i in clause.items)
         ):
@@ -324,10 +346,10 @@ def _then_chain(
     link_item = next(c.link for c in clauses if c.link is not None and c.link.norm == "then")
     relations: list[RelationIntent] = []
     for first, second in itertools.pairwise(fields):
-        relations.extend(_pair("next_to", second, (first,), members, link_item, trace))
+        relations.extend(field_relations("next_to", second, (first,), members, link_item, trace))
     if len(fields) == 3:
         relations.extend(
-            _pair("between", fields[1], (fields[0], fields[2]), members, link_item, trace)
+            field_relations("between", fields[1], (fields[0], fields[2]), members, link_item, trace)
         )
     return relations
 
@@ -354,15 +376,6 @@ def _ordinal_pair(clauses: Sequence[Clause], position: int) -> tuple[int, int] |
 _ORDINAL_FILLERS = frozenset({"the", "one", "is", "lies", "sits", "are"})
 
 
-def _own(clause: Clause) -> list[Mention]:
-    """The fields a clause names itself: its mentions, or the member it names ("and east
-    of it a 3 ha wheat field" after "two plots: ..."), not one it only goes on about."""
-    if clause.mentions:
-        return clause.mentions
-    member = clause.refinement
-    return [member] if member is not None and member.clause == clause.index else []
-
-
 def _not_placed(clause: Clause) -> bool:
     """Whether a clause is not itself placed by a relation word before it."""
     return clause.link is None or clause.link.role not in ("relation", "trailer", "between")
@@ -379,93 +392,6 @@ def _one_and_the_other(clauses: Sequence[Clause], position: int) -> bool:
         and not clause.mentions
         and [i.norm for i in clause.items] == ["the other"]
     )
-
-
-def _last_named(mentions: Sequence[Mention]) -> list[Mention]:
-    """Each mention once, ordered by where it was last named."""
-    order: dict[int, Mention] = {}
-    for mention in mentions:
-        order.pop(id(mention), None)
-        order[id(mention)] = mention
-    return list(order.values())
-
-
-def _held_by(
-    clauses: Sequence[Clause], position: int, landmark: str | None
-) -> tuple[Mention, Mention] | None:
-    """The field a structure holds ("In the tomato tunnel: ...") and the field placed
-    against that structure by clause ``position`` ("... beside the tunnel, 6 rows of
-    peppers"; "peppers beside the tunnel"), or None."""
-    if landmark is None:
-        return None
-    named = [m for c in clauses[:position] for m in c.named]
-    holders = list({id(m): m for m in named if _holds(m, landmark)}.values())
-    if len(holders) != 1:
-        return None
-    container = holders[0]
-    if named[-1] is not container and named[-1].clause == position - 1:
-        return container, named[-1]
-    following = clauses[position + 1] if position + 1 < len(clauses) else None
-    if (
-        following is not None
-        and following.link is not None
-        and following.link.norm == ","
-        and len(following.named) == 1
-    ):
-        return container, following.named[0]
-    return None
-
-
-def _holds(mention: Mention, landmark: str) -> bool:
-    """Whether ``mention`` is said to grow in ``landmark`` ("In the tomato tunnel")."""
-    items = sorted(mention.items, key=lambda i: i.start)
-    for index, item in enumerate(items):
-        if (
-            item.role == "filler"
-            and item.data.get("scenery") in ("structures", "buildings")
-            and item.norm.removeprefix("farm").strip() == landmark
-        ):
-            return any(i.norm in ("in", "inside") for i in items[max(0, index - 4) : index])
-    return False
-
-
-def _landmark(clause: Clause) -> str | None:
-    """The scenery a relation's object is ("east of the yard ..."), or None."""
-    for item in clause.items:
-        if item.norm in ARTICLES or item.data.get("counts_scenery") or item.role == "unknown":
-            continue  # "between the two tracks", "north of the packing shed"
-        if (item.role == "filler" and "scenery" in item.data) or item.role == "non_agricultural":
-            # ("the farmhouse" and "the house" are one landmark)
-            return item.norm.removeprefix("farm").strip()
-        return None
-    return None
-
-
-def _across_landmarks(
-    landmarks: Sequence[tuple[str, str, Mention, Item]],
-    members: dict[int, list[int]],
-    trace: list[TraceStep],
-) -> list[RelationIntent]:
-    """Fields on opposite sides of one landmark: "east of the yard apples, west of the
-    yard pears" puts the apples east of the pears. Others are placed by scenery only."""
-    relations: list[RelationIntent] = []
-    paired: set[int] = set()
-    for first, (kind, landmark, mention, link) in enumerate(landmarks):
-        for second in range(first + 1, len(landmarks)):
-            other_kind, other_landmark, other, _ = landmarks[second]
-            if other_landmark == landmark and _OPPOSITE.get(kind) == other_kind:
-                relations.extend(_pair(kind, mention, (other,), members, link, trace))
-                paired.update((first, second))
-    for index, (_, landmark, _, link) in enumerate(landmarks):
-        if index not in paired:
-            trace.append(
-                TraceStep(
-                    stage="decompose",
-                    subject=f"{link.raw} the {landmark}",
-                    detail="relative to scenery: not used",
-                )
-            )
-    return relations
 
 
 #: "from west to east": each field of the row lies on this side of the next one.
@@ -527,7 +453,7 @@ def _directed_row(
 ) -> list[RelationIntent]:
     """'three strips from west to east: wheat, potatoes, maize', 'A, B and C from north
     to south': the fields in the order named, each on one side of the next."""
-    fields = _fields_of(list(reversed(coordinated(clauses, position))), members)
+    fields = fields_of(list(reversed(coordinated(clauses, position))), members)
     if len(fields) < 2:
         # "going west to east: tomatoes first, then the jalapenos, then peppers";
         # "going east you pass Hamlin oranges, then Navel": the clause's own field first
@@ -538,7 +464,7 @@ def _directed_row(
             # "Gala trees first, then heading east the Durondeau pears": from the field
             # named before "then"
             start = [m for c in clauses[:position] for m in c.mentions][-1:]
-        fields = _fields_of(start + following_list(clauses, position, own), members)
+        fields = fields_of(start + following_list(clauses, position, own), members)
     if len(fields) < 2:
         warnings.append(f"ignored {link.raw!r}: it needs two or more fields before it")
         return []
@@ -560,15 +486,6 @@ def _directed_row(
         RelationIntent(kind=kind, subject=a, objects=(b,), text=link.raw)
         for a, b in itertools.pairwise(fields)
     ]
-
-
-def _fields_of(group: Sequence[Mention], members: dict[int, list[int]]) -> list[int]:
-    fields: list[int] = []
-    for mention in group:
-        for index in members.get(id(mention), []):
-            if index not in fields:
-                fields.append(index)
-    return fields
 
 
 def _listed_middle(
@@ -600,7 +517,7 @@ def _one_side_and_the_other(
     """'Spelt on one side of the hedge, ..., and Walla Walla onions on the other': two
     fields on the two sides of one thing are next to each other."""
     mentions = [m for c in clauses for m in c.mentions]
-    one = next((m for m in mentions if _says(m, ("one", "side"))), None)
+    one = next((m for m in mentions if says(m, ("one", "side"))), None)
     other = next(
         (m for m in mentions if m is not one and any(i.norm == "the other" for i in m.items)),
         None,
@@ -613,54 +530,7 @@ def _one_side_and_the_other(
     if any({r.subject, *r.objects} == pair for r in relations):
         return []
     side = next(i for i in one.items if i.norm == "side")
-    return _pair("next_to", other, (one,), members, side, trace)
-
-
-def _says(mention: Mention, words: tuple[str, str]) -> bool:
-    """Whether the mention's words hold ``words`` one right after the other."""
-    ordered = sorted(mention.items, key=lambda i: i.start)
-    return any((a.norm, b.norm) == words for a, b in itertools.pairwise(ordered))
-
-
-def _pair(
-    kind: Any,
-    subject: Mention,
-    objects: tuple[Mention, ...],
-    members: dict[int, list[int]],
-    link: Item,
-    trace: list[TraceStep],
-) -> list[RelationIntent]:
-    """Field-level relations for a relation between mentions (plural ones expand)."""
-    subject_fields = members.get(id(subject), [])
-    object_fields = [members.get(id(o), []) for o in objects]
-    if not subject_fields or not all(object_fields) or kind not in get_args(RelationKind):
-        return []  # (a word read as a relation that no field relation is: not used)
-    trace.append(
-        TraceStep(
-            stage="decompose",
-            subject=link.raw,
-            detail=f"{subject.text!r} {kind} " + " and ".join(repr(o.text) for o in objects),
-        )
-    )
-    if kind == "between":
-        if objects[0] is objects[1]:
-            if len(object_fields[0]) < 2:
-                return []  # "Gala in between Gala, Gala": one field is not two sides
-            pair = (object_fields[0][0], object_fields[0][1])
-        else:
-            pair = (object_fields[0][0], object_fields[1][0])
-        if len({subject_fields[0], *pair}) < 3:
-            return []
-        return [
-            RelationIntent(kind="between", subject=subject_fields[0], objects=pair, text=link.raw)
-        ]
-    # a field named twice ("Valencia oranges ... near Valencia") is not beside itself
-    pairs = [(s, o) for s in subject_fields for o in object_fields[0] if s != o]
-    if kind == "next_to" and len(pairs) > 2:
-        # Groups side by side: one field can touch at most two in a row, so
-        # "two orchards next to three fields" means the groups touch.
-        pairs = pairs[:1]
-    return [RelationIntent(kind=kind, subject=s, objects=(o,), text=link.raw) for s, o in pairs]
+    return field_relations("next_to", other, (one,), members, side, trace)
 
 
 def _adjacent_rows(
@@ -829,14 +699,6 @@ def _relation_mentions(
     return None
 
 
-_OPPOSITE = {
-    "north_of": "south_of",
-    "south_of": "north_of",
-    "east_of": "west_of",
-    "west_of": "east_of",
-}
-
-
 def _placements(clauses: Sequence[Clause], members: dict[int, list[int]]) -> dict[int, Mention]:
     """Fields placed by a trailing direction right after them: "wheat to the north, ...".
 
@@ -846,7 +708,7 @@ def _placements(clauses: Sequence[Clause], members: dict[int, list[int]]) -> dic
     placed: dict[int, Mention] = {}
     for position, clause in enumerate(clauses):
         link = clause.link
-        if link is None or link.role != "trailer" or link.data.get("value") not in _OPPOSITE:
+        if link is None or link.role != "trailer" or link.data.get("value") not in OPPOSITE:
             continue
         if position == 0 or clause.mentions or any(i.role != "filler" for i in clause.items):
             continue
@@ -877,7 +739,7 @@ def _placement_pairs(
             clause.mentions
             and link is not None
             and link.role == "relation"
-            and link.data.get("value") in _OPPOSITE
+            and link.data.get("value") in OPPOSITE
         ):
             placed_ids.add(id(clause.mentions[-1]))
     free = [m for c in clauses for m in c.named if id(m) not in placed_ids and id(m) in members]
@@ -895,7 +757,7 @@ def _placement_pairs(
             (
                 (p, m)
                 for p, m in waiting
-                if clauses[p].link.data["value"] == _OPPOSITE[kind]  # type: ignore[union-attr]
+                if clauses[p].link.data["value"] == OPPOSITE[kind]  # type: ignore[union-attr]
             ),
             None,
         )
@@ -907,97 +769,3 @@ def _placement_pairs(
     for position, _ in waiting:
         del placed[position]
     return pairs
-
-
-#: Words that point back at a field named before ("north of it", "beside them").
-PRONOUNS = frozenset({"it", "them", "those", "these", "they", "this", "that", "which"})
-_THE_TWO = frozenset({"the two", "both", "the two of them", "those two", "these two", "the pair"})
-
-
-def _listed_after(clauses: Sequence[Clause], position: int) -> list[Mention]:
-    """'in two polytunnels next to each other: tunnel 1 is Elsanta, tunnel 2 is
-    Centenary': the fields listed after a colon, when nothing before it named one."""
-    following = clauses[position + 1 :]
-    if not following or following[0].link is None or following[0].link.norm != ":":
-        return []
-    listed: list[Mention] = []
-    for clause in following:
-        if (
-            clause is not following[0]
-            and clause.link is not None
-            and clause.link.norm
-            in (
-                ".",
-                "!",
-                "?",
-                ";",
-            )
-        ):
-            break
-        listed.extend(clause.mentions)
-    return listed
-
-
-def coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:
-    """The mentions just before clause ``position``, with those listed with it.
-
-    "bananas and oranges, ripe": both are ripe; "apples next to carrots, ripe":
-    only the carrots.
-    """
-    index = position - 1
-    while index >= 0 and not clauses[index].mentions:
-        index -= 1
-    if index < 0:
-        return []
-    group = [clauses[index].mentions[-1]]
-    said = clauses[index].items
-    if said and said[0].norm in ("the", "these", "those", "both") and (group[0].count or 1) > 1:
-        return group  # "2 cereal fields n 2 fruit ones, the fruit ones touching each other"
-    seen = {id(group[0])}  # identity: comparing mentions field by field made this cubic
-    while index > 0 and listing(clauses[index].link):
-        previous = clauses[index - 1]
-        if not previous.mentions:
-            # "orchard, then potatoes": the bare comma between two members
-            if previous.items or index < 2 or not listing(previous.link):
-                break
-            index -= 1
-            continue
-        index -= 1
-        mention = clauses[index].mentions[-1]
-        if id(mention) not in seen:  # a field named again stands twice
-            seen.add(id(mention))
-            group.append(mention)
-    return group
-
-
-def following_list(
-    clauses: Sequence[Clause], position: int, first: Sequence[Mention] = ()
-) -> list[Mention]:
-    """The mentions listed right after clause ``position`` (a heading such as "west to
-    east:"), in order: the first after it (or ``first``, named in the heading's own
-    clause), then each joined to it by a comma, "and" or "then", up to a full stop or
-    any other link."""
-    group: list[Mention] = list(first)
-    for index in range(position + 1, len(clauses)):
-        clause = clauses[index]
-        if group and not listing(clause.link):
-            if not clause.mentions and all(i.role == "filler" for i in clause.items):
-                continue  # "potatoes closest to me, then the wheat": placed by the viewer
-            break
-        if (
-            not group
-            and clause.link is not None
-            and clause.link.norm not in (":", ",")
-            and (clause.mentions or clause.link.role not in ("separator", "conjunction"))
-        ):
-            break
-        if clause.mentions and all(clause.mentions[-1] is not m for m in group):
-            group.append(clause.mentions[-1])
-    return group
-
-
-def listing(link: Item | None) -> bool:
-    """A link inside a list of fields: "and", or a comma (not a full stop or a relation)."""
-    if link is None:
-        return False
-    return link.role == "conjunction" or (link.role == "separator" and link.norm in (",", ";", "&"))

@@ -20,7 +20,7 @@ from typing import Any
 
 from agrirecipe.resolve._decompose import Clause, Mention, MentionBuilder
 from agrirecipe.resolve._lexicon import Item, vocabulary
-from agrirecipe.resolve._relations import listing
+from agrirecipe.resolve._links import listing
 
 __all__ = [
     "EACH",

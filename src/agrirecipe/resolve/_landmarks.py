@@ -1,0 +1,96 @@
+"""Fields placed by scenery (issue 8): a landmark between fields, a structure holding one.
+
+"east of the yard apples, west of the yard pears" puts the apples east of the pears;
+"In the tomato tunnel: ... right beside the tunnel, peppers" puts the peppers next to
+the tomatoes. A field placed only by scenery ("a test strip along the farm track") is
+placed by nothing the recipe holds: --explain lists it as not used.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from agrirecipe.resolve._decompose import Clause, Mention
+from agrirecipe.resolve._intent import RelationIntent, TraceStep
+from agrirecipe.resolve._lexicon import Item
+from agrirecipe.resolve._links import ARTICLES, OPPOSITE, field_relations
+
+__all__ = ["across_landmarks", "held_by", "landmark_of"]
+
+
+def held_by(
+    clauses: Sequence[Clause], position: int, landmark: str | None
+) -> tuple[Mention, Mention] | None:
+    """The field a structure holds ("In the tomato tunnel: ...") and the field placed
+    against that structure by clause ``position`` ("... beside the tunnel, 6 rows of
+    peppers"; "peppers beside the tunnel"), or None."""
+    if landmark is None:
+        return None
+    named = [m for c in clauses[:position] for m in c.named]
+    holders = list({id(m): m for m in named if _holds(m, landmark)}.values())
+    if len(holders) != 1:
+        return None
+    container = holders[0]
+    if named[-1] is not container and named[-1].clause == position - 1:
+        return container, named[-1]
+    following = clauses[position + 1] if position + 1 < len(clauses) else None
+    if (
+        following is not None
+        and following.link is not None
+        and following.link.norm == ","
+        and len(following.named) == 1
+    ):
+        return container, following.named[0]
+    return None
+
+
+def _holds(mention: Mention, landmark: str) -> bool:
+    """Whether ``mention`` is said to grow in ``landmark`` ("In the tomato tunnel")."""
+    items = sorted(mention.items, key=lambda i: i.start)
+    for index, item in enumerate(items):
+        if (
+            item.role == "filler"
+            and item.data.get("scenery") in ("structures", "buildings")
+            and item.norm.removeprefix("farm").strip() == landmark
+        ):
+            return any(i.norm in ("in", "inside") for i in items[max(0, index - 4) : index])
+    return False
+
+
+def landmark_of(clause: Clause) -> str | None:
+    """The scenery a relation's object is ("east of the yard ..."), or None."""
+    for item in clause.items:
+        if item.norm in ARTICLES or item.data.get("counts_scenery") or item.role == "unknown":
+            continue  # "between the two tracks", "north of the packing shed"
+        if (item.role == "filler" and "scenery" in item.data) or item.role == "non_agricultural":
+            # ("the farmhouse" and "the house" are one landmark)
+            return item.norm.removeprefix("farm").strip()
+        return None
+    return None
+
+
+def across_landmarks(
+    landmarks: Sequence[tuple[str, str, Mention, Item]],
+    members: dict[int, list[int]],
+    trace: list[TraceStep],
+) -> list[RelationIntent]:
+    """Fields on opposite sides of one landmark: "east of the yard apples, west of the
+    yard pears" puts the apples east of the pears. Others are placed by scenery only."""
+    relations: list[RelationIntent] = []
+    paired: set[int] = set()
+    for first, (kind, landmark, mention, link) in enumerate(landmarks):
+        for second in range(first + 1, len(landmarks)):
+            other_kind, other_landmark, other, _ = landmarks[second]
+            if other_landmark == landmark and OPPOSITE.get(kind) == other_kind:
+                relations.extend(field_relations(kind, mention, (other,), members, link, trace))
+                paired.update((first, second))
+    for index, (_, landmark, _, link) in enumerate(landmarks):
+        if index not in paired:
+            trace.append(
+                TraceStep(
+                    stage="decompose",
+                    subject=f"{link.raw} the {landmark}",
+                    detail="relative to scenery: not used",
+                )
+            )
+    return relations

@@ -1,0 +1,215 @@
+"""Words that link fields, shared by the relation readers.
+
+The lists a relation word or a head-less clause is said of (:func:`coordinated`,
+:func:`following_list`, :func:`listing`), the words that point back at a field
+(:data:`PRONOUNS`), and :func:`field_relations`, which turns one relation between
+mentions into relations between their fields (plural mentions expand).
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Sequence
+from typing import Any, get_args
+
+from agrirecipe.recipe import RelationKind
+from agrirecipe.resolve._decompose import Clause, Mention
+from agrirecipe.resolve._intent import RelationIntent, TraceStep
+from agrirecipe.resolve._lexicon import Item
+
+__all__ = [
+    "ARTICLES",
+    "OPPOSITE",
+    "PRONOUNS",
+    "THE_TWO",
+    "coordinated",
+    "field_relations",
+    "fields_of",
+    "following_list",
+    "last_named",
+    "listed_after",
+    "listing",
+    "own_mentions",
+    "says",
+]
+
+
+ARTICLES = frozenset({"the", "a", "an", "our", "my", "their", "its"})
+
+
+#: Words that point back at a field named before ("north of it", "beside them").
+PRONOUNS = frozenset({"it", "them", "those", "these", "they", "this", "that", "which"})
+
+
+THE_TWO = frozenset({"the two", "both", "the two of them", "those two", "these two", "the pair"})
+
+
+OPPOSITE = {
+    "north_of": "south_of",
+    "south_of": "north_of",
+    "east_of": "west_of",
+    "west_of": "east_of",
+}
+
+
+def says(mention: Mention, words: tuple[str, str]) -> bool:
+    """Whether the mention's words hold ``words`` one right after the other."""
+    ordered = sorted(mention.items, key=lambda i: i.start)
+    return any((a.norm, b.norm) == words for a, b in itertools.pairwise(ordered))
+
+
+def field_relations(
+    kind: Any,
+    subject: Mention,
+    objects: tuple[Mention, ...],
+    members: dict[int, list[int]],
+    link: Item,
+    trace: list[TraceStep],
+) -> list[RelationIntent]:
+    """Field-level relations for a relation between mentions (plural ones expand)."""
+    subject_fields = members.get(id(subject), [])
+    object_fields = [members.get(id(o), []) for o in objects]
+    if not subject_fields or not all(object_fields) or kind not in get_args(RelationKind):
+        return []  # (a word read as a relation that no field relation is: not used)
+    trace.append(
+        TraceStep(
+            stage="decompose",
+            subject=link.raw,
+            detail=f"{subject.text!r} {kind} " + " and ".join(repr(o.text) for o in objects),
+        )
+    )
+    if kind == "between":
+        if objects[0] is objects[1]:
+            if len(object_fields[0]) < 2:
+                return []  # "Gala in between Gala, Gala": one field is not two sides
+            pair = (object_fields[0][0], object_fields[0][1])
+        else:
+            pair = (object_fields[0][0], object_fields[1][0])
+        if len({subject_fields[0], *pair}) < 3:
+            return []
+        return [
+            RelationIntent(kind="between", subject=subject_fields[0], objects=pair, text=link.raw)
+        ]
+    # a field named twice ("Valencia oranges ... near Valencia") is not beside itself
+    pairs = [(s, o) for s in subject_fields for o in object_fields[0] if s != o]
+    if kind == "next_to" and len(pairs) > 2:
+        # Groups side by side: one field can touch at most two in a row, so
+        # "two orchards next to three fields" means the groups touch.
+        pairs = pairs[:1]
+    return [RelationIntent(kind=kind, subject=s, objects=(o,), text=link.raw) for s, o in pairs]
+
+
+def fields_of(group: Sequence[Mention], members: dict[int, list[int]]) -> list[int]:
+    fields: list[int] = []
+    for mention in group:
+        for index in members.get(id(mention), []):
+            if index not in fields:
+                fields.append(index)
+    return fields
+
+
+def own_mentions(clause: Clause) -> list[Mention]:
+    """The fields a clause names itself: its mentions, or the member it names ("and east
+    of it a 3 ha wheat field" after "two plots: ..."), not one it only goes on about."""
+    if clause.mentions:
+        return clause.mentions
+    member = clause.refinement
+    return [member] if member is not None and member.clause == clause.index else []
+
+
+def last_named(mentions: Sequence[Mention]) -> list[Mention]:
+    """Each mention once, ordered by where it was last named."""
+    order: dict[int, Mention] = {}
+    for mention in mentions:
+        order.pop(id(mention), None)
+        order[id(mention)] = mention
+    return list(order.values())
+
+
+def listed_after(clauses: Sequence[Clause], position: int) -> list[Mention]:
+    """'in two polytunnels next to each other: tunnel 1 is Elsanta, tunnel 2 is
+    Centenary': the fields listed after a colon, when nothing before it named one."""
+    following = clauses[position + 1 :]
+    if not following or following[0].link is None or following[0].link.norm != ":":
+        return []
+    listed: list[Mention] = []
+    for clause in following:
+        if (
+            clause is not following[0]
+            and clause.link is not None
+            and clause.link.norm
+            in (
+                ".",
+                "!",
+                "?",
+                ";",
+            )
+        ):
+            break
+        listed.extend(clause.mentions)
+    return listed
+
+
+def coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:
+    """The mentions just before clause ``position``, with those listed with it.
+
+    "bananas and oranges, ripe": both are ripe; "apples next to carrots, ripe":
+    only the carrots.
+    """
+    index = position - 1
+    while index >= 0 and not clauses[index].mentions:
+        index -= 1
+    if index < 0:
+        return []
+    group = [clauses[index].mentions[-1]]
+    said = clauses[index].items
+    if said and said[0].norm in ("the", "these", "those", "both") and (group[0].count or 1) > 1:
+        return group  # "2 cereal fields n 2 fruit ones, the fruit ones touching each other"
+    seen = {id(group[0])}  # identity: comparing mentions field by field made this cubic
+    while index > 0 and listing(clauses[index].link):
+        previous = clauses[index - 1]
+        if not previous.mentions:
+            # "orchard, then potatoes": the bare comma between two members
+            if previous.items or index < 2 or not listing(previous.link):
+                break
+            index -= 1
+            continue
+        index -= 1
+        mention = clauses[index].mentions[-1]
+        if id(mention) not in seen:  # a field named again stands twice
+            seen.add(id(mention))
+            group.append(mention)
+    return group
+
+
+def following_list(
+    clauses: Sequence[Clause], position: int, first: Sequence[Mention] = ()
+) -> list[Mention]:
+    """The mentions listed right after clause ``position`` (a heading such as "west to
+    east:"), in order: the first after it (or ``first``, named in the heading's own
+    clause), then each joined to it by a comma, "and" or "then", up to a full stop or
+    any other link."""
+    group: list[Mention] = list(first)
+    for index in range(position + 1, len(clauses)):
+        clause = clauses[index]
+        if group and not listing(clause.link):
+            if not clause.mentions and all(i.role == "filler" for i in clause.items):
+                continue  # "potatoes closest to me, then the wheat": placed by the viewer
+            break
+        if (
+            not group
+            and clause.link is not None
+            and clause.link.norm not in (":", ",")
+            and (clause.mentions or clause.link.role not in ("separator", "conjunction"))
+        ):
+            break
+        if clause.mentions and all(clause.mentions[-1] is not m for m in group):
+            group.append(clause.mentions[-1])
+    return group
+
+
+def listing(link: Item | None) -> bool:
+    """A link inside a list of fields: "and", or a comma (not a full stop or a relation)."""
+    if link is None:
+        return False
+    return link.role == "conjunction" or (link.role == "separator" and link.norm in (",", ";", "&"))
