@@ -111,7 +111,16 @@ def merge_coreferences(
     for mention in mentions:
         clause = clause_of.get(id(mention))
         first = first_word(mention)
-        if clause is None or not kept or clause.mentions[0] is not mention:
+        # ("so the tall corn casts shadow on the tomatoes": a second definite mention of
+        # a clause whose first named a field again)
+        later_definite = (
+            clause is not None
+            and clause.index in merged
+            and first is not None
+            and first.norm in definite
+            and mention.count is None
+        )
+        if clause is None or not kept or (clause.mentions[0] is not mention and not later_definite):
             if first is not None and first.norm == "both" and mention.count is None:
                 mention.count = 2  # "Both cereal fields beside the dryer": two, named now
             kept.append(mention)

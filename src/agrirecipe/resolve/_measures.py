@@ -10,7 +10,7 @@ field's, every listed field's, or the field before's again.
 from __future__ import annotations
 
 import itertools
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 
 from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._geometry import geometry_nouns
@@ -57,12 +57,35 @@ def opens_with_rows(clauses: Sequence[Clause], position: int) -> bool:
     clause = clauses[position]
     if clause.mentions or not clause.items or clause.items[0].role != "geometry":
         return False
-    if clause.link is None or clause.link.norm not in SENTENCE_MARKS:
+    named = {id(m): m for c in clauses[:position] for m in c.mentions}.values()
+    if clause.link is None or (
+        clause.link.norm not in SENTENCE_MARKS and not _closes_one_crop(clauses, position, named)
+    ):
         return False
     first = clause.items[0].tokens[0].norm
-    named = {id(m): m for c in clauses[:position] for m in c.mentions}.values()
     fields = sum(max(len({id(r) for r in m.refinements}), m.count or 1) for m in named)
     return first in geometry_nouns() and fields >= 2
+
+
+def _closes_one_crop(clauses: Sequence[Clause], position: int, named: Iterable[Mention]) -> bool:
+    """'Walla Walla and Stuttgarter onion plots, ..., Stuttgarter plot east of the Walla
+    Walla one, rows NE-SW': a last clause after a comma, once fields of one crop are
+    placed against each other."""
+    crops = {frozenset(strong_crops(m)) for m in named}
+    previous = clauses[position - 1] if position else None
+    return (
+        _clause_is_last(clauses, position)
+        and len(crops) == 1
+        and bool(next(iter(crops)))
+        and previous is not None
+        and previous.link is not None
+        and previous.link.role == "relation"
+    )
+
+
+def _clause_is_last(clauses: Sequence[Clause], position: int) -> bool:
+    """Whether no clause after ``position`` says anything."""
+    return all(not c.items and not c.mentions for c in clauses[position + 1 :])
 
 
 def shared_by_all(clauses: Sequence[Clause], position: int) -> bool:

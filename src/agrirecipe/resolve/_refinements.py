@@ -244,7 +244,11 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
                 any(
                     same_variety(r, sub)
                     # "two different fruits: apples and apples" still lists two members
-                    or (link.role == "separator" and not parent.distinct and _names_again(r, sub))
+                    or (
+                        link.role == "separator"
+                        and not parent.distinct
+                        and _names_again(r, sub, placed=_placed_against(clauses, clause))
+                    )
                     for r in parent.refinements
                 )
                 # "centenary & albion strawberries, 2 fields, albion south of centenary":
@@ -431,15 +435,28 @@ def _bare_crop_first(clause: Clause) -> bool:
     )
 
 
-def _names_again(member: Mention, sub: Mention) -> bool:
-    """Whether ``sub`` (no count, no variety, no plot of its own) names ``member``'s crop."""
+def _names_again(member: Mention, sub: Mention, *, placed: bool = False) -> bool:
+    """Whether ``sub`` (no count, no variety, no plot of its own) names ``member``'s crop.
+
+    A plot of its own is allowed when ``sub`` is placed against another field ("...,
+    chillies in 1 m rows, chilli plot west of the bananas")."""
     crops = strong_crops(sub)
     return (
         sub.count is None
         and bool(crops)
         and crops == strong_crops(member)
         and not names_a_variety(sub)
-        and not any(h.role == "plot" for h in sub.heads)
+        and (placed or not any(h.role == "plot" for h in sub.heads))
+    )
+
+
+def _placed_against(clauses: Sequence[Clause], clause: Clause) -> bool:
+    """Whether the clause after ``clause`` places it ("... west of the bananas")."""
+    following = clauses[clause.index + 1] if clause.index + 1 < len(clauses) else None
+    return (
+        following is not None
+        and following.link is not None
+        and following.link.role in ("relation", "between")
     )
 
 

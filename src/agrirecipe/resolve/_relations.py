@@ -712,10 +712,25 @@ def _placements(clauses: Sequence[Clause], members: dict[int, list[int]]) -> dic
             continue
         if position == 0 or clause.mentions or any(i.role != "filler" for i in clause.items):
             continue
-        previous = clauses[position - 1].named
+        previous = clauses[_past_a_bracket(clauses, position - 1)].named
         if len(previous) == 1 and id(previous[0]) in members:
             placed[position] = previous[0]
     return placed
+
+
+def _past_a_bracket(clauses: Sequence[Clause], index: int) -> int:
+    """``index``, or the clause before the bracket that clause ``index`` closes ("a
+    Cabernet vineyard (2.7 m rows) to the south": the vineyard is placed)."""
+    link = clauses[index].link
+    if clauses[index].named or link is None or link.norm != ")":
+        return index
+    for back in range(index - 1, 0, -1):
+        opening = clauses[back].link
+        if opening is not None and opening.norm == "(":
+            # ("(2.7 m rows, 1.2 m vines)": the bracket may name the same field again)
+            inside = {id(m) for c in clauses[back:index] for m in c.named}
+            return back - 1 if inside <= {id(m) for m in clauses[back - 1].named} else index
+    return index
 
 
 def _placement_pairs(

@@ -119,6 +119,15 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
             and each.norm in ("each", "apiece")
         ):
             first.role = plot.role = "filler"
+    # "onions in single rows 30 cm apart": how the rows are planted, no count of fields
+    for item, following in itertools.pairwise(items):
+        if (
+            item.role == "number"
+            and item.norm in ("single", "double", "twin")
+            and following.role == "geometry"
+            and following.norm.split()[0] in geometry_nouns()
+        ):
+            item.role = "filler"
     # "one carrot every 2 cm": one plant of the crop, every so far along the row
     for first, head, spacing in zip(items, items[1:], items[2:], strict=False):
         if (
