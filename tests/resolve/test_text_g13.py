@@ -110,3 +110,100 @@ def test_a_closing_row_direction_after_fields_of_one_crop_are_placed() -> None:
     # fields of different crops: the nearest one only
     apples, wheat = recipe("Gala west of wheat, rows NE-SW").fields
     assert "row_direction" not in apples.stated and "row_direction" in wheat.stated
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "Hamlin block in Florida, November: trees dripping with fruit turning from green to "
+        "orange, a fruit trailer at the end of the row and palms behind.",
+        "At the college plots: Beefsteak tomatoes on the right.",
+    ],
+)
+def test_palms_and_colleges_are_scenery(prompt: str) -> None:
+    assert len(recipe(prompt).fields) == 1
+
+
+def test_a_palm_plantation_is_still_an_unknown_crop() -> None:
+    from agrirecipe import UnknownCropError
+
+    with pytest.raises(UnknownCropError, match="palm"):
+        recipe("a palm plantation")
+
+
+def test_the_short_name_of_a_variety_named_before() -> None:
+    scene = recipe(
+        "cherry tomatoes trained up strings on the left, Beefsteak tomatoes on the right; the "
+        "beef ones have big fruit just turning red, the cherry ones are still in flower."
+    )
+    assert [(f.variety, f.stage) for f in scene.fields] == [
+        ("Cherry", "Reproductive"),
+        ("Beefsteak", "Maturation"),
+    ]
+
+
+def test_weather_on_plants_and_autumn_leaves_are_no_disease() -> None:
+    cabbage, _red = recipe(
+        "January King cabbages dusted with snow, heads solid and ready, and just north of them "
+        "a block of Red Express"
+    ).fields
+    assert cabbage.health == "Healthy"
+    assert recipe("apples dusted with mildew").fields[0].health == "Ill"
+    (cherry,) = recipe(
+        "the Regina cherry orchard in late October, white blossom among the yellowing leaves"
+    ).fields
+    assert cherry.health == "Healthy"
+    # out of autumn, or on a crop that keeps no autumn colour, it is a disease
+    assert recipe("cherry orchard in July, yellowing leaves").fields[0].health == "Ill"
+    assert recipe("carrots in October, yellowing leaves").fields[0].health == "Ill"
+
+
+def test_a_field_placed_behind_them_is_not_listed_with_them() -> None:
+    apples, pears = recipe(
+        "Jonagored apples in the front block with the hail nets pulled back, and behind them a "
+        "row of old Durondeau pear trees, the leaves covered in little black spots."
+    ).fields
+    assert (apples.health, pears.health) == ("Healthy", "Ill")
+
+
+def test_words_after_a_sentence_about_one_crops_plants_stay_with_it() -> None:
+    cherries, pears = recipe(
+        "the Kordia cherries east of the Comice pears; the cherry trees are draped in white "
+        "netting with the fruit deep red and ripe, the pears still small and green."
+    ).fields
+    assert cherries.stage == "Maturation"
+    assert pears.stage != "Maturation"
+
+
+@pytest.mark.parametrize(
+    ("prompt", "attribute", "value"),
+    [
+        ("Valencia grove in January, trees loaded with bright orange fruit", "stage", "Maturation"),
+        ("a Chiquita banana farm with fat full bunches", "stage", "Maturation"),
+        ("a vineyard, vines bare and pruned back to the wire", "season", "Winter"),
+        ("a big potato field just coming through the soil", "stage", "Vegetative"),
+    ],
+)
+def test_cues_of_g13(prompt: str, attribute: str, value: str) -> None:
+    assert getattr(recipe(prompt).fields[0], attribute) == value
+
+
+def test_directions_around_a_field_in_the_middle() -> None:
+    scene = recipe(
+        "To the north, the orchard, trees white with blossom; in the middle a field of young "
+        "wheat; and to the south a big potato field."
+    )
+    name = {f.id: f.crop for f in scene.fields}
+    said = {(name[r.subject], r.kind, tuple(name[o] for o in r.objects)) for r in scene.relations}
+    assert {
+        ("Wheat", "between", (scene.fields[0].crop, "Potato")),
+        ("Potato", "south_of", ("Wheat",)),
+    } <= said
+    assert any(k == "north_of" and o == ("Wheat",) for _, k, o in said)
+
+
+def test_a_capitalised_weak_variety_beside_a_variety_of_its_crop() -> None:
+    scene = recipe(
+        "Flint on the north side, Popcorn on the south side. Both maize blocks are tasseling."
+    )
+    assert relations(scene) == {("Flint", "north_of", ("Popcorn",))}

@@ -61,6 +61,12 @@ def _table() -> tuple[tuple[str, Cue], ...]:
     return tuple(entries)
 
 
+@functools.cache
+def _autumn_looks() -> frozenset[str]:
+    data: dict[str, Any] = yaml.safe_load((DATA_DIR / "cues.yaml").read_text("utf-8"))
+    return frozenset(str(p) for p in data.get("autumn_looks", ()))
+
+
 def add_cues(lexicon: Lexicon) -> None:
     """Add every cue phrase to the lexicon (a phrase that also names an attribute keeps
     both senses; the stated sense wins when roles are given)."""
@@ -94,6 +100,14 @@ def apply_cues(
     for item in cued:
         cue: Cue = item.data["cue"]
         if (cue.deciduous_only and deciduous is False) or (cue.weak and cue.attribute in strong):
+            continue
+        if (
+            cue.attribute == "health"
+            and deciduous
+            and "Fall" in (stated.get("season"), values.get("season"))
+            and item.norm in _autumn_looks()
+        ):
+            used.append(f"{item.raw!r} -> autumn leaves, not {cue.value}")
             continue
         said = stated.get(cue.attribute)
         if said is not None:

@@ -101,7 +101,12 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
             # "apples with scab spots on the leaves and corky fruit": still the apples'
             listed, described = False, True
         # "the fruit ones": the fields of fruit named before, not their fruit
-        ones = any(i.norm in ("ones", "fields", "plots", "blocks") for i in mention.items)
+        # (not "the Beefsteak ones have big fruit": the "ones" of another mention)
+        ordered = sorted(mention.items, key=lambda i: i.start)
+        ones = any(
+            i.norm in ("ones", "fields", "plots", "blocks") and before in mention.heads
+            for before, i in itertools.pairwise(ordered)
+        )
         if (
             not (own_fruit or all(h.norm in words for h in mention.heads))
             or ones
@@ -223,7 +228,7 @@ def _dissolve_described_after_of(clause: Clause, words: frozenset[str]) -> list[
     for index in range(len(clause.mentions) - 1, 0, -1):
         mention, owner = clause.mentions[index], clause.mentions[index - 1]
         if (
-            not _ends_with_of(owner)
+            not (_ends_with_of(owner) or _has_before_head(mention))
             or not all(h.norm in words for h in mention.heads)
             or mention.count is not None
             or mention.quantity is not None
@@ -237,6 +242,23 @@ def _dissolve_described_after_of(clause: Clause, words: frozenset[str]) -> list[
         del clause.mentions[index]
         dissolved.append(mention.text)
     return dissolved
+
+
+def _has_before_head(mention: Mention) -> bool:
+    """ "the beef ones have big fruit just turning red": the plants' own fruit, said with
+    "have"/"has" right before it (past describing words)."""
+    head = min(h.start for h in mention.heads)
+    before = [i for i in sorted(mention.items, key=lambda i: i.start) if i.end <= head]
+    while (
+        before
+        and before[-1].role in ("filler", "unknown", "cue")
+        and before[-1].norm not in (_HAVE)
+    ):
+        before.pop()
+    return bool(before) and before[-1].norm in _HAVE
+
+
+_HAVE = frozenset({"have", "has", "had", "bear", "bears", "carry", "carries", "carrying"})
 
 
 def _ends_with_of(owner: Mention) -> bool:

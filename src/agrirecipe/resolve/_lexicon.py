@@ -263,6 +263,8 @@ class Lexicon:
         senses = self.phrases.setdefault(words, [])
         if derived and any(s.kind == sense.kind for s in senses):
             return
+        if derived and sense.kind == "other_crop" and any(s.kind == "scenery" for s in senses):
+            return  # "palms behind" is scenery; "a palm plantation" is still refused
         if sense not in senses:
             senses.append(sense)
         self.max_words = max(self.max_words, len(words))

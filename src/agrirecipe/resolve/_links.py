@@ -166,7 +166,7 @@ def coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:
     if said and said[0].norm in ("the", "these", "those", "both") and (group[0].count or 1) > 1:
         return group  # "2 cereal fields n 2 fruit ones, the fruit ones touching each other"
     seen = {id(group[0])}  # identity: comparing mentions field by field made this cubic
-    while index > 0 and listing(clauses[index].link):
+    while index > 0 and listing(clauses[index].link) and not _placed_by_pronoun(clauses[index]):
         previous = clauses[index - 1]
         if not previous.mentions:
             # "orchard, then potatoes": the bare comma between two members
@@ -180,6 +180,15 @@ def coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:
             seen.add(id(mention))
             group.append(mention)
     return group
+
+
+def _placed_by_pronoun(clause: Clause) -> bool:
+    """'..., and behind them a row of old pear trees': a field placed against the fields
+    before it by a pronoun is not listed with them."""
+    if not clause.mentions:
+        return False
+    head = min(h.start for h in clause.mentions[-1].heads)
+    return any(i.norm in ("them", "it", "those", "these") for i in clause.items if i.end <= head)
 
 
 def following_list(

@@ -54,9 +54,13 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
         if position and mentions:
             _apply_group_words(clause.loose, coordinated(clauses, position))
         attributes = [i for i in clause.loose if i.role in ATTRIBUTE_ROLES]
+        before = [m for c in clauses[:position] for m in c.mentions]
+        if not attributes and mentions and (described := _described_crop(clause, before)):
+            # "the cherry trees are draped in white netting with the fruit deep red and
+            # ripe": what follows still describes the cherries
+            carried = (position, described)
         if not attributes or not mentions:
             continue
-        before = [m for c in clauses[:position] for m in c.mentions]
         refined = clauses[position - 1].refined_parent if position else None
         after = [m for c in clauses[position + 1 :] for m in c.mentions]
         says_all = any(i.role == "all" for i in attributes)

@@ -240,6 +240,10 @@ def read_relations(
             continue
         if link.role == "trailer" and link.data.get("value") in ("each_side", "middle"):
             pairs = _surrounded(str(link.data["value"]), clauses, position, before, after)
+        elif (sides := _placed_by_the_middle(clauses, position)) is not None:
+            # "To the north an orchard; in the middle wheat; to the south potatoes": each
+            # side's field against the one in the middle
+            pairs = (str(link.data["value"]), sides[0], (sides[1],))
         elif (fronted := _fronted(clauses, position)) is not None:
             # "...; west of the peppers an onion plot": the field after the object
             pairs = (link.data.get("value", "next_to"), fronted[0], (fronted[1],))
@@ -401,6 +405,51 @@ _TOWARDS = {
     "towards_north": "south_of",
     "towards_south": "north_of",
 }
+
+
+def _placed_by_the_middle(
+    clauses: Sequence[Clause], position: int
+) -> tuple[Mention, Mention] | None:
+    """The field a direction opening clause ``position`` places ("To the north an
+    orchard; in the middle ...") and the field "in the middle" it is placed against, or
+    None."""
+    clause = clauses[position]
+    link = clause.link
+    if link is None or link.role != "trailer" or link.data.get("value") not in OPPOSITE:
+        return None
+    placed = _opened_by(clauses, position)
+    if placed is None:
+        return None
+    middles = [
+        c.mentions[0]
+        for c in clauses
+        if c.link is not None
+        and c.link.role == "trailer"
+        and c.link.data.get("value") == "middle"
+        and len(c.mentions) == 1
+    ]
+    if len(middles) != 1 or middles[0] is placed:
+        return None
+    return placed, middles[0]
+
+
+def _opened_by(clauses: Sequence[Clause], position: int) -> Mention | None:
+    """The one field a direction opening clause ``position`` places: in that clause ("To
+    the north an orchard") or right after a comma ("To the north, the orchard, ...")."""
+    clause = clauses[position]
+    if len(clause.mentions) == 1 and clause.items[:1] == clause.mentions[0].items[:1]:
+        return clause.mentions[0]
+    following = clauses[position + 1] if position + 1 < len(clauses) else None
+    if (
+        not clause.mentions
+        and not clause.items
+        and following is not None
+        and following.link is not None
+        and following.link.norm == ","
+        and len(following.mentions) == 1
+    ):
+        return following.mentions[0]
+    return None
 
 
 def _fronted(clauses: Sequence[Clause], position: int) -> tuple[Mention, Mention] | None:

@@ -79,6 +79,13 @@ def promote_weak_varieties(clauses: Sequence[Clause], builder: MentionBuilder) -
         ):
             neighbours.append(following.mentions[0])
         neighbours += [m for c in reversed(clauses[:position]) for m in reversed(c.mentions)]
+        if weak[0].tokens[0].capitalised:
+            # "Flint on the north side, Popcorn on the south side": a capitalised name
+            # beside a variety of its crop later in the sentence
+            for later in clauses[position + 1 :]:
+                if later.link is not None and later.link.norm in (".", "!", "?", ";"):
+                    break
+                neighbours += later.mentions[:1]
         for neighbour in neighbours:
             crops = strong_crops(neighbour)
             senses = [s for s in weak[0].senses_of("variety") if s.crop in crops]

@@ -22,8 +22,10 @@ each decides what a word is in its place, where the lexicon alone cannot:
     a young part of the plant is no young field           "the young green bunch"
 2d  a capitalised variety name right before a plot word   "the Conference block"
     names that plot's crop
+2e  "the X ones": X short for a variety named before      "the beef ones"
 3   readiness said of the past or of other things         "ready for the fleece"
 4   a stage word or cue after a negation says nothing     "not in ear yet"
+4a  a look of weather on the plants is no disease         "dusted with snow"
 5   "all" before a plain word stresses it                 "all green and even"
 5b  "every field" says something of every field           "each plot gets a headland"
 6   plots a list of crops is grown in are its own fields  "A and B in 2 plots"
@@ -65,8 +67,10 @@ def read_words(items: Sequence[Item], text: str) -> None:
     _measured_differences(items)
     _ripening_colours(items)
     _variety_before_its_plot(items)
+    _short_names_of_named_varieties(items)
     _past_and_other_readiness(items)
     _negated_looks(items)
+    _weather_on_plants(items)
     _all_as_intensifier(items)
     _every_plot(items)
     _plots_of_a_list(items)
@@ -427,6 +431,33 @@ def _variety_before_its_plot(items: Sequence[Item]) -> None:
         item.data["promoted"] = True
 
 
+def _short_names_of_named_varieties(items: Sequence[Item]) -> None:
+    """'cherry tomatoes ..., Beefsteak tomatoes ...; the beef ones have big fruit, the
+    cherry ones are still in flower': "the X one(s)", X the first word or the start of
+    a variety named before, is that variety (not a cherry orchard, not an unknown)."""
+    for index in range(1, len(items) - 1):
+        item = items[index]
+        if items[index - 1].norm != "the" or items[index + 1].norm not in ("one", "ones"):
+            continue
+        if item.role not in ("unknown", "filler", "head", "weak_variety"):
+            continue
+        word = item.norm
+        named = [
+            earlier
+            for earlier in items[: index - 1]
+            if earlier.role == "head"
+            and earlier.senses_of("variety")
+            and earlier.norm != word
+            and (
+                earlier.norm.split()[0] == word
+                or (len(word) >= 4 and earlier.norm.split()[0].startswith(word))
+            )
+        ]
+        if len({n.norm for n in named}) == 1:
+            item.senses = tuple(named[0].senses_of("variety"))
+            item.role = "head"
+
+
 def _past_and_other_readiness(items: Sequence[Item]) -> None:
     """'wire hoops ready for the fleece': not the crop's stage. 'drilled last October;
     it's May now': a month said as when the crop was sown is not the scene's time (when
@@ -513,6 +544,18 @@ def _this_one(items: Sequence[Item]) -> None:
             and (after is None or after.role not in ("plot", "head", "category"))
         ):
             number.role = "filler"
+
+
+def _weather_on_plants(items: Sequence[Item]) -> None:
+    """'January King cabbages dusted with snow': a look said of weather on the plants
+    ("dusted with", "covered in" snow, frost, dew) is no disease."""
+    for first, of, what in zip(items, items[1:], items[2:], strict=False):
+        if (
+            first.role == "health"
+            and of.norm in ("with", "in", "by")
+            and what.norm in reader_words("weather_coats")
+        ):
+            first.role = "filler"
 
 
 def _all_as_intensifier(items: Sequence[Item]) -> None:
