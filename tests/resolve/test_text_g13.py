@@ -207,3 +207,69 @@ def test_a_capitalised_weak_variety_beside_a_variety_of_its_crop() -> None:
         "Flint on the north side, Popcorn on the south side. Both maize blocks are tasseling."
     )
     assert relations(scene) == {("Flint", "north_of", ("Popcorn",))}
+
+
+def test_a_lower_and_higher_count_of_fields_said_apart() -> None:
+    assert len(recipe("some cereals, like 3 or 4 fields idk").fields) == 3
+    assert len(recipe("some veggies maybe 2 or 3 fields").fields) == 2
+
+
+def test_a_month_after_an_emoji() -> None:
+    (tomato,) = recipe("beef tomatos w/ late blight 😩 sept").fields
+    assert (tomato.health, tomato.season) == ("Ill", "Fall")
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "grape vines w/ the leaves all curled & spotty :(",
+        "one field of cabbages left by the lane, with yellow V-shaped marks at the leaf edges",
+    ],
+)
+def test_casual_and_farm_disease_cues(prompt: str) -> None:
+    assert recipe(prompt).fields[0].health == "Ill"
+
+
+def test_the_first_word_of_a_variety_named_before() -> None:
+    pinot, chardonnay = recipe(
+        "ok so pinot noir vines south of the chardonnay... the pinot has downy mildew rly bad, "
+        "the chardonnay's fine. both at harvest"
+    ).fields
+    assert (pinot.health, chardonnay.health) == ("Ill", "Healthy")
+
+
+def test_a_size_of_the_next_field_after_with() -> None:
+    red, sturon = recipe(
+        "1 ha of Red Baron onions with 1 ha of Sturon onions next to them, both ready to lift"
+    ).fields
+    assert red.geometry.area_m2 == pytest.approx(10_000, rel=0.001)
+    assert sturon.geometry.area_m2 == pytest.approx(10_000, rel=0.001)
+    # a block's own size before "with"
+    apples, _cabbage = recipe(
+        "a golden delicious block of 2 hectares with golden acre cabbages along its south side"
+    ).fields
+    assert apples.geometry.area_m2 == pytest.approx(20_000, rel=0.001)
+
+
+def test_south_of_everything() -> None:
+    scene = recipe(
+        "Granny Smith apples north of the house, Comice pears west of the apples, and a field "
+        "of Agria potatoes south of everything"
+    )
+    assert {
+        ("Agria", "south_of", ("Doyenne du Comice",)),
+        ("Agria", "south_of", ("Granny Smith",)),
+    } <= relations(scene)
+
+
+def test_a_numbered_list_after_a_colon() -> None:
+    scene = recipe("plots are: 1) Chantenay carots 2) Stutgarter onions 3) January King cabage")
+    assert [f.variety for f in scene.fields] == ["Chantenay", "Stuttgarter", "January King"]
+
+
+def test_plots_told_apart_by_side_with_sizes_between() -> None:
+    potatoes, carrots = recipe(
+        "North plot, 50 x 120 m, Fontane potatoes; south plot, 40 x 120 m, Danvers carrots."
+    ).fields
+    assert potatoes.geometry.size_m == (50.0, 120.0)
+    assert carrots.geometry.size_m == (40.0, 120.0)

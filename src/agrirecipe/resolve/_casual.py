@@ -52,7 +52,15 @@ def expand_casual(prompt: str) -> str:
     # "2 carrot fields, one nantes one chantenay": a list of members without commas
     text = _ONE_AFTER_ONE.sub(r"\g<first>, \g<second>", text)
     # "1) Roma tomatoes 2) San Marzano tomatoes": a numbered list's marks are its commas
-    text = _NUMBERED_ITEM.sub(", ", text)
+    # (the first item after a colon or at the start needs no comma: "plots are: 1) ...")
+    text = _NUMBERED_ITEM.sub(
+        lambda m: (
+            " "
+            if not text[: m.start()].rstrip() or text[: m.start()].rstrip()[-1] in ":;,"
+            else ", "
+        ),
+        text,
+    )
     # "apples north pears south": a compass word ends one placement, the next crop begins
     text = _PLACED_AFTER_PLACED.sub(r"\g<first>, ", text)
     # "1 of them 5 ha the other 3 ha": a measure ends one member, "the other" begins the next

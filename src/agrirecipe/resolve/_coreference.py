@@ -193,6 +193,8 @@ def merge_coreferences(
             and not mention.refinements
             and (is_definite or bare or bool(repeated))
             and not another_field(clauses, clause, mention)
+            # ("North plot, ..., Fontane potatoes; south plot, ...": another side, another plot)
+            and not (kept and _other_side(kept[-1], mention))
         )
         if not anaphoric:
             if first is not None and first.norm == "both" and mention.count is None:
@@ -428,6 +430,15 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
                 and clause.link.norm != "or"
             ):
                 previous.count = mention.count
+            elif clause.link is not None and clause.link.norm == "or" and previous.count is None:
+                # "some cereals, like 3 or 4 fields": the lower of the two
+                lower = [
+                    int(i.data["value"])
+                    for i in clauses[mention.clause - 1].items
+                    if i.role == "number" and float(i.data.get("value") or 0).is_integer()
+                ]
+                if len(lower) == 1 and 1 < lower[0] <= (mention.count or 0):
+                    previous.count = lower[0]
             clause.mentions = [m for m in clause.mentions if m is not mention]
             continue
         if clause is not None and previous is not None and _where_it_grows(previous, mention):
@@ -466,6 +477,21 @@ def _count_said_again(clause: Clause, previous: Mention, mention: Mention) -> bo
             or any(i.norm in reader_words("approximately") for i in clause.items)
         )
     )
+
+
+_SIDES = frozenset(
+    {"north", "south", "east", "west", "upper", "lower", "top", "bottom", "front", "back"}
+)
+
+
+def _other_side(earlier: Mention, mention: Mention) -> bool:
+    """Whether a plot of no crop is told apart from the field before it by a side word
+    ("North plot ... ; south plot ...")."""
+    if strong_crops(mention) or mention.plot is None:
+        return False
+    said = {i.norm for i in mention.items if i.norm in _SIDES}
+    before = {i.norm for i in earlier.items if i.norm in _SIDES}
+    return bool(said) and bool(before) and not said & before
 
 
 def _where_it_grows(previous: Mention, mention: Mention) -> bool:

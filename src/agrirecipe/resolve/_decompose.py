@@ -454,6 +454,10 @@ def _possessed(pending: Sequence[Item]) -> bool:
 def _pre_head_start(pending: Sequence[Item]) -> int:
     """Where the next head's own noun phrase starts inside ``pending``."""
     cut = len(pending)
+    # "1 ha of Red Baron onions with 1 ha of Sturon onions": the size is the next one's
+    # ("a block of 2 hectares with golden acre cabbages": the block's own size)
+    if cut >= 2 and pending[-1].norm == "of" and pending[-2].role == "size":
+        cut -= 2
     while cut > 0 and pending[cut - 1].role in _PRE_HEAD:
         cut -= 1
         if pending[cut].role == "number" or pending[cut].norm in ("a", "an", "the"):

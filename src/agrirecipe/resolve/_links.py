@@ -166,7 +166,14 @@ def coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:
     if said and said[0].norm in ("the", "these", "those", "both") and (group[0].count or 1) > 1:
         return group  # "2 cereal fields n 2 fruit ones, the fruit ones touching each other"
     seen = {id(group[0])}  # identity: comparing mentions field by field made this cubic
-    while index > 0 and listing(clauses[index].link) and not _placed_by_pronoun(clauses[index]):
+    # ("North plot, ..., Fontane potatoes; south plot, 40 x 120 m, ...": a semicolon
+    # ends the member before it)
+    while (
+        index > 0
+        and listing(clauses[index].link)
+        and not _placed_by_pronoun(clauses[index])
+        and _link_norm(clauses[index]) != ";"
+    ):
         previous = clauses[index - 1]
         if not previous.mentions:
             # "orchard, then potatoes": the bare comma between two members
@@ -180,6 +187,10 @@ def coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:
             seen.add(id(mention))
             group.append(mention)
     return group
+
+
+def _link_norm(clause: Clause) -> str | None:
+    return clause.link.norm if clause.link is not None else None
 
 
 def _placed_by_pronoun(clause: Clause) -> bool:

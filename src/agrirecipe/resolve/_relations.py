@@ -124,6 +124,13 @@ def read_relations(
             continue
         # each field once, where last named ("blood oranges (Moro)" names one twice)
         before = last_named([m for c in clauses[:position] for m in c.named])
+        if _of_everything(clause) and before and position - 1 == before[-1].clause:
+            # "..., and a field of Agria potatoes south of everything": of each field
+            for other in before[:-1]:
+                relations.extend(
+                    field_relations(link.data["value"], before[-1], (other,), members, link, trace)
+                )
+            continue
         # a pronoun's clause ("north of it") names no field of its own after the word
         after = [
             m for c in clauses[position:] for m in (c.named if c is not clause else own_mentions(c))
@@ -405,6 +412,27 @@ _TOWARDS = {
     "towards_north": "south_of",
     "towards_south": "north_of",
 }
+
+
+#: What "everything" a field is placed against may be said as ("south of all the rest").
+_EVERYTHING = frozenset(
+    {
+        "everything",
+        "everything else",
+        "all the rest",
+        "the rest",
+        "all the others",
+        "the others",
+        "all of them",
+        "all the other fields",
+        "all the other plots",
+    }
+)
+
+
+def _of_everything(clause: Clause) -> bool:
+    """Whether a relation's clause names every other field ("south of everything")."""
+    return not clause.mentions and " ".join(i.norm for i in clause.items) in _EVERYTHING
 
 
 def _placed_by_the_middle(

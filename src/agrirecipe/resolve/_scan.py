@@ -233,12 +233,17 @@ def _attributive(item: Item, previous: Item | None, following: Item | None) -> b
 
 
 def _alone(previous: Item | None, following: Item | None) -> bool:
-    """Between separators (or at the end): ", may" is a month, "may I" is not."""
+    """Between separators (or at the end): ", may" is a month, "may I" is not; an emoji
+    or other mark with no letters parts words too ("late blight 😩 sept")."""
     return (
         previous is not None
-        and previous.has("separator")
-        and (following is None or following.has("separator"))
+        and (previous.has("separator") or _no_letters(previous))
+        and (following is None or following.has("separator") or _no_letters(following))
     )
+
+
+def _no_letters(item: Item) -> bool:
+    return not item.senses and not any(c.isalnum() for c in item.norm)
 
 
 def _role(item: Item, previous: Item | None, cues: set[str], *, alone: bool = False) -> str:

@@ -22,7 +22,7 @@ each decides what a word is in its place, where the lexicon alone cannot:
     a young part of the plant is no young field           "the young green bunch"
 2d  a capitalised variety name right before a plot word   "the Conference block"
     names that plot's crop
-2e  "the X ones": X short for a variety named before      "the beef ones"
+2e  "the X ones": X short for a variety named before      "the beef ones", "the pinot"
 3   readiness said of the past or of other things         "ready for the fleece"
 4   a stage word or cue after a negation says nothing     "not in ear yet"
 4a  a look of weather on the plants is no disease         "dusted with snow"
@@ -434,14 +434,18 @@ def _variety_before_its_plot(items: Sequence[Item]) -> None:
 def _short_names_of_named_varieties(items: Sequence[Item]) -> None:
     """'cherry tomatoes ..., Beefsteak tomatoes ...; the beef ones have big fruit, the
     cherry ones are still in flower': "the X one(s)", X the first word or the start of
-    a variety named before, is that variety (not a cherry orchard, not an unknown)."""
-    for index in range(1, len(items) - 1):
+    a variety named before, is that variety (not a cherry orchard, not an unknown);
+    "pinot noir vines ...; the pinot has downy mildew": an unknown "the X", X the first
+    word of a variety's name said before, too."""
+    for index in range(1, len(items)):
         item = items[index]
-        if items[index - 1].norm != "the" or items[index + 1].norm not in ("one", "ones"):
+        ones = index + 1 < len(items) and items[index + 1].norm in ("one", "ones")
+        if items[index - 1].norm != "the" or not (ones or item.role == "unknown"):
             continue
         if item.role not in ("unknown", "filler", "head", "weak_variety"):
             continue
         word = item.norm
+        # ("the pinot has downy mildew" after "pinot noir vines": a name's first word)
         named = [
             earlier
             for earlier in items[: index - 1]
@@ -449,8 +453,8 @@ def _short_names_of_named_varieties(items: Sequence[Item]) -> None:
             and earlier.senses_of("variety")
             and earlier.norm != word
             and (
-                earlier.norm.split()[0] == word
-                or (len(word) >= 4 and earlier.norm.split()[0].startswith(word))
+                (earlier.norm.split()[0] == word and len(earlier.norm.split()) > 1)
+                or (ones and len(word) >= 4 and earlier.norm.split()[0].startswith(word))
             )
         ]
         if len({n.norm for n in named}) == 1:
