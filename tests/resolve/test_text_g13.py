@@ -273,3 +273,35 @@ def test_plots_told_apart_by_side_with_sizes_between() -> None:
     ).fields
     assert potatoes.geometry.size_m == (50.0, 120.0)
     assert carrots.geometry.size_m == (40.0, 120.0)
+
+
+def test_a_variety_with_an_article_after_a_relation_is_a_listed_member() -> None:
+    scene = recipe(
+        "Two wheat plots for spectral calibration: durum wheat north of a winter wheat plot. "
+        "Both 50 x 20 m."
+    )
+    assert [f.variety for f in scene.fields] == ["Durum", "Winter Wheat"]
+    assert relations(scene) == {("Durum", "north_of", ("Winter Wheat",))}
+
+
+def test_listed_members_named_again_around_a_relation() -> None:
+    scene = recipe(
+        "Two fruit tree blocks: apples at 12 ft x 3 ft, cherries at 16 ft x 8 ft (row x tree), "
+        "apples north of cherries, 10 rows each."
+    )
+    assert [f.crop for f in scene.fields] == ["Apple", "Cherry"]
+    assert {r.kind for r in scene.relations} == {"north_of"}
+
+
+def test_a_list_as_counted_plots() -> None:
+    scene = recipe("onions, carrots and lettuce as three plots, all three with some disease")
+    assert [f.crop for f in scene.fields] == ["Onion", "Carrot", "Lettuce"]
+
+
+def test_a_bare_plot_noun_named_again_is_the_field_of_that_noun() -> None:
+    banana, orange = recipe(
+        "a banana plot at 3 x 3 m and an orange grove at 7 x 4 m next to it. Banana plot 50 x "
+        "50 m, grove 100 x 60 m."
+    ).fields
+    assert banana.geometry.size_m == (50.0, 50.0)
+    assert orange.geometry.size_m == (100.0, 60.0)

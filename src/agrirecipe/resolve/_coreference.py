@@ -173,10 +173,13 @@ def merge_coreferences(
         ):
             # "...; maize north of potatoes": a field named again, placed against another
             # named again
+            # ("two fruit tree blocks: apples ..., cherries ..., apples north of cherries":
+            # a listed member too)
             repeated = [
-                k
+                m
                 for k in reversed(kept)
-                if strong_crops(k) == own_crops and k.count is None and not k.refinements
+                for m in (k.refinements[::-1] or [k])
+                if strong_crops(m) == own_crops and m.count is None and not m.refinements
             ][:1]
         # "Valencia in the lower grove and Moro in the upper grove; the upper grove has
         # ...": the one field whose plot the same word set apart
@@ -215,6 +218,12 @@ def merge_coreferences(
             None,
         )
         member = member or same_plot
+        if (
+            member is None
+            and repeated
+            and any(repeated[0] is r for k in kept for r in k.refinements)
+        ):
+            member = repeated[0]  # "..., apples north of cherries": the listed cherries
         host = (
             _counted_host(builder, kept, mention)
             if (is_definite or _placed_first(clauses, clause))
@@ -246,6 +255,19 @@ def merge_coreferences(
             run.append(earlier)
         if member is not None:
             run = [member]
+        if (
+            len(run) > 1
+            and not own
+            and mention.plot is not None
+            and not mention.plot["plural"]
+            and not any(i.role == "zone" for i in mention.items)  # ("Middle terrace: ...")
+        ):
+            # "a banana plot ... and an orange grove ... Banana plot 50 x 50 m, grove 100 x
+            # 60 m": the one field of that plot noun
+            noun = mention.plot.get("noun")
+            same_noun = [m for m in run if m.plot is not None and m.plot.get("noun") == noun]
+            if len(same_noun) == 1:
+                run = same_noun
         if summary and is_definite and len(run) != mention.count:
             # "a strip of Jalapeños between the two groves": the two earlier fields that
             # are groves, whatever was named in between

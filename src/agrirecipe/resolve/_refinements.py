@@ -470,7 +470,12 @@ def _names_varieties_of(sub: Mention, parent: Mention) -> bool:
     # the crop the members name decides which reading the parent has
     common = crops & {c for c, _ in named}
     return (
-        (sub.count is None or (sub.count == 1 and pronoun_one(sub)))
+        (
+            sub.count is None
+            or (sub.count == 1 and pronoun_one(sub))
+            # ("two wheat plots: durum wheat north of a winter wheat plot")
+            or (sub.count == 1 and any(i.norm in ("a", "an") for i in sub.items))
+        )
         and len(common) == 1
         and bool(named)
         and {c for c, _ in named} <= crops

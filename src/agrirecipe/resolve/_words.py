@@ -688,9 +688,10 @@ def _plot_words_of_other_things(items: Sequence[Item]) -> None:
 
 
 def _plots_of_a_list(items: Sequence[Item]) -> None:
-    """'cabbages and onions in 2 plots', 'Sturon and Walla Walla onions in adjacent
-    6 x 50 m strips': plots a list of crops is grown in are the list's own fields, one
-    each, not more fields (the plot word and its count are read as said of them)."""
+    """'cabbages and onions in 2 plots', 'onions, carrots and lettuce as three plots',
+    'Sturon and Walla Walla onions in adjacent 6 x 50 m strips': plots a list of crops is
+    grown in are the list's own fields, one each, not more fields (the plot word and its
+    count are read as said of them)."""
     for index, item in enumerate(items):
         # "onions and cabbages, 2 plots, ...": the count of plots said after a comma
         summary = (
@@ -699,7 +700,7 @@ def _plots_of_a_list(items: Sequence[Item]) -> None:
             and index + 1 < len(items)
             and items[index + 1].role == "number"
         )
-        if (item.norm not in ("in", "on", "into") and not summary) or index == 0:
+        if (item.norm not in ("in", "on", "into", "as") and not summary) or index == 0:
             continue
         cursor, between = index + 1, list[Item]()
         while (
