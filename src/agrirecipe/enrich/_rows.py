@@ -300,6 +300,13 @@ def plan_rows(
         width = usable_w + 2 * headland
     if usable_l is not None:
         length = usable_l + 2 * headland
+    if area_m2 is not None and size_m is None and (usable_w is None) != (usable_l is None):
+        # "30 ridges on 75 cm centres, ..., 0.5 acre in total": the area said is the
+        # whole field's, headland included; the side the rows do not set gives way
+        if usable_w is not None:
+            length = area_m2 / width
+        else:
+            width = area_m2 / length
     if width - 2 * headland - bed_span < 0 or length - 2 * headland < 0:
         raise _error(
             label,

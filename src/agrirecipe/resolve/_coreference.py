@@ -163,6 +163,7 @@ def merge_coreferences(
         ]
         if repeated and _related_to(clauses, clause, repeated[0]):
             repeated = []  # "Valencia oranges next to Valencia oranges": two fields
+        placed_again: Mention | None = None
         if (
             not repeated
             and clause.index - 1 in merged
@@ -181,6 +182,8 @@ def merge_coreferences(
                 for m in (k.refinements[::-1] or [k])
                 if strong_crops(m) == own_crops and m.count is None and not m.refinements
             ][:1]
+            if repeated and _compatible(builder, repeated[0], mention):
+                placed_again = repeated[0]
         # "Valencia in the lower grove and Moro in the upper grove; the upper grove has
         # ...": the one field whose plot the same word set apart
         same_plot = (
@@ -218,12 +221,10 @@ def merge_coreferences(
             None,
         )
         member = member or same_plot
-        if (
-            member is None
-            and repeated
-            and any(repeated[0] is r for k in kept for r in k.refinements)
-        ):
-            member = repeated[0]  # "..., apples north of cherries": the listed cherries
+        if member is None and placed_again is not None:
+            # "..., apples north of cherries", "..., maize east of potatoes": the field
+            # named again, past other fields named since
+            member = placed_again
         host = (
             _counted_host(builder, kept, mention)
             if (is_definite or _placed_first(clauses, clause))

@@ -4,7 +4,8 @@
 Chardonnay, ..., Cabernet", "onions!!! just 1 big field of onions": a plot word or a
 crop named before the fields that say what it holds is their heading (or title), not
 one more field. :func:`drop_list_headings` drops such mentions once back-references
-are merged.
+are merged; :func:`drop_counted_summaries` drops "Two blocks for drone flights." when
+the next sentences name exactly two fields.
 """
 
 from __future__ import annotations
@@ -15,7 +16,7 @@ from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._structure import names_a_variety, strong_crops
 from agrirecipe.resolve._words import SENTENCE_MARKS
 
-__all__ = ["drop_joint_headings", "drop_list_headings"]
+__all__ = ["drop_counted_summaries", "drop_joint_headings", "drop_list_headings"]
 
 
 def _heads_its_list(mention: Mention, later: Sequence[Mention]) -> bool:
@@ -233,3 +234,40 @@ def _joint_headings(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> l
 
 def _ends_sentence(clause: Clause) -> bool:
     return clause.link is not None and clause.link.norm in SENTENCE_MARKS
+
+
+def drop_counted_summaries(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
+    """'Two blocks for drone flights. Block A: Gala apples, ... Block B, south of A:
+    Conference pears, ...': a counted plot of no crop, alone in its sentence, followed
+    by as many fields of named crops in the sentences after it as it still lacks
+    members, says what they are; it is not one more field. Return the fields left."""
+    if len(mentions) < 2:
+        return mentions
+    first, later = mentions[0], mentions[1:]
+    members = list({id(r): r for r in first.refinements}.values())
+    if (
+        first.has_crop
+        or first.category is not None
+        or first.plot is None
+        or (first.count or 1) < 2
+        or first.count != len(members) + len(later)
+        or not all(strong_crops(m) and (m.count or 1) == 1 and not m.refinements for m in later)
+        or not all(strong_crops(m) for m in members)
+    ):
+        return mentions
+    ends = next(
+        (
+            c
+            for c in clauses[first.clause + 1 :]
+            if c.link is not None and c.link.norm in SENTENCE_MARKS
+        ),
+        None,
+    )
+    if ends is None or any(m.clause < ends.index for m in (*members, *later)):
+        return mentions
+    if not members:
+        return later
+    for mention in later:
+        mention.is_refinement = True
+        first.refinements.append(mention)
+    return [first]

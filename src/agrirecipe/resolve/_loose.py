@@ -245,7 +245,7 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
         # "Durondeau and Bartlett pears in neighbouring blocks, 3.5 m x 1 m": measures
         # said after the plots a list is grown in are each plot's
         in_plots = len(targets) > 1 and after_list_plots(clauses, position)
-        for target in targets if shared_by_list or shared_noun or in_plots else targets[-1:]:
+        for target in targets if shared_by_list or shared_noun or in_plots else targets[:1]:
             target.items.extend(geometry)
     return scene
 

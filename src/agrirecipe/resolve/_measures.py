@@ -245,7 +245,9 @@ def shared_by_all_after(clauses: Sequence[Clause], position: int) -> bool:
         if clause.link.norm in SENTENCE_MARKS:
             return False  # "..., 20 rows; all rows 40 m": a new sentence for every field
         if not clause.items or any(
-            i.role not in ("geometry", "filler", "all") for i in clause.items
+            i.role not in ("geometry", "filler", "all")
+            and not (i.role == "number" and i.norm in ("a", "an"))  # "and a 6 m headland"
+            for i in clause.items
         ):
             return False
         if any(i.role == "all" for i in clause.items):

@@ -33,7 +33,8 @@ step  pass                                        module (data)
       (which fields a measure is said of)         ``_measures``
 12    fields of each mention, their attributes    ``_fields``
       (stated, else visual cues), sizes, rows
-13    relations between fields; zone order        ``_relations``, ``_zones``
+13    relations between fields; zone order        ``_relations``, ``_landmarks``,
+                                                  ``_links``, ``_zones``
 ====  ==========================================  ===============================
 """
 
@@ -58,7 +59,11 @@ from agrirecipe.resolve._fields import (
     give_respectively,
 )
 from agrirecipe.resolve._geometry import find_geometry, hoist_counted_crops
-from agrirecipe.resolve._headings import drop_joint_headings, drop_list_headings
+from agrirecipe.resolve._headings import (
+    drop_counted_summaries,
+    drop_joint_headings,
+    drop_list_headings,
+)
 from agrirecipe.resolve._intent import (
     Hemisphere,
     ResolveContext,
@@ -220,6 +225,7 @@ class PromptReader(FieldReading):
         mentions = merge_coreferences(clauses, mentions, builder)
         mentions = merge_appositive_plots(clauses, mentions)
         mentions = drop_list_headings(clauses, mentions)
+        mentions = drop_counted_summaries(clauses, mentions)
         apply_each_side(clauses)
         for clause in clauses:
             # "... and there's a duck pond in the middle": the zone of scenery, not a field

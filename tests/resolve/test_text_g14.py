@@ -1,0 +1,90 @@
+"""Text of blind set g14 (issue 8), first fixes: inches said "in" before a spacing word,
+a counted plot of no crop whose members are named in the sentences after it, a field
+named again past another, "in both" after "and a 6 m headland", an area said beside
+row counts, spacings said of the nearest field, "Vines at 2.2 m row spacing" and
+"along the east side of"."""
+
+from __future__ import annotations
+
+import pytest
+
+from agrirecipe import generate
+from agrirecipe.recipe import SceneRecipe
+
+
+def recipe(prompt: str) -> SceneRecipe:
+    return generate(prompt, resolver="hybrid").recipe
+
+
+def test_inches_said_in_before_a_spacing_word() -> None:
+    (beds,) = recipe(
+        "Albion strawberry beds on 60-inch centers, 2 rows/bed, 12 in plant spacing, 12 beds, "
+        "rows 200 ft long running north-south."
+    ).fields
+    assert beds.agronomy.in_row_spacing_m == pytest.approx(0.3048)
+    assert beds._grid()[0] == 12
+
+
+def test_a_counted_plot_whose_members_are_named_in_later_sentences() -> None:
+    scene = recipe(
+        "Two blocks for drone flights. Block A: Gala apples, 8 rows, 3.5 m between rows, trees "
+        "at 1 m, rows 60 m long. Block B, directly south of A: Conference pears, 6 rows at "
+        "3.5 m with 1.25 m between trees."
+    )
+    assert [f.crop for f in scene.fields] == ["Apple", "Pear"]
+
+
+def test_a_field_named_again_past_another_and_measures_in_both() -> None:
+    potatoes, maize = recipe(
+        "Robot navigation course: potatoes (20 rows at 75 cm) and maize (20 rows at 75 cm), "
+        "80 m rows and a 6 m headland in both, maize east of potatoes."
+    ).fields
+    assert [r.kind for r in recipe("potatoes and maize, maize east of potatoes").relations] == [
+        "east_of"
+    ]
+    for field in (potatoes, maize):
+        assert "row_length" in field.stated and field.geometry.headland_m == 6.0
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "Potato ridges: 30 ridges on 75 cm centres, one row per ridge, 0.5 acre in total.",
+        "half an acre of Russet Burbank potatoes in flower, 48 rows, 36-inch rows",
+    ],
+)
+def test_an_area_said_beside_row_counts_is_the_whole_field(prompt: str) -> None:
+    (field,) = recipe(prompt).fields
+    assert field.geometry.area_m2 == pytest.approx(2023.43, rel=0.005)
+
+
+def test_spacings_after_a_list_go_to_the_nearest_field() -> None:
+    banana, citrus = recipe(
+        "a banana block planted 3 m x 3 m and a citrus block with rows 6 m apart and trees "
+        "every 3 m, citrus north of the bananas"
+    ).fields
+    assert (citrus.agronomy.row_spacing_m, citrus.agronomy.in_row_spacing_m) == (6.0, 3.0)
+    assert (banana.agronomy.row_spacing_m, banana.agronomy.in_row_spacing_m) == (3.0, 3.0)
+
+
+def test_the_rows_spacing_said_of_the_plants() -> None:
+    vines, apples = recipe(
+        "Spätburgunder block west of a Royal Gala block. Vines at 2.2 m row spacing with 1 m "
+        "between vines, apples on 3.4 m rows with a tree every 0.9 m."
+    ).fields
+    assert (vines.agronomy.row_spacing_m, vines.agronomy.in_row_spacing_m) == (2.2, 1.0)
+    assert (apples.agronomy.row_spacing_m, apples.agronomy.in_row_spacing_m) == (3.4, 0.9)
+
+
+def test_along_the_east_side_of() -> None:
+    scene = recipe(
+        "Golden Acre cabbage strip, 8 rows at 60 cm, along the east side of a Golden Delicious "
+        "block of 12 rows at 3.5 m."
+    )
+    assert [r.kind for r in scene.relations] == ["east_of"]
+    # "on the north side of it": of the hedge, not of a field
+    hedge = recipe(
+        "Two fields split by a hawthorn hedge, pears on the north side of it and cabbages on "
+        "the south side."
+    )
+    assert len(hedge.fields) == 2
