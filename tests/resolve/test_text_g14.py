@@ -88,3 +88,59 @@ def test_along_the_east_side_of() -> None:
         "the south side."
     )
     assert len(hedge.fields) == 2
+
+
+@pytest.mark.parametrize(
+    ("prompt", "crops"),
+    [
+        (
+            "Vendimia in Chile, end of March: the Cabernet rows are heavy with ripe black grapes "
+            "and a crew with yellow bins is picking.",
+            ["Grape"],
+        ),
+        (
+            "A Navel grove I photographed in Valencia province in January: trees loaded with "
+            "ripe fruit.",
+            ["Orange"],
+        ),
+        (
+            "a field of flint corn with just a few leaves up, and beyond it spring wheat in ear. "
+            "A hay wagon on the lane.",
+            ["Maize", "Wheat"],
+        ),
+        (
+            "strawberrys after all that rain, loads of rotten fruit with grey fuzz on it, straw "
+            "between the rows",
+            ["Strawberry"],
+        ),
+        (
+            "Onions in neat rows with their green tops standing up, then suddenly a patch where "
+            "everything has gone yellow and collapsed: downy mildew.",
+            ["Onion"],
+        ),
+        (
+            "Bananas from my trip to Tenerife! A plantation of banana plants behind an old stone "
+            "wall, most of them in flower with big purple buds hanging down.",
+            ["Banana"],
+        ),
+    ],
+)
+def test_photo_words_that_are_no_second_field(prompt: str, crops: list[str]) -> None:
+    assert [f.crop for f in recipe(prompt).fields] == crops
+
+
+def test_what_the_no_field_words_still_say() -> None:
+    (strawberries,) = recipe("strawberries, loads of rotten fruit with grey fuzz on it").fields
+    assert strawberries.health == "Ill"
+    (onions,) = recipe(
+        "Onions in neat rows, then a patch where everything has downy mildew."
+    ).fields
+    assert onions.health == "Ill"
+    # a title with measures of its own is a field ("cabbage: 0.75 m rows ... A Red Express
+    # plot to the west of it")
+    assert (
+        len(recipe("cabbage: 0.75 m rows, 64 rows. A Red Express plot to the west of it.").fields)
+        == 2
+    )
+    # lots of a category after a field, not described, still asks for fields
+    assert len(recipe("some apples and lots of fruit trees").fields) >= 2

@@ -464,6 +464,15 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
                     previous.count = lower[0]
             clause.mentions = [m for m in clause.mentions if m is not mention]
             continue
+        if (
+            clause is not None
+            and previous is not None
+            and _a_part_where(clauses, previous, mention)
+        ):
+            # "Onions in neat rows ..., then suddenly a patch where everything has gone
+            # yellow": a part of the field just named, where something happens
+            clause.mentions = [m for m in clause.mentions if m is not mention]
+            continue
         if clause is not None and previous is not None and _where_it_grows(previous, mention):
             # "Bibb lettuce transplants ..., in a field bordered by a ditch": the field the
             # crop just named grows in, not another field
@@ -515,6 +524,24 @@ def _other_side(earlier: Mention, mention: Mention) -> bool:
     said = {i.norm for i in mention.items if i.norm in _SIDES}
     before = {i.norm for i in earlier.items if i.norm in _SIDES}
     return bool(said) and bool(before) and not said & before
+
+
+def _a_part_where(clauses: Sequence[Clause], previous: Mention, mention: Mention) -> bool:
+    """Whether ``mention`` is a plot of no crop ("a patch", "one corner") said right
+    before "where ..." after a field of a crop: a part of that field."""
+    following = clauses[mention.clause + 1] if mention.clause + 1 < len(clauses) else None
+    return (
+        previous.has_crop
+        and not mention.has_crop
+        and mention.category is None
+        and mention.plot is not None
+        and (mention.count or 1) == 1
+        and not mention.refinements
+        and previous.clause < mention.clause
+        and following is not None
+        and following.link is not None
+        and following.link.norm in ("where", "in which")
+    )
 
 
 def _where_it_grows(previous: Mention, mention: Mention) -> bool:

@@ -100,6 +100,7 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
         elif listed and _continues_with(clauses[position - 1], mention):
             # "apples with scab spots on the leaves and corky fruit": still the apples'
             listed, described = False, True
+        vague = any(i.role == "quantity" for i in mention.items)  # "loads of", "lots of"
         # "the fruit ones": the fields of fruit named before, not their fruit
         # (not "the Beefsteak ones have big fruit": the "ones" of another mention)
         ordered = sorted(mention.items, key=lambda i: i.start)
@@ -114,8 +115,14 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
                 mention.count is not None
                 and not (definite or fraction or one_described or predicate)
                 and not _a_different(mention)
+                and not (vague and others_before and described)
             )
-            or (mention.quantity is not None and not (definite or predicate))  # "a lot of"
+            # "a lot of" fruit asks for fields ("loads of rotten fruit with grey fuzz"
+            # after the strawberries is theirs)
+            or (
+                mention.quantity is not None
+                and not (definite or predicate or (others_before and described and vague))
+            )
             or mention.other
             or own_size
             or (listed and not (definite or predicate))
@@ -229,7 +236,7 @@ def _dissolve_described_after_of(clause: Clause, words: frozenset[str]) -> list[
         mention, owner = clause.mentions[index], clause.mentions[index - 1]
         if (
             not (_ends_with_of(owner) or _has_before_head(mention))
-            or not all(h.norm in words for h in mention.heads)
+            or not (all(h.norm in words for h in mention.heads) or _coloured_fruit(owner, mention))
             or mention.count is not None
             or mention.quantity is not None
             or mention.other
@@ -242,6 +249,25 @@ def _dissolve_described_after_of(clause: Clause, words: frozenset[str]) -> list[
         del clause.mentions[index]
         dissolved.append(mention.text)
     return dissolved
+
+
+def _coloured_fruit(owner: Mention, mention: Mention) -> bool:
+    """ "the Cabernet rows are heavy with ripe black grapes": a colour and the crop's
+    fruit ("black grapes" also names a variety) after a variety of that crop is its
+    fruit, not another field."""
+    return (
+        len(mention.heads) == 1
+        and len(mention.heads[0].norm.split()) == 2
+        and mention.heads[0].norm.split()[0] in _colours()
+        and names_a_variety(owner)
+        and bool(strong_crops(mention))
+        and strong_crops(mention) == strong_crops(owner)
+    )
+
+
+@functools.lru_cache(maxsize=1)
+def _colours() -> frozenset[str]:
+    return frozenset(str(word) for word in vocabulary()["reader_words"]["colours"])
 
 
 def _has_before_head(mention: Mention) -> bool:

@@ -16,7 +16,12 @@ from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._structure import names_a_variety, strong_crops
 from agrirecipe.resolve._words import SENTENCE_MARKS
 
-__all__ = ["drop_counted_summaries", "drop_joint_headings", "drop_list_headings"]
+__all__ = [
+    "drop_counted_summaries",
+    "drop_joint_headings",
+    "drop_list_headings",
+    "drop_titles",
+]
 
 
 def _heads_its_list(mention: Mention, later: Sequence[Mention]) -> bool:
@@ -271,3 +276,44 @@ def drop_counted_summaries(clauses: Sequence[Clause], mentions: list[Mention]) -
         mention.is_refinement = True
         first.refinements.append(mention)
     return [first]
+
+
+def drop_titles(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
+    """'Bananas from my trip to Tenerife! A plantation of banana plants behind an old
+    stone wall, ...': a crop named alone, with no plot or count, in a first sentence of
+    its own, then one field of that crop in the next, is that field's title. Its words
+    go to the field. Return the fields left."""
+    if len(mentions) < 2:
+        return mentions
+    title, field = mentions[0], mentions[1]
+    crops = strong_crops(title)
+    if (
+        not crops
+        or title.plot is not None
+        or title.count is not None
+        or title.refinements
+        or names_a_variety(title)
+        or strong_crops(field) != crops
+        or any(strong_crops(m) & crops for m in mentions[2:])
+    ):
+        return mentions
+    ends = next(
+        (
+            c
+            for c in clauses[title.clause + 1 :]
+            if c.link is not None and c.link.norm in SENTENCE_MARKS
+        ),
+        None,
+    )
+    if ends is None or field.clause < ends.index:
+        return mentions
+    said = {i.role for c in clauses[title.clause : ends.index] for i in c.items}
+    if said & {"geometry", "size", "stage", "health", "season", "month", "cue", "relation"}:
+        return mentions  # ("cabbage: 0.75 m rows, ... A Red Express plot west of it")
+    after_end = [c for c in clauses[ends.index :] if c.mentions]
+    if not after_end or after_end[0].mentions[0] is not field:
+        return mentions
+    field.items.extend(i for i in title.items if i not in title.heads)
+    for clause in clauses:
+        clause.mentions = [field if m is title else m for m in clause.mentions]
+    return mentions[1:]

@@ -63,6 +63,7 @@ from agrirecipe.resolve._headings import (
     drop_counted_summaries,
     drop_joint_headings,
     drop_list_headings,
+    drop_titles,
 )
 from agrirecipe.resolve._intent import (
     Hemisphere,
@@ -226,6 +227,7 @@ class PromptReader(FieldReading):
         mentions = merge_appositive_plots(clauses, mentions)
         mentions = drop_list_headings(clauses, mentions)
         mentions = drop_counted_summaries(clauses, mentions)
+        mentions = drop_titles(clauses, mentions)
         apply_each_side(clauses)
         for clause in clauses:
             # "... and there's a duck pond in the middle": the zone of scenery, not a field
