@@ -144,3 +144,18 @@ def test_what_the_no_field_words_still_say() -> None:
     )
     # lots of a category after a field, not described, still asks for fields
     assert len(recipe("some apples and lots of fruit trees").fields) >= 2
+
+
+def test_a_disease_on_the_fruit_is_the_fields() -> None:
+    (strawberries,) = recipe(
+        "The Malling Centenary strawberries in the walled garden have grey mould on the fruit. "
+        "Mid-June."
+    ).fields
+    assert strawberries.health == "Ill"
+
+
+def test_a_cue_of_its_own_beats_a_stage_lent_by_a_list() -> None:
+    wheat, maize, _tomatoes = recipe(
+        "In August the farm's got ripe wheat, maize in tassel and a patch of tomatoes."
+    ).fields
+    assert (wheat.stage, maize.stage) == ("Maturation", "Reproductive")

@@ -235,7 +235,7 @@ def _dissolve_described_after_of(clause: Clause, words: frozenset[str]) -> list[
     for index in range(len(clause.mentions) - 1, 0, -1):
         mention, owner = clause.mentions[index], clause.mentions[index - 1]
         if (
-            not (_ends_with_of(owner) or _has_before_head(mention))
+            not (_ends_with_of(owner) or _has_before_head(mention) or _a_look_on(owner))
             or not (all(h.norm in words for h in mention.heads) or _coloured_fruit(owner, mention))
             or mention.count is not None
             or mention.quantity is not None
@@ -249,6 +249,17 @@ def _dissolve_described_after_of(clause: Clause, words: frozenset[str]) -> list[
         del clause.mentions[index]
         dissolved.append(mention.text)
     return dissolved
+
+
+def _a_look_on(owner: Mention) -> bool:
+    """ "strawberries ... have grey mould on the fruit": the mention ends with a disease
+    or a look and "on"/"in", so the plant part after it is where that shows."""
+    ordered = sorted(owner.items, key=lambda i: i.start)
+    return (
+        len(ordered) >= 2
+        and ordered[-1].norm in ("on", "in", "over", "across", "along")
+        and ordered[-2].role in ("health", "cue")
+    )
 
 
 def _coloured_fruit(owner: Mention, mention: Mention) -> bool:

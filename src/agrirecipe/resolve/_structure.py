@@ -374,7 +374,8 @@ def share_leading_attributes(clauses: Sequence[Clause]) -> None:
             mention = following.mentions[0]
             if not following.items or following.items[0] is not mention.heads[0]:
                 break
-            own = {i.role for i in mention.items}
+            # ("ripe wheat, maize in tassel": a cue of its own says its stage)
+            own = {attribute_of(i) for i in mention.items}
             lent = [i for i in leading if i.role not in own]
             mention.items.extend(lent)
             mention.borrowed.extend(lent)
