@@ -159,3 +159,40 @@ def test_a_cue_of_its_own_beats_a_stage_lent_by_a_list() -> None:
         "In August the farm's got ripe wheat, maize in tassel and a patch of tomatoes."
     ).fields
     assert (wheat.stage, maize.stage) == ("Maturation", "Reproductive")
+
+
+@pytest.mark.parametrize(
+    ("prompt", "stages"),
+    [
+        (
+            "a strawberry field on raised beds, and north of it a potato field where the plants "
+            "have only just come through.",
+            ["Reproductive", "Vegetative"],
+        ),
+        (
+            "Over the fence in June: a field of flint corn with just a few leaves up.",
+            ["Vegetative"],
+        ),
+        (
+            "strawberries (sonata) + strawberries (albion), 20x50m each, flowering, june",
+            ["Reproductive", "Reproductive"],
+        ),
+    ],
+)
+def test_g14_stage_cues(prompt: str, stages: list[str]) -> None:
+    assert [f.stage for f in recipe(prompt).fields][-len(stages) :] == stages
+
+
+def test_a_months_weather_says_the_month() -> None:
+    scene = recipe(
+        "From the terrace: blood oranges on the lower terrace, Valencia Late on the upper one, "
+        "both heavy with fully coloured fruit. March sunshine and a stone farmhouse."
+    )
+    assert [(f.stage, f.season) for f in scene.fields] == [("Maturation", "Spring")] * 2
+    # a lowercase "may" before rain is no month
+    assert recipe("it may rain on the apples").fields[0].season != "Spring"
+
+
+def test_a_list_counted_again_with_its_plots() -> None:
+    scene = recipe("butterhead + lollo rosso + romaine, 3 lettuce plots, just emerged, april")
+    assert [f.variety for f in scene.fields] == ["Butterhead", "Lollo Rosso", "Romaine"]

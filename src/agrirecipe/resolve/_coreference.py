@@ -14,7 +14,7 @@ import itertools
 from collections.abc import Sequence
 
 from agrirecipe.resolve._decompose import Clause, Mention, MentionBuilder
-from agrirecipe.resolve._links import ARTICLES
+from agrirecipe.resolve._links import ARTICLES, coordinated
 from agrirecipe.resolve._structure import (
     EACH,
     another_field,
@@ -439,6 +439,17 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
                 previous.plot = mention.plot
             clause.mentions = [m for m in clause.mentions if m is not mention]
             continue
+        if clause is not None and (listed := _listed_again(clauses, clause, mention)):
+            # "butterhead + lollo rosso + romaine, 3 lettuce plots": the list counted
+            # again, with the plot its members are grown in
+            for member in listed:
+                member.items.extend(
+                    i for i in mention.items if i.role not in ("number", "head", "plot")
+                )
+                if member.plot is None:
+                    member.plot = mention.plot
+            clause.mentions = [m for m in clause.mentions if m is not mention]
+            continue
         if (
             clause is not None
             and previous is not None
@@ -524,6 +535,31 @@ def _other_side(earlier: Mention, mention: Mention) -> bool:
     said = {i.norm for i in mention.items if i.norm in _SIDES}
     before = {i.norm for i in earlier.items if i.norm in _SIDES}
     return bool(said) and bool(before) and not said & before
+
+
+def _listed_again(clauses: Sequence[Clause], clause: Clause, mention: Mention) -> list[Mention]:
+    """The list just before ``clause`` that ``mention`` counts again ("A, B and C, 3
+    lettuce plots": three members, each of the mention's crop), or []."""
+    if (
+        clause.link is None
+        or clause.link.norm != ","
+        or mention.count is None
+        or mention.count < 2
+        or mention.plot is None
+        or not mention.plot["plural"]
+        or mention.refinements
+        or not all(i.role in ("number", "head", "plot", "filler") for i in clause.items)
+    ):
+        return []
+    crops = strong_crops(mention)
+    group = coordinated(clauses, clause.index)
+    if (
+        len(group) != mention.count
+        or not crops
+        or not all(strong_crops(m) and strong_crops(m) <= crops and m.count is None for m in group)
+    ):
+        return []
+    return group
 
 
 def _a_part_where(clauses: Sequence[Clause], previous: Mention, mention: Mention) -> bool:

@@ -166,6 +166,7 @@ def coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:
     if said and said[0].norm in ("the", "these", "those", "both") and (group[0].count or 1) > 1:
         return group  # "2 cereal fields n 2 fruit ones, the fruit ones touching each other"
     seen = {id(group[0])}  # identity: comparing mentions field by field made this cubic
+    index = _before_a_bracket(clauses, index, group, seen)
     # ("North plot, ..., Fontane potatoes; south plot, 40 x 120 m, ...": a semicolon
     # ends the member before it)
     while (
@@ -186,7 +187,24 @@ def coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:
         if id(mention) not in seen:  # a field named again stands twice
             seen.add(id(mention))
             group.append(mention)
+        index = _before_a_bracket(clauses, index, group, seen)
     return group
+
+
+def _before_a_bracket(
+    clauses: Sequence[Clause], index: int, group: list[Mention], seen: set[int]
+) -> int:
+    """The clause before a bracket that clause ``index`` opens, its field joining
+    ``group`` ("strawberries (sonata) + strawberries (albion), ..., flowering": both
+    flower); ``index`` when clause ``index`` opens no bracket."""
+    link = clauses[index].link
+    if index == 0 or link is None or link.norm != "(" or not clauses[index - 1].mentions:
+        return index
+    mention = clauses[index - 1].mentions[-1]
+    if id(mention) not in seen:
+        seen.add(id(mention))
+        group.append(mention)
+    return index - 1
 
 
 def _link_norm(clause: Clause) -> str | None:

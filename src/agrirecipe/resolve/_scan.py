@@ -65,7 +65,16 @@ def assign_roles(items: Sequence[Item]) -> None:
     previous: Item | None = None
     for index, item in enumerate(items):
         following = items[index + 1] if index + 1 < len(items) else None
-        alone = _alone(previous, following) or _opening_month(item, previous, following)
+        alone = (
+            _alone(previous, following)
+            or _opening_month(item, previous, following)
+            # "March sunshine", "June rain": a month's weather
+            or (
+                item.raw[:1].isupper()
+                and following is not None
+                and any(sense.value == "sky" for sense in following.senses_of("scenery"))
+            )
+        )
         item.role = _role(item, previous, cues, alone=alone)
         if item.role == "relation" and _attributive(item, previous, following):
             item.role = "filler"  # "three adjacent fields": the fields in a row
