@@ -196,3 +196,19 @@ def test_a_months_weather_says_the_month() -> None:
 def test_a_list_counted_again_with_its_plots() -> None:
     scene = recipe("butterhead + lollo rosso + romaine, 3 lettuce plots, just emerged, april")
     assert [f.variety for f in scene.fields] == ["Butterhead", "Lollo Rosso", "Romaine"]
+
+
+def test_a_plot_then_its_crop_after_a_copula() -> None:
+    (vines,) = recipe(
+        "The vineyard on the south slope is Pinot Noir. Mid-September, grapes ripening, and "
+        "there's downy mildew on a good part of the lower leaves."
+    ).fields
+    assert (vines.variety, vines.health) == ("Pinot Noir", "Ill")
+
+
+def test_grazing_is_no_grape() -> None:
+    scene = recipe(
+        "A ditch divides the lettuce from the onions: the onions are on the east side of the "
+        "ditch, the lettuce on the west side, and the cows graze beyond the lettuce."
+    )
+    assert [f.crop for f in scene.fields] == ["Lettuce", "Onion"]

@@ -439,6 +439,15 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
                 previous.plot = mention.plot
             clause.mentions = [m for m in clause.mentions if m is not mention]
             continue
+        if clause is not None and previous is not None and _is_its_crop(clause, previous, mention):
+            # "The vineyard on the south slope is Pinot Noir": the plot named, then its crop
+            mention.items.extend(previous.items)
+            mention.plot = mention.plot or previous.plot
+            kept[-1] = mention
+            for each in clauses:
+                each.mentions = [mention if m is previous else m for m in each.mentions]
+            clause.mentions = [m for m in clause.mentions if m is mention]
+            continue
         if clause is not None and (listed := _listed_again(clauses, clause, mention)):
             # "butterhead + lollo rosso + romaine, 3 lettuce plots": the list counted
             # again, with the plot its members are grown in
@@ -535,6 +544,26 @@ def _other_side(earlier: Mention, mention: Mention) -> bool:
     said = {i.norm for i in mention.items if i.norm in _SIDES}
     before = {i.norm for i in earlier.items if i.norm in _SIDES}
     return bool(said) and bool(before) and not said & before
+
+
+def _is_its_crop(clause: Clause, previous: Mention, mention: Mention) -> bool:
+    """Whether ``mention`` says what a plot of no crop just named grows: "The vineyard on
+    the south slope is Pinot Noir" (a copula opens its clause, after a placement)."""
+    words = [i.norm for i in sorted(clause.items, key=lambda i: i.start)]
+    return (
+        not previous.has_crop
+        and previous.category is None
+        and previous.plot is not None
+        and (previous.count or 1) == 1
+        and not previous.refinements
+        and mention.has_crop
+        and mention.plot is None
+        and mention.count is None
+        and previous.clause == clause.index - 1
+        and clause.link is not None
+        and clause.link.role in ("trailer", "relation")
+        and words[:1] in (["is"], ["are"], ["was"])
+    )
 
 
 def _listed_again(clauses: Sequence[Clause], clause: Clause, mention: Mention) -> list[Mention]:
