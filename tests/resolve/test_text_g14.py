@@ -212,3 +212,11 @@ def test_grazing_is_no_grape() -> None:
         "ditch, the lettuce on the west side, and the cows graze beyond the lettuce."
     )
     assert [f.crop for f in scene.fields] == ["Lettuce", "Onion"]
+
+
+def test_the_sides_of_the_farm_are_zones() -> None:
+    scene = recipe(
+        "Granny Smith apples take up the west side of the farm, Valencia Late oranges the east "
+        "side of the farm."
+    )
+    assert [r.kind for r in scene.relations] == ["west_of"]
