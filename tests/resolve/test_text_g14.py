@@ -220,3 +220,23 @@ def test_the_sides_of_the_farm_are_zones() -> None:
         "side of the farm."
     )
     assert [r.kind for r in scene.relations] == ["west_of"]
+
+
+def test_between_the_other_two() -> None:
+    scene = recipe(
+        "three strips: onions with the tops flopped over, then carrots, then lettuce, so the "
+        "carrots are sandwiched between the other two."
+    )
+    between = [r for r in scene.relations if r.kind == "between"]
+    assert len(between) == 1 and between[0].subject == scene.fields[1].id
+
+
+def test_the_second_block_east_of_the_first() -> None:
+    scene = recipe(
+        "Two blocks of Romaine, each one 40 rows of 100 m with a 4 m headland round it; the "
+        "second block is east of the first."
+    )
+    first, second = scene.fields
+    assert [(r.kind, r.subject, r.objects) for r in scene.relations] == [
+        ("east_of", second.id, (first.id,))
+    ]

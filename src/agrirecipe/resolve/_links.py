@@ -41,7 +41,19 @@ ARTICLES = frozenset({"the", "a", "an", "our", "my", "their", "its"})
 PRONOUNS = frozenset({"it", "them", "those", "these", "they", "this", "that", "which"})
 
 
-THE_TWO = frozenset({"the two", "both", "the two of them", "those two", "these two", "the pair"})
+THE_TWO = frozenset(
+    {
+        "the two",
+        "both",
+        "the two of them",
+        "those two",
+        "these two",
+        "the pair",
+        "the other two",
+        "the two others",
+        "the other 2",
+    }
+)
 
 
 OPPOSITE = {

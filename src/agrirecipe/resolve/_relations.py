@@ -372,8 +372,15 @@ def _ordinal_pair(clauses: Sequence[Clause], position: int) -> tuple[int, int] |
     """The members "the first ... north of the second" name (0-based), or None."""
 
     def ordinal(clause: Clause) -> int | None:
-        words = [w for i in clause.items for w in i.norm.split() if w not in _ORDINAL_FILLERS]
-        if clause.mentions or len(words) != 1:
+        # ("the second block is east of the first": a plot word of no crop says nothing)
+        words = [
+            w
+            for i in clause.items
+            if i.role != "plot"
+            for w in i.norm.split()
+            if w not in _ORDINAL_FILLERS
+        ]
+        if any(m.has_crop or m.category is not None for m in clause.mentions) or len(words) != 1:
             return None
         return _ORDINALS.get(words[0])
 
