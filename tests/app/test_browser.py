@@ -33,6 +33,7 @@ def page(browser: Any, app_server: Any) -> Any:
     errors: list[str] = []
     tab.on("pageerror", lambda exc: errors.append(str(exc)))
     tab.goto(app_server.url)
+    tab.wait_for_selector("body[data-ready]")  # the page's handlers are attached
     yield tab
     context.close()
     assert errors == []
@@ -129,6 +130,7 @@ def test_two_tabs_work_at_once(browser: Any, app_server: Any) -> None:
         for tab in tabs:
             tab.set_default_timeout(TIMEOUT_MS)
             tab.goto(app_server.url)
+            tab.wait_for_selector("body[data-ready]")
         prompts = ["Conference pears in autumn", "a field of Nantes carrots in spring"]
         for tab, prompt in zip(tabs, prompts, strict=True):
             tab.fill("#prompt", prompt)

@@ -46,3 +46,13 @@ def test_the_static_files_are_in_the_wheel(repo_root: Path) -> None:
         check=False,
     )
     assert ignored.stdout == ""
+
+
+def test_the_make_button_waits_for_the_page_script(app_server: Any) -> None:
+    # A click before app.js attached its handlers would submit the form natively and
+    # reload the page, losing the prompt: the button is served disabled and enabled
+    # by the script once it is ready (seen on a loaded CI machine).
+    page = app_server.call("GET", "/").body.decode()
+    assert re.search(r'<button type="submit" id="make" disabled>', page)
+    script = (STATIC / "app.js").read_text(encoding="utf-8")
+    assert "$('make').disabled = false;\n  document.body.dataset.ready = 'yes';" in script

@@ -287,6 +287,10 @@ async function start() {
     if (viewer.walk(() => { $('walk').textContent = 'Walk along the row'; })) $('walk').textContent = 'Stop walking';
   });
   refreshHistory();
+  // Only now can a request be made: a click before the handlers were attached would
+  // submit the form natively and reload the page (the prompt lost).
+  $('make').disabled = false;
+  document.body.dataset.ready = 'yes';
   const match = location.hash.match(/scene=([0-9a-f]{12})/);
   if (match) openScene(match[1]);
 }
