@@ -43,8 +43,14 @@ class CueReading:
 
 
 @functools.cache
-def _table() -> tuple[tuple[str, Cue], ...]:
+def _data() -> dict[str, Any]:
     data: dict[str, Any] = yaml.safe_load((DATA_DIR / "cues.yaml").read_text("utf-8"))
+    return data
+
+
+@functools.cache
+def _table() -> tuple[tuple[str, Cue], ...]:
+    data = _data()
     entries: list[tuple[str, Cue]] = []
     for attribute in _ATTRIBUTES:
         for value, phrases in (data.get(attribute) or {}).items():
@@ -63,8 +69,7 @@ def _table() -> tuple[tuple[str, Cue], ...]:
 
 @functools.cache
 def _autumn_looks() -> frozenset[str]:
-    data: dict[str, Any] = yaml.safe_load((DATA_DIR / "cues.yaml").read_text("utf-8"))
-    return frozenset(str(p) for p in data.get("autumn_looks", ()))
+    return frozenset(str(p) for p in _data().get("autumn_looks", ()))
 
 
 def add_cues(lexicon: Lexicon) -> None:

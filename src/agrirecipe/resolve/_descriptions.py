@@ -20,6 +20,7 @@ from agrirecipe.resolve._structure import (
     names_a_variety,
     strong_crops,
 )
+from agrirecipe.resolve._words import reader_words
 
 __all__ = ["dissolve_plant_parts"]
 
@@ -269,16 +270,11 @@ def _coloured_fruit(owner: Mention, mention: Mention) -> bool:
     return (
         len(mention.heads) == 1
         and len(mention.heads[0].norm.split()) == 2
-        and mention.heads[0].norm.split()[0] in _colours()
+        and mention.heads[0].norm.split()[0] in reader_words("colours")
         and names_a_variety(owner)
         and bool(strong_crops(mention))
         and strong_crops(mention) == strong_crops(owner)
     )
-
-
-@functools.lru_cache(maxsize=1)
-def _colours() -> frozenset[str]:
-    return frozenset(str(word) for word in vocabulary()["reader_words"]["colours"])
 
 
 def _has_before_head(mention: Mention) -> bool:
