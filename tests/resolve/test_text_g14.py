@@ -240,3 +240,81 @@ def test_the_second_block_east_of_the_first() -> None:
     assert [(r.kind, r.subject, r.objects) for r in scene.relations] == [
         ("east_of", second.id, (first.id,))
     ]
+
+
+def test_a_side_said_bare_after_a_side_of_the_farm() -> None:
+    scene = recipe(
+        "Granny Smith apples take up the west side of the farm, Valencia Late oranges the east "
+        "side."
+    )
+    apples, oranges = scene.fields
+    assert (apples.crop, oranges.crop) == ("Apple", "Orange")
+    relations = [(r.kind, r.subject, r.objects) for r in scene.relations]
+    assert relations == [("west_of", apples.id, (oranges.id,))]
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "banana farm, two blocks - Ladyfinger down near the river, Gros Michel up by the sheds",
+        "two fields, wheat by the barn, maize near the river",
+    ],
+)
+def test_members_of_a_count_placed_by_scenery(prompt: str) -> None:
+    fields = recipe(prompt).fields
+    # two fields, two crops or varieties: no third field of no crop
+    assert len(fields) == 2
+    assert len({(f.crop, f.variety) for f in fields}) == 2
+
+
+@pytest.mark.parametrize(
+    ("prompt", "crops"),
+    [
+        ("two wheat and maize fields", ["Wheat", "Maize"]),
+        ("3 apple and pear orchards", ["Apple", "Apple", "Pear"]),
+        ("4 or 5 cereal fields", None),
+    ],
+)
+def test_a_count_before_crops_sharing_one_plot_noun(prompt: str, crops: list[str] | None) -> None:
+    fields = recipe(prompt).fields
+    if crops is None:
+        assert len(fields) == 4  # the lower of "4 or 5"
+    else:
+        assert [f.crop for f in fields] == crops
+
+
+def test_a_vague_count_of_cereal_and_veg_fields_is_not_refused() -> None:
+    fields = recipe("like 4 or 5 different cereal & veg fields, whatever u want").fields
+    categories = [f.category for f in fields]
+    assert len(fields) == 4
+    assert categories.count("Cereals") == 2 and categories.count("Vegetables") == 2
+    assert len({f.crop for f in fields}) == 4
+
+
+def test_a_row_length_said_each_after_a_count_of_rows() -> None:
+    tomatoes, peppers = recipe(
+        "Tomato rows for the camera rig - 20 rows, 50 m each, 1.5 m between rows, density "
+        "33,333 plants/ha, staked - with 10 rows of peppers at 0.9 m alongside."
+    ).fields
+    assert (tomatoes.agronomy.row_spacing_m, peppers.agronomy.row_spacing_m) == (1.5, 0.9)
+    assert "row_length" not in peppers.stated
+    assert tomatoes.geometry.size_m[1] > peppers.geometry.size_m[1] * 0.9
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "California Wonder peppers in front with blocky green fruit, and Roma tomatoes behind "
+        "with curled, mottled leaves.",
+        "on one side of the canal Grand Nain, on the other side Lady Finger with dark streaks "
+        "on the leaves, black Sigatoka.",
+    ],
+)
+def test_words_after_a_comma_go_on_with_the_last_members_own_with(prompt: str) -> None:
+    first, second = recipe(prompt).fields
+    assert (first.health, second.health) == ("Healthy", "Ill")
+
+
+def test_a_trailing_cue_still_goes_to_a_bare_list() -> None:
+    fields = recipe("bananas and oranges, ripe").fields
+    assert [f.stage for f in fields] == ["Maturation", "Maturation"]

@@ -177,6 +177,10 @@ def coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:
     said = clauses[index].items
     if said and said[0].norm in ("the", "these", "those", "both") and (group[0].count or 1) > 1:
         return group  # "2 cereal fields n 2 fruit ones, the fruit ones touching each other"
+    if _describes_itself(clauses[index], group[0]) and clauses[index].link is not None:
+        # "..., and Roma tomatoes behind with curled, mottled leaves": the words after a
+        # comma go on with the last member's own "with ..."
+        return group
     seen = {id(group[0])}  # identity: comparing mentions field by field made this cubic
     index = _before_a_bracket(clauses, index, group, seen)
     # ("North plot, ..., Fontane potatoes; south plot, 40 x 120 m, ...": a semicolon
@@ -201,6 +205,21 @@ def coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:
             group.append(mention)
         index = _before_a_bracket(clauses, index, group, seen)
     return group
+
+
+def _describes_itself(clause: Clause, mention: Mention) -> bool:
+    """Whether a field's clause goes on, after its name, with "with ..." words of its own
+    at its end ("Roma tomatoes behind with curled")."""
+    last_head = max(h.end for h in mention.heads)
+    after = [i for i in clause.items if i.start >= last_head]
+    with_at = next((n for n, i in enumerate(after) if i.norm == "with"), None)
+    return (
+        with_at is not None
+        and with_at < len(after) - 1
+        and all(
+            i.role in ("unknown", "cue", "stage", "health", "filler") for i in after[with_at + 1 :]
+        )
+    )
 
 
 def _before_a_bracket(

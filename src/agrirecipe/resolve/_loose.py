@@ -27,6 +27,7 @@ from agrirecipe.resolve._links import PRONOUNS, coordinated
 from agrirecipe.resolve._measures import (
     after_list_plots,
     bracketed_by,
+    each_row_long,
     in_a_sentence_of_measures,
     opens_with_rows,
     parallel_fields,
@@ -198,7 +199,13 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
             or opens_with_rows(clauses, position)
             or shared_by_all_after(clauses, position)
             # "8 rows each at 1.5 m": "each" inside the measure itself
-            or any(t.norm in ("each", "both") for i in geometry if not per_bed(i) for t in i.tokens)
+            # ("20 rows, 50 m each": each row's length)
+            or any(
+                t.norm in ("each", "both")
+                for i in geometry
+                if not per_bed(i) and not each_row_long(clauses, position, i)
+                for t in i.tokens
+            )
         ):
             # "A, B and C, each 20 x 30 m, rows at 90°": still about each of them;
             # "two lettuce plots (10 rows each, 35 cm row spacing)": each of those

@@ -23,6 +23,7 @@ from agrirecipe.resolve._words import SENTENCE_MARKS
 __all__ = [
     "after_list_plots",
     "bracketed_by",
+    "each_row_long",
     "in_a_sentence_of_measures",
     "opens_with_rows",
     "parallel_fields",
@@ -106,7 +107,7 @@ def shared_by_all(clauses: Sequence[Clause], position: int) -> bool:
             or any(
                 t.norm in ("each", "both")
                 for i in previous.loose
-                if i.role == "geometry"
+                if i.role == "geometry" and not each_row_long(clauses, index - 1, i)
                 for t in i.tokens
             )
             # "8 rows per block, 5 m between rows": measures said per plot
@@ -208,9 +209,12 @@ def share_each_measures(clauses: Sequence[Clause]) -> None:
         for mention in clause.mentions[-1:]:
             # "150 trees each at 7 m x 4 m": the whole measure, said for every one
             measures = [i for i in mention.items if i.role == "geometry"]
-            if not any(
-                t.norm in ("each", "both") for i in measures if not per_bed(i) for t in i.tokens
-            ):
+            said_each = [
+                i
+                for i in measures
+                if not per_bed(i) and any(t.norm in ("each", "both") for t in i.tokens)
+            ]
+            if not said_each or _of_each_row(measures, said_each):
                 # "Fontane, Agria and Bintje in three 9-row strips": each plot's rows
                 measures = [i for i in measures if i.data.get("of_each_plot")]
             if not measures:
@@ -219,6 +223,31 @@ def share_each_measures(clauses: Sequence[Clause]) -> None:
                 if other is not mention:
                     said = _measure_keys(other.items)
                     other.items.extend(i for i in measures if not _measure_keys([i]) & said)
+
+
+def _of_each_row(measures: Sequence[Item], said_each: Sequence[Item]) -> bool:
+    """'Tomato rows - 20 rows, 50 m each, 1.5 m between rows': a length said "each" after
+    the field's own count of rows is each row's, not each field's."""
+    own = [i for i in measures if all(i is not e for e in said_each)]
+    return all(_measure_keys([i]) <= {"row_length_m"} for i in said_each) and "rows" in (
+        _measure_keys(own)
+    )
+
+
+def each_row_long(clauses: Sequence[Clause], position: int, item: Item) -> bool:
+    """'20 rows, 50 m each': a row length said "each" right after a count of rows is the
+    length of each of those rows, not a measure of each field."""
+    if _measure_keys([item]) != {"row_length_m"} or not any(t.norm == "each" for t in item.tokens):
+        return False
+    said = [*clauses[position].items]
+    if position:
+        said += clauses[position - 1].items
+    return any(
+        g.key == "rows"
+        for i in said
+        if i.role == "geometry" and i is not item
+        for g in i.data["geometry"]
+    )
 
 
 def bracketed_by(clauses: Sequence[Clause], position: int) -> Mention | None:

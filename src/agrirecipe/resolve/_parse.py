@@ -104,9 +104,11 @@ from agrirecipe.resolve._structure import (
     drop_negated,
     promote_weak_varieties,
     raise_conflicts,
+    share_count_over_a_list,
     share_counted_fields,
     share_leading_attributes,
     share_trailing_attributes,
+    take_the_lower_count,
 )
 from agrirecipe.resolve._words import purpose_diseases, read_words, reader_words
 from agrirecipe.resolve._zones import (
@@ -203,6 +205,8 @@ class PromptReader(FieldReading):
         clauses = decompose(items, builder)
         promote_weak_varieties(clauses, builder)
         apply_plural_counts(clauses, int(vocabulary()["plural_fields"]))
+        take_the_lower_count(clauses)
+        share_count_over_a_list(clauses)
         for dropped in apply_corrections(clauses):
             self.trace.append(
                 TraceStep(stage="decompose", subject=dropped, detail="replaced by a correction")

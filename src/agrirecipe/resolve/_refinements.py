@@ -113,6 +113,9 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
                             clause.items[0].role == "reference"
                             and all(i.role in ("reference", "filler") for i in clause.items)
                         )
+                        # "two blocks - Ladyfinger down near the river, Gros Michel up
+                        # by the sheds": placed by the scenery
+                        or _placed_by_scenery(clause)
                     )
                 )
             )
@@ -413,7 +416,12 @@ def _listed(clauses: Sequence[Clause], start: int, *, to_the_end: bool = False) 
             and (
                 link.norm in (".", "!", "?", ";")
                 # ("two 0.25 ha plots, carrots north of onions": the list placed in itself)
-                or (link.role == "relation" and not _bare_crop_first(clause))
+                or (
+                    link.role == "relation"
+                    and not _bare_crop_first(clause)
+                    # ("two fields, wheat by the barn, maize near the river")
+                    and not _placed_by_scenery(clause)
+                )
             )
         ):
             break
@@ -423,6 +431,15 @@ def _listed(clauses: Sequence[Clause], start: int, *, to_the_end: bool = False) 
             m for m in clause.mentions if m.has_crop and not definite_before_head(clause, m)
         )
     return named
+
+
+def _placed_by_scenery(clause: Clause) -> bool:
+    """'near the river', 'by the sheds': a relation to scenery, naming no field."""
+    return (
+        not clause.mentions
+        and bool(clause.items)
+        and all(i.role in ("filler", "non_agricultural") for i in clause.items)
+    )
 
 
 def _bare_crop_first(clause: Clause) -> bool:

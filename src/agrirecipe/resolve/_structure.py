@@ -15,6 +15,7 @@ back at fields already named ("the carrots ...", "a carrot field, nantes variety
 from __future__ import annotations
 
 import functools
+import itertools
 from collections.abc import Sequence
 from typing import Any
 
@@ -43,10 +44,12 @@ __all__ = [
     "pronoun_one",
     "raise_conflicts",
     "same_variety",
+    "share_count_over_a_list",
     "share_counted_fields",
     "share_leading_attributes",
     "share_trailing_attributes",
     "strong_crops",
+    "take_the_lower_count",
 ]
 
 
@@ -232,6 +235,65 @@ def apply_plural_counts(clauses: Sequence[Clause], plural_count: int) -> None:
                 continue
             mention.count = plural_count
             mention.implied_count = True
+
+
+def take_the_lower_count(clauses: Sequence[Clause]) -> None:
+    """ "4 or 5 cereal fields", "like 2 or 3 plots of maize": the lower of two numbers
+    said as alternatives (the fewer fields a reader can be sure were asked for)."""
+    for before, clause in itertools.pairwise(clauses):
+        if before.mentions or not clause.mentions or clause.link is None:
+            continue
+        mention = clause.mentions[0]
+        said = [i for i in before.items if i.role != "filler"]
+        first = clause.items[0] if clause.items else None
+        if (
+            clause.link.norm != "or"
+            or len(said) != 1
+            or said[0].role != "number"
+            or first is None
+            or first.role != "number"
+            or first not in mention.items
+            or mention.count is None
+        ):
+            continue
+        lower, upper = said[0].data.get("value"), first.data.get("value")
+        if (
+            isinstance(lower, int | float)
+            and isinstance(upper, int | float)
+            and float(lower).is_integer()
+            and 1 < lower < upper == mention.count
+        ):
+            mention.count = int(lower)
+
+
+def share_count_over_a_list(clauses: Sequence[Clause]) -> None:
+    """ "two wheat and maize fields", "4 different cereal & veg fields": a number said
+    before crops that share one plural plot noun counts the fields of them all, shared
+    out in the order named (one wheat and one maize field; two of each), not the fields
+    of the first crop alone."""
+    for clause, following in itertools.pairwise(clauses):
+        if not clause.mentions or len(following.mentions) != 1:
+            continue
+        first, second = clause.mentions[-1], following.mentions[0]
+        plots = [h for h in second.heads if h.role == "plot"]
+        if (
+            first.count is None
+            or first.count < 2
+            or first.implied_count
+            or any(h.role == "plot" for h in first.heads)
+            or second.count is not None
+            or not plots
+            or not plots[-1].data["value"].get("plural")
+            or following.link is None
+            or following.link.role != "conjunction"
+            or any(i.start < second.heads[0].start for i in following.items if i.role != "filler")
+        ):
+            continue
+        total = first.count
+        first.count = (total + 1) // 2
+        second.count = total - first.count
+        second.distinct = second.distinct or first.distinct
+        second.implied_count = False
 
 
 def apply_corrections(clauses: Sequence[Clause]) -> list[str]:

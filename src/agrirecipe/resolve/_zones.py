@@ -67,9 +67,10 @@ def _patterns() -> tuple[tuple[str, re.Pattern[str]], ...]:
         phrases = sorted((str(p) for p in data[zone]), key=len, reverse=True)
         alternation = "|".join(re.escape(p) for p in phrases)
         patterns.append((zone, re.compile(rf"(?<![a-z0-9])(?:{alternation})(?![a-z0-9])")))
-    for zone, words in data["bare_quarters"].items():
+    for zone, words in data["bare_places"].items():
         alternation = "|".join(re.escape(str(w)) for w in sorted(words, key=len, reverse=True))
-        pattern = rf"(?<![a-z0-9])(?:{alternation})(?= [,.;:!?]| -|$)"
+        # ("the road running along the east side.": placed by a preposition, a relation)
+        pattern = rf"(?<![a-z0-9])(?<!along )(?<!on )(?<!by )(?:{alternation})(?= [,.;:!?]| -|$)"
         patterns.append((str(zone), re.compile(pattern)))
     nouns = sorted((*vocabulary()["plot_nouns"], "one", "ones"), key=len, reverse=True)
     plots = "|".join(re.escape(str(n)) for n in nouns)
