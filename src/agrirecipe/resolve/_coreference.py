@@ -344,11 +344,14 @@ def merge_coreferences(
 
 
 def _of_it(mention: Mention) -> bool:
-    """'one big field of it': a plot word whose crop is "it" or "them", named before."""
+    """'one big field of it', 'a field of those': a plot word whose crop is "it", "them" or
+    "those", named before."""
     if mention.has_crop or not any(h.role == "plot" for h in mention.heads):
         return False
     norms = [i.norm for i in mention.items]
-    return any(a == "of" and b in ("it", "them") for a, b in itertools.pairwise(norms))
+    return any(
+        a == "of" and b in ("it", "them", "those", "these") for a, b in itertools.pairwise(norms)
+    )
 
 
 def _related_to(clauses: Sequence[Clause], clause: Clause, earlier: Mention) -> bool:

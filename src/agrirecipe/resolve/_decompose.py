@@ -374,7 +374,8 @@ class MentionBuilder:
                 and any(later.norm in ("the", "its", "their") for later in items[index + 1 :])
             )
             # The amount nearest the head wins: "a combine ... a few cereal fields".
-            if item.role == "number" and (before_head or counts) and not of_another:
+            counted = before_head or counts or bool(item.data.get("counts_kinds"))
+            if item.role == "number" and counted and not of_another:
                 value = float(item.data.get("value", 1))
                 if before_head or item.norm not in ("a", "an"):
                     mention.count = _count(value, item)

@@ -549,7 +549,9 @@ def strip_geometry(request: str) -> tuple[str, list[tuple[int, GeometryMatch]]]:
 #: only before a measure, since "two strawberry beds" may be two plots).
 _COUNTED_CROP_ROWS = re.compile(
     r"(?<![\w.,])(?P<n>\d+|(?i:two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|"
-    r"fifteen|twenty|thirty|forty|fifty|sixty))\s+(?P<mod>(?i:single|double|twin)\s+)?"
+    r"fifteen|twenty|thirty|forty|fifty|sixty))\s+"
+    # ("8 raised strawberry beds on 1.5 m centres": one field of beds)
+    r"(?P<mod>(?i:single|double|twin|raised|flat|mulched)\s+)?"
     r"(?P<words>[A-Za-z][\w'’-]*(?:\s+[A-Za-z][\w'’-]*)?)\s+"
     # ("10 Sonata strawberry beds south of 10 Centenary beds, all beds on 1.5 m centres")
     r"(?P<noun>(?i:rows|ridges|drills|beds(?=\s*(?:,\s*)?(?:(?:at|on|of|x|by|with|spaced|each|all|"

@@ -281,8 +281,9 @@ def drop_counted_summaries(clauses: Sequence[Clause], mentions: list[Mention]) -
 def drop_titles(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
     """'Bananas from my trip to Tenerife! A plantation of banana plants behind an old
     stone wall, ...': a crop named alone, with no plot or count, in a first sentence of
-    its own, then one field of that crop in the next, is that field's title. Its words
-    go to the field. Return the fields left."""
+    its own (or before a colon: "salad dataset: two lettuce plots, ..."), then one field of
+    that crop in the next, is that field's title. Its words go to the field. Return the
+    fields left."""
     if len(mentions) < 2:
         return mentions
     title, field = mentions[0], mentions[1]
@@ -297,16 +298,24 @@ def drop_titles(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Ment
         or any(strong_crops(m) & crops for m in mentions[2:])
     ):
         return mentions
+    # ("salad dataset: two lettuce plots, Cos ... and Lollo ...": or a heading that a
+    # colon ends right after it)
     ends = next(
         (
             c
             for c in clauses[title.clause + 1 :]
-            if c.link is not None and c.link.norm in SENTENCE_MARKS
+            if c.link is not None
+            and (
+                c.link.norm in SENTENCE_MARKS
+                or (c.link.norm == ":" and c.index == title.clause + 1)
+            )
         ),
         None,
     )
     if ends is None or field.clause < ends.index:
         return mentions
+    if ends.link is not None and ends.link.norm == ":" and field.clause != ends.index:
+        return mentions  # ("cabbage: 0.75 m rows, 64 rows. A Red Express plot ...")
     said = {i.role for c in clauses[title.clause : ends.index] for i in c.items}
     if said & {"geometry", "size", "stage", "health", "season", "month", "cue", "relation"}:
         return mentions  # ("cabbage: 0.75 m rows, ... A Red Express plot west of it")

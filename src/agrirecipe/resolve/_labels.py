@@ -19,6 +19,7 @@ from collections.abc import Callable, Sequence
 from agrirecipe.resolve._lexicon import Item, number_value, tokenize
 
 __all__ = [
+    "drop_list_numbers",
     "place_compass_members",
     "place_leading_directions",
     "place_neighbouring_plots",
@@ -42,7 +43,10 @@ _BARE_DEFINITION = re.compile(r"(?<![\w=])(?P<label>[A-H])\s*(?P<mark>=)(?!=)")
 # colon
 _SENTENCE_DEFINITION = re.compile(r"(?:^|(?<=[.;!?]\s))(?P<label>[A-H])\s*(?P<mark>:)")
 # "A is north of B": a label as the subject of a placing verb
-_SUBJECT_VERBS = r"(?:is|sits|lies|are|stands|goes|runs|borders|adjoins|touches)"
+_SUBJECT_VERBS = (
+    r"(?:is|sits|lies|are|stands|goes|runs|borders|adjoins|touches|shows|has|have|looks|"
+    r"gets|got|carries|suffers)"
+)
 # What a reference to a label follows: a relation word, or the label's noun.
 _BEFORE_REFERENCE = (
     r"(?:of|to|from|beside|besides|by|and|than|next to|alongside|between|put|place|with)"
@@ -105,8 +109,18 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
     notes: list[str] = []
     # Drop the definitions (last first, so offsets stay valid), keeping their mark.
     out = text
+    first_said: dict[str, re.Match[str]] = {}
+    for match in definitions:
+        first_said.setdefault(match.group("label").upper(), match)
     for match in reversed(definitions):
         mark = match.group("mark")
+        label = match.group("label").upper()
+        if first_said[label] is not match and label in names:
+            # "Plot A: Fontane, plot B: Agria ... plot B is clean": a label said again
+            # with "is" is the field it named, not a new definition
+            again = "the " + names[label] + (" " + mark if mark.isalpha() else mark)
+            out = out[: match.start()] + again + out[match.end() :]
+            continue
         keep = "" if mark in ":-–—=" or mark.isalpha() else mark
         out = out[: match.start()] + keep + out[match.end() :]
     opening = out[: definitions[0].start()].rstrip()
@@ -137,6 +151,26 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
         # a label never referenced is still a name, not another field ("Plot 2: ...")
         notes.append(f"{label} = {phrase}" + ("" if count else " (a label only)"))
     return out, notes
+
+
+# "2 plots: (1) wheat ..., 1 ha; (2) a 1 ha maize plot ...": the numbers of a list
+_LIST_NUMBER = re.compile(r"(?:(?<=^)|(?<=[:;,.!?]\s)|(?<=\n))\(?(?P<n>[1-9]|[a-h])\)\s+")
+
+
+def drop_list_numbers(text: str) -> str:
+    """``text`` without the numbers of a list ("(1) wheat ...; (2) maize ...", "a) ...
+    b) ..."): two or more, in order from 1 (or a), each opening its item. They count
+    no fields and name none."""
+    matches = list(_LIST_NUMBER.finditer(text))
+    order = [m.group("n") for m in matches]
+    if len(order) < 2 or order not in (
+        [str(i) for i in range(1, len(order) + 1)],
+        [chr(ord("a") + i) for i in range(len(order))],
+    ):
+        return text
+    for match in reversed(matches):
+        text = text[: match.start()] + text[match.end() :]
+    return text
 
 
 # "plot 1 at 70,000 plants/ha, plot 2 at 100,000": two members told apart by number

@@ -327,12 +327,14 @@ class Lexicon:
         if " " not in text and text in everyday_words():
             return None  # "train" is a word of its own, not a misspelt "grain"
         # Damerau-Levenshtein counts a swapped pair of letters ("appel", "whaet") as one
-        # edit; one edit in five letters is the most a short word may differ by.
+        # edit; one edit in five letters is the most a short word may differ by, two in
+        # nine a long one ("chantaney" is Chantenay).
+        cutoff = 0.79 if letters < 9 else 0.77  # (0.8, 0.78 themselves: float-safe)
         match = process.extractOne(
             text,
             self.fuzzy_choices,
             scorer=DamerauLevenshtein.normalized_similarity,
-            score_cutoff=0.79,  # 0.8 itself: one edit in five letters (float-safe)
+            score_cutoff=cutoff,
         )
         if match is None:
             return None
@@ -341,10 +343,21 @@ class Lexicon:
             return None  # "blocky" fruit is a word made from "block", not a misspelt one
         said, known = text.split(), phrase.split()
         if len(said) == len(known) and any(
-            a != b and a in everyday_words() for a, b in zip(said, known, strict=True)
+            a != b and a in everyday_words() and not _doubled(a, b)
+            for a, b in zip(said, known, strict=True)
         ):
-            return None  # "fire blight on some shoots" is no misspelt "side shoots"
+            # "fire blight on some shoots" is no misspelt "side shoots" ("Red Barron" is
+            # Red Baron: a letter doubled is a typo even of a word of its own)
+            return None
         return phrase, score, self._fuzzy_senses[phrase]
+
+
+_DOUBLE = re.compile(r"(.)\1+")
+
+
+def _doubled(said: str, known: str) -> bool:
+    """Whether two words differ only in a letter said once or twice ("barron", "baron")."""
+    return _DOUBLE.sub(r"\1", said) == _DOUBLE.sub(r"\1", known)
 
 
 #: Endings that make a new word of a known one ("blocky", "reddish", "ridged").

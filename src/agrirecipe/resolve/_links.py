@@ -177,6 +177,10 @@ def coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:
     said = clauses[index].items
     if said and said[0].norm in ("the", "these", "those", "both") and (group[0].count or 1) > 1:
         return group  # "2 cereal fields n 2 fruit ones, the fruit ones touching each other"
+    if group[0].clause < index and said and said[0].norm in ("the", "its", "their"):
+        # "..., and Red Express cabbage behind, the cabbage leaves chewed full of holes by
+        # caterpillars": a field named again by "the" is the one described
+        return group
     if _describes_itself(clauses[index], group[0]) and clauses[index].link is not None:
         # "..., and Roma tomatoes behind with curled, mottled leaves": the words after a
         # comma go on with the last member's own "with ..."
@@ -192,6 +196,26 @@ def coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:
         and _link_norm(clauses[index]) != ";"
     ):
         previous = clauses[index - 1]
+        if not previous.mentions and not previous.items and _link_norm(previous) == ")":
+            # "red onions (red baron) n walla wallas side by side, ready ...": past the
+            # bracket to the member it follows
+            opening = next(
+                (k for k in range(index - 2, 0, -1) if _link_norm(clauses[k]) == "("), None
+            )
+            # (only past a bracket that names the member again: "(0.3 ha, ripening)" is
+            # the member's own words, which end the list's shared words)
+            if (
+                opening is None
+                or not clauses[opening - 1].mentions
+                or not any(c.mentions for c in clauses[opening:index])
+            ):
+                break
+            index = opening - 1
+            mention = clauses[index].mentions[-1]
+            if id(mention) not in seen:
+                seen.add(id(mention))
+                group.append(mention)
+            continue
         if not previous.mentions:
             # "orchard, then potatoes": the bare comma between two members
             if previous.items or index < 2 or not listing(previous.link):

@@ -81,6 +81,14 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
             # in the field just named, when more fields follow
             attributes = [i for i in attributes if i.role != "all"]
             says_all = False
+        pair = coordinated(clauses, position + 1) if clause.mentions else []
+        fields = sum(len(m.refinements) or (m.count or 1) for m in mentions)
+        if says_all and all(i.norm == "both" for i in alls) and len(pair) == 2 and fields > 2:
+            # "Cherries and strawberries are both flowering, the potatoes were only just
+            # planted": "both" is the two just named, not every field
+            for mention in pair:
+                mention.items.extend(i for i in attributes if i.role != "all")
+            continue
         if says_all:
             owner = bracketed_by(clauses, position)  # "two lettuce plots (10 rows each"
             (owner.items if owner is not None else scene).extend(attributes)
@@ -402,8 +410,8 @@ def _detach_trailing_all(clause: Clause) -> None:
         ),
         None,
     )
-    if marker is None:
-        return
+    if marker is None or all(marker is not i for i in clause.items):
+        return  # (a field named again: its words are detached in the clause that says them)
     moved = [i for i in mention.items if i.start >= marker.start and i not in mention.heads]
     if not any(i.role in ATTRIBUTE_ROLES for i in moved if i is not marker):
         return

@@ -279,8 +279,19 @@ def shared_by_all_after(clauses: Sequence[Clause], position: int) -> bool:
             for i in clause.items
         ):
             return False
-        if any(i.role == "all" for i in clause.items):
-            return True
+        alls = [i for i in clause.items if i.role == "all"]
+        if alls:
+            # ("cherry tomatoes, 10 rows at 1.5 m, and beef tomatoes, 10 rows at 1.8 m,
+            # both 0.5 m in-row": "both" said before a measure of its own, after a run
+            # that says again what an earlier field said for itself, is about that
+            # measure only)
+            leads = any(
+                g.role == "geometry" and g.start > a.start for a in alls for g in clause.items
+            )
+            run = _measure_keys([i for c in clauses[position:index] for i in c.items])
+            start = sentence_start(clauses, position)
+            said_before = _measure_keys([i for c in clauses[start:position] for i in c.items])
+            return not (leads and run & said_before)
         index += 1
     return False
 

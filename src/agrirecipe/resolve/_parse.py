@@ -33,8 +33,9 @@ step  pass                                        module (data)
       (which fields a measure is said of)         ``_measures``
 12    fields of each mention, their attributes    ``_fields``
       (stated, else visual cues), sizes, rows
-13    relations between fields; zone order        ``_relations``, ``_landmarks``,
-                                                  ``_links``, ``_zones``
+13    relations between fields (words between     ``_relations``, ``_links``;
+      mentions; rows and orders; directions       ``_rows``; ``_placements``;
+      said around a field; scenery); zone order   ``_landmarks``; ``_zones``
 ====  ==========================================  ===============================
 """
 
@@ -72,6 +73,7 @@ from agrirecipe.resolve._intent import (
     TraceStep,
 )
 from agrirecipe.resolve._labels import (
+    drop_list_numbers,
     place_compass_members,
     place_leading_directions,
     place_neighbouring_plots,
@@ -84,6 +86,7 @@ from agrirecipe.resolve._lexicon import (
     OtherCrop,
     Sense,
     Token,
+    everyday_words,
     tokenize,
     vocabulary,
 )
@@ -101,6 +104,7 @@ from agrirecipe.resolve._structure import (
     apply_corrections,
     apply_each_side,
     apply_plural_counts,
+    drop_alternatives,
     drop_negated,
     promote_weak_varieties,
     raise_conflicts,
@@ -168,7 +172,7 @@ class PromptReader(FieldReading):
                 stage="resolve",
                 hint=f"describe the fields you want, e.g. {_EXAMPLES}",
             )
-        text = spread_value_lists(expand_casual(prompt))
+        text = drop_list_numbers(spread_value_lists(expand_casual(prompt)))
 
         def tag(phrase: str) -> list[Item]:
             return self.lexicon.tag(tokenize(phrase))
@@ -211,6 +215,14 @@ class PromptReader(FieldReading):
             self.trace.append(
                 TraceStep(stage="decompose", subject=dropped, detail="replaced by a correction")
             )
+        for alternative in drop_alternatives(clauses):
+            self.trace.append(
+                TraceStep(
+                    stage="decompose",
+                    subject=alternative,
+                    detail="an alternative to the crop before it: one field, of the first named",
+                )
+            )
         raise_conflicts(clauses)
         for negated in drop_negated(clauses):
             self.trace.append(
@@ -224,7 +236,7 @@ class PromptReader(FieldReading):
             )
         share_leading_attributes(clauses)
         share_trailing_attributes(clauses)
-        mentions = apply_refinements(clauses, self.crop_categories)
+        mentions = apply_refinements(clauses, self.crop_categories, builder)
         mentions = share_counted_fields(mentions)
         mentions = drop_joint_headings(clauses, mentions)
         mentions = merge_coreferences(clauses, mentions, builder)
@@ -411,7 +423,13 @@ class PromptReader(FieldReading):
                 if plots and not named:
                     word = _word_before(items, position.get(id(plots[0])))
                     word = word or _word_after_of(items, position.get(id(plots[0])))
-                    if word is not None:
+                    # ("the little home orchard": an everyday word before a plot that
+                    # says its crops names no crop; real crops the hierarchy lacks were
+                    # refused by name before)
+                    everyday = word is not None and word.norm in everyday_words()
+                    if word is not None and not (
+                        everyday and plots[0].data["value"].get("options")
+                    ):
                         self._unknown_crop(word.raw)
                 crops = [h for h in sub.heads if h.role == "head" and h.senses_of("crop")]
                 if crops and not any(h.senses_of("variety") for h in sub.heads):

@@ -13,10 +13,10 @@ import itertools
 from collections.abc import Sequence
 
 from agrirecipe._errors import PromptError
-from agrirecipe.resolve._decompose import Clause, Mention
+from agrirecipe.resolve._decompose import Clause, Mention, MentionBuilder
 from agrirecipe.resolve._geometry import geometry_nouns
 from agrirecipe.resolve._lexicon import Item
-from agrirecipe.resolve._links import listing
+from agrirecipe.resolve._links import PRONOUNS, listing
 from agrirecipe.resolve._structure import (
     EACH,
     POINTER_WORDS,
@@ -59,7 +59,9 @@ def _fits(sub: Mention, parent: Mention, crop_categories: dict[str, str]) -> boo
     return True
 
 
-def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]) -> list[Mention]:
+def apply_refinements(
+    clauses: Sequence[Clause], crop_categories: dict[str, str], builder: MentionBuilder
+) -> list[Mention]:
     """Fold refinements into their plural mention; return the remaining top-level mentions."""
     _join_of_which(clauses)
     top: list[Mention] = []
@@ -196,6 +198,35 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
                 parent.refinements.extend([member] * members)
             clause.mentions, clause.loose = [], []
             clause.refined_parent = parent
+            continue
+        if (
+            parent is not None
+            and previous is not None
+            and previous.mentions[-1:] == [parent]
+            and not parent.refinements
+            and _bracketed_variety(clause, parent)
+            and clause.index + 1 < len(clauses)
+            and _link_norm(clauses[clause.index + 1]) == ")"
+        ):
+            # "2 strawberry fields (sonata)": the variety of them all
+            for head in clause.mentions[0].heads:
+                builder.add_head(parent, head)
+            parent.items.extend(i for i in clause.mentions[0].items if i.role != "head")
+            clause.mentions, clause.loose = [], []
+            continue
+        if (
+            parent is not None
+            and previous is not None
+            and (listed_member := previous.refinement) is not None
+            and previous.refined_parent is parent
+            and _bracketed_variety(clause, listed_member)
+        ):
+            # "2 fields: carrots (nantes) & cabbage (savoy)": the listed member's variety
+            for head in clause.mentions[0].heads:
+                builder.add_head(listed_member, head)
+            listed_member.items.extend(i for i in clause.mentions[0].items if i.role != "head")
+            clause.mentions, clause.loose = [], []
+            clause.refined_parent, clause.refinement = parent, listed_member
             continue
         if parent is not None and joined and len(clause.mentions) <= 1:
             assert link is not None
@@ -351,6 +382,27 @@ def apply_refinements(clauses: Sequence[Clause], crop_categories: dict[str, str]
     return top
 
 
+def _link_norm(clause: Clause) -> str | None:
+    return clause.link.norm if clause.link is not None else None
+
+
+def _bracketed_variety(clause: Clause, member: Mention) -> bool:
+    """Whether a clause opened by a bracket names only a variety of the crop of the
+    member listed just before it ("carrots (nantes)")."""
+    if clause.link is None or clause.link.norm != "(" or len(clause.mentions) != 1:
+        return False
+    said = clause.mentions[0]
+    crops = strong_crops(said)
+    return (
+        names_a_variety(said)
+        and not names_a_variety(member)
+        and bool(crops)
+        and crops == strong_crops(member)
+        and said.count is None
+        and all(h.role == "head" for h in said.heads)
+    )
+
+
 def _describes_plants(mentions: Sequence[Mention]) -> bool:
     """One uncounted mention named only by a word for plants or their parts ("fruit")."""
     if len(mentions) != 1 or mentions[0].count is not None:
@@ -364,9 +416,12 @@ _RELATIVE = frozenset({"that", "which", "where", "whose"})
 
 
 def _member_detail(item: Item) -> bool:
-    """A word of a listed member's details: "ridges 100 m long", "(75 cm, 2 rows per ridge)"."""
-    return item.role in _MEMBER_DETAIL_ROLES or (
-        item.role in ("unknown", "length_unit") and item.norm in (*geometry_nouns(), "cm", "m")
+    """A word of a listed member's details: "ridges 100 m long", "(75 cm, 2 rows per ridge)",
+    "cabbage in the middle one" (the plot named by "one")."""
+    return (
+        item.role in _MEMBER_DETAIL_ROLES
+        or (item.role in ("unknown", "length_unit") and item.norm in (*geometry_nouns(), "cm", "m"))
+        or (item.role == "number" and item.norm == "one")
     )
 
 
@@ -434,11 +489,13 @@ def _listed(clauses: Sequence[Clause], start: int, *, to_the_end: bool = False) 
 
 
 def _placed_by_scenery(clause: Clause) -> bool:
-    """'near the river', 'by the sheds': a relation to scenery, naming no field."""
+    """'near the river', 'by the sheds': a relation to scenery, naming no field (not
+    "beside it", which points back at one)."""
     return (
         not clause.mentions
         and bool(clause.items)
         and all(i.role in ("filler", "non_agricultural") for i in clause.items)
+        and not any(i.norm in PRONOUNS for i in clause.items)
     )
 
 

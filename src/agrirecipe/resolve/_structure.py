@@ -34,6 +34,7 @@ __all__ = [
     "definite_before_head",
     "definite_words",
     "descriptive_words",
+    "drop_alternatives",
     "drop_negated",
     "first_word",
     "has_room",
@@ -566,6 +567,31 @@ def share_counted_fields(mentions: Sequence[Mention]) -> list[Mention]:
             share.is_refinement = True
         index += len(shares)
     return result
+
+
+def drop_alternatives(clauses: Sequence[Clause]) -> list[str]:
+    """'grain field, wheat or corn idc', 'a field of wheat or maize': crops said as
+    alternatives ask for one field, of the first named. Returns the texts dropped."""
+    dropped: list[str] = []
+    for before, clause in itertools.pairwise(clauses):
+        if clause.link is None or clause.link.norm != "or" or len(clause.mentions) != 1:
+            continue
+        if not before.mentions:
+            continue
+        first, other = before.mentions[-1], clause.mentions[0]
+        head = min(other.heads, key=lambda h: h.start)
+        if (
+            first.has_crop
+            and other.has_crop
+            and (first.count or 1) == 1
+            and other.count is None
+            and not other.refinements
+            and not any(h.role == "plot" for h in other.heads)
+            and all(i.role == "filler" for i in clause.items if i.end <= head.start)
+        ):
+            clause.mentions.remove(other)
+            dropped.append(other.text)
+    return dropped
 
 
 def drop_negated(clauses: Sequence[Clause]) -> list[str]:

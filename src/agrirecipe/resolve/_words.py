@@ -17,7 +17,8 @@ each decides what a word is in its place, where the lexicon alone cannot:
     word before scenery, is a colour; a crop word before  "an orange tractor",
     a machine names its load                              "a grain trailer"
 2a  a colour crop word after "ripe and" is a colour       "hanging ripe and orange"
-2b  "different" before a measure says nothing of crops    "at different densities"
+2b  "different" before a measure says nothing of crops;   "at different densities",
+    kinds counted are different crops                     "3 kinds of fruit trees"
 2c  a colour change beside a ripeness cue is ripening;    "flopped over and yellowing",
     a young part of the plant is no young field           "the young green bunch"
 2d  a capitalised variety name right before a plot word   "the Conference block"
@@ -65,6 +66,7 @@ def read_words(items: Sequence[Item], text: str) -> None:
     _colours_are_not_crops(items, text)
     _colour_after_a_look(items)
     _measured_differences(items)
+    _counted_kinds(items)
     _ripening_colours(items)
     _variety_before_its_plot(items)
     _short_names_of_named_varieties(items)
@@ -352,16 +354,24 @@ def _colours_are_not_crops(items: Sequence[Item], text: str) -> None:
 
 
 def _colour_after_a_look(items: Sequence[Item]) -> None:
-    """'Washington Navels, fruit hanging ripe and orange, packed crates': a crop word that
-    is a colour, joined by "and" to a stage or look and ending its phrase, is a colour."""
-    for index in range(2, len(items)):
-        look, joiner, word = items[index - 2], items[index - 1], items[index]
+    """'Washington Navels, fruit hanging ripe and orange, packed crates', 'pulling them up
+    long and orange', 'the carrots are orange': a crop word that is a colour, ending its
+    phrase after a look joined by "and" (not a crop or plot), a copula or an intensifier,
+    is a colour."""
+    leads = reader_words("colour_leads")
+    for index in range(1, len(items)):
+        joiner, word = items[index - 1], items[index]
+        look = items[index - 2] if index >= 2 else None
         after = items[index + 1] if index + 1 < len(items) else None
+        described = joiner.norm in leads or (
+            joiner.norm in ("and", "&")
+            and look is not None
+            and look.role not in ("head", "plot", "number", "separator", "conjunction")
+        )
         if (
             word.role == "head"
             and word.norm in reader_words("colour_crops")
-            and joiner.norm in ("and", "&")
-            and (look.role in ("stage", "cue") or look.norm in reader_words("colours"))
+            and described
             and (after is None or after.role in ("separator", "conjunction"))
         ):
             word.role = "filler"
@@ -411,6 +421,21 @@ def _measured_differences(items: Sequence[Item]) -> None:
             item.role = "filler"
 
 
+def _counted_kinds(items: Sequence[Item]) -> None:
+    """'an orchard with 3 kinds of fruit trees', '3 varieties of apples': kinds counted
+    are different crops or varieties, one field each."""
+    for index in range(1, len(items) - 1):
+        number, kind, of = items[index - 1], items[index], items[index + 1]
+        if (
+            number.role == "number"
+            and number.norm not in ("a", "an", "one")
+            and kind.norm in reader_words("kinds")
+            and of.norm == "of"
+        ):
+            kind.role = "distinct"
+            number.data["counts_kinds"] = True  # ("3 kinds of fruit trees": not plants)
+
+
 def _variety_before_its_plot(items: Sequence[Item]) -> None:
     """'the Conference block with the Royal Gala next to it': a capitalised name of one
     crop's variety, also an everyday word, right before a plot word names the plot's
@@ -442,7 +467,8 @@ def _short_names_of_named_varieties(items: Sequence[Item]) -> None:
         ones = index + 1 < len(items) and items[index + 1].norm in ("one", "ones")
         if items[index - 1].norm != "the" or not (ones or item.role == "unknown"):
             continue
-        if item.role not in ("unknown", "filler", "head", "weak_variety"):
+        # ("the plum ones" after "plum tomatoes": no plum orchard)
+        if item.role not in ("unknown", "filler", "head", "weak_variety", "other_crop"):
             continue
         word = item.norm
         # ("the pinot has downy mildew" after "pinot noir vines": a name's first word)
@@ -453,7 +479,11 @@ def _short_names_of_named_varieties(items: Sequence[Item]) -> None:
             and earlier.senses_of("variety")
             and earlier.norm != word
             and (
-                (earlier.norm.split()[0] == word and len(earlier.norm.split()) > 1)
+                # ("the beefs are still green" after "Beef tomatoes": its plural too)
+                (
+                    earlier.norm.split()[0] in (word, word.removesuffix("s"))
+                    and len(earlier.norm.split()) > 1
+                )
                 or (ones and len(word) >= 4 and earlier.norm.split()[0].startswith(word))
             )
         ]
@@ -730,7 +760,8 @@ def _plots_of_a_list(items: Sequence[Item]) -> None:
             if before.role == "separator" and before.norm in SENTENCE_MARKS:
                 break
             comma = comma or (before.role == "separator" and crops == 0)
-            named = before.role == "head" and before.has("crop", "variety")
+            # ("Jonagold and Conference in two orchards": a capitalised weak variety too)
+            named = before.role in ("head", "weak_variety") and before.has("crop", "variety")
             if named and not joined:  # "tomatoes (san marzanno)": one crop named
                 crops += 1
             joined = named or (joined and before.norm in ("(", ")"))

@@ -117,9 +117,44 @@ def find_zones(tokens: Sequence[Token], claimed: Sequence[bool] = ()) -> list[Zo
     sides = {m.zone for m in found if m.zone != "middle"}
     if compass:
         sides -= {"near", "far"}
+    if len(sides) == 1 and (other := _the_other_half(found, tokens, taken)) is not None:
+        found.append(other)  # "Half the farm is maize, the northern half, and the rest ..."
+        sides.add(other.zone)
     if len(sides) < 2 and not (sides and any(m.zone == "middle" for m in found)):
         return []
     return sorted(found, key=lambda m: m.first)
+
+
+#: The opposite side of each compass side.
+_OPPOSITE_SIDE = {"north": "south", "south": "north", "east": "west", "west": "east"}
+#: Words for the half of a farm that one half leaves.
+_REST = (
+    ("the", "rest"),
+    ("the", "remainder"),
+    ("the", "other", "half"),
+    ("the", "remaining", "half"),
+)
+
+
+def _the_other_half(
+    found: Sequence[ZoneMatch], tokens: Sequence[Token], taken: Sequence[bool]
+) -> ZoneMatch | None:
+    """'Half the farm is maize, the northern half, and the rest is wheat': the rest of a
+    farm one half of which is named lies on the other side."""
+    halves = [
+        m
+        for m in found
+        if m.zone in _OPPOSITE_SIDE and any(t.norm == "half" for t in tokens[m.first : m.last])
+    ]
+    if len(halves) != 1:
+        return None
+    words = [t.norm for t in tokens]
+    for start in range(halves[0].last, len(words)):
+        for rest in _REST:
+            end = start + len(rest)
+            if tuple(words[start:end]) == rest and not any(taken[start:end]):
+                return ZoneMatch(_OPPOSITE_SIDE[halves[0].zone], start, end)
+    return None
 
 
 #: Compass sides in clockwise order, and how far each turns a view that faces north.
@@ -268,6 +303,16 @@ def zone_owners(items: Sequence[Item], fields: Sequence[Sequence[Item]]) -> list
             if after.role == "separator" and after.norm in _SENTENCE_ENDS:
                 break
             target = owner.get(id(after))
+            if (
+                after.role in _HEADS
+                and target is not None
+                and any(i.role == "zone" and i is not item for i in fields[target])
+                # (not a label: "North-west: Bing cherries. North-east: Williams pears.")
+                and items[position + 1].norm not in (":", "-", "–", "—")
+            ):
+                # "Half the farm is maize, the northern half, and the rest is wheat": the
+                # next field has a zone of its own, so this one stays with its field
+                break
             if after.role in _HEADS and target is not None:
                 moved = [
                     [i for i in field_items if i is not item] + ([item] if index == target else [])

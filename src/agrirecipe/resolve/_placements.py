@@ -1,0 +1,231 @@
+"""Fields placed by a direction said around them.
+
+"wheat to the north, maize to the south" (trailing directions: :func:`placements`
+and :func:`placement_pairs`), "West of the peppers, an onion plot" (a fronted
+relation), "To the north an orchard; in the middle ..." (placed against the middle
+field), "further north again, beyond the orchard, there's wheat" (a direction that
+gives "next to" its side). :func:`agrirecipe.resolve._relations.read_relations`
+calls them in its order.
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Sequence
+
+from agrirecipe.resolve._decompose import Clause, Mention
+from agrirecipe.resolve._links import OPPOSITE
+
+__all__ = [
+    "directed_neighbours",
+    "fronted_pair",
+    "placed_by_the_middle",
+    "placement_pairs",
+    "placements",
+]
+
+
+def directed_neighbours(clauses: Sequence[Clause]) -> dict[int, int]:
+    """'further north again, beyond the orchard, there's wheat': a direction said on its
+    own just before a 'next to' word gives that word its side. Maps the position of
+    the 'next to' clause to the direction's."""
+    found: dict[int, int] = {}
+    for position, clause in enumerate(clauses):
+        link = clause.link
+        if (
+            link is None
+            or link.role != "trailer"
+            or link.data.get("value") not in OPPOSITE
+            or clause.mentions
+            or any(i.role != "filler" for i in clause.items)
+        ):
+            continue
+        following = position + 1
+        while (
+            following < len(clauses)
+            and not clauses[following].items
+            and clauses[following].link is not None
+            and clauses[following].link.role == "separator"  # type: ignore[union-attr]
+        ):
+            following += 1
+        if following < len(clauses):
+            nxt = clauses[following].link
+            if nxt is not None and nxt.role == "relation" and nxt.data.get("value") == "next_to":
+                found[following] = position
+    return found
+
+
+def placed_by_the_middle(
+    clauses: Sequence[Clause], position: int
+) -> tuple[Mention, Mention] | None:
+    """The field a direction opening clause ``position`` places ("To the north an
+    orchard; in the middle ...") and the field "in the middle" it is placed against, or
+    None."""
+    clause = clauses[position]
+    link = clause.link
+    if link is None or link.role != "trailer" or link.data.get("value") not in OPPOSITE:
+        return None
+    placed = _opened_by(clauses, position)
+    if placed is None:
+        return None
+    middles = [
+        c.mentions[0]
+        for c in clauses
+        if c.link is not None
+        and c.link.role == "trailer"
+        and c.link.data.get("value") == "middle"
+        and len(c.mentions) == 1
+    ]
+    if len(middles) != 1 or middles[0] is placed:
+        return None
+    return placed, middles[0]
+
+
+def _opened_by(clauses: Sequence[Clause], position: int) -> Mention | None:
+    """The one field a direction opening clause ``position`` places: in that clause ("To
+    the north an orchard") or right after a comma ("To the north, the orchard, ...")."""
+    clause = clauses[position]
+    if len(clause.mentions) == 1 and clause.items[:1] == clause.mentions[0].items[:1]:
+        return clause.mentions[0]
+    following = clauses[position + 1] if position + 1 < len(clauses) else None
+    if (
+        not clause.mentions
+        and not clause.items
+        and following is not None
+        and following.link is not None
+        and following.link.norm == ","
+        and len(following.mentions) == 1
+    ):
+        return following.mentions[0]
+    return None
+
+
+def fronted_pair(clauses: Sequence[Clause], position: int) -> tuple[Mention, Mention] | None:
+    """'West of the peppers, an onion plot', 'north of A: Conference pears': a relation
+    that opens its sentence, its object and then its subject (subject, object)."""
+    clause = clauses[position]
+    link = clause.link
+    if link is None or link.role != "relation" or not clause.mentions:
+        return None
+    if position:
+        previous = clauses[position - 1]
+        opens = not previous.items and (
+            previous.link is None
+            or previous.link.norm in (";", ".", ":", "!", ",")
+            or previous.link.role == "conjunction"  # ", and south of the bananas a citrus"
+        )
+        if not opens:
+            return None
+    if len(clause.mentions) >= 2:
+        subject, target = clause.mentions[1], clause.mentions[0]
+    else:
+        after = position + 1
+        while (
+            after + 1 < len(clauses)
+            and not clauses[after].mentions
+            and clauses[after].link is not None
+            and clauses[after].link.norm == ","  # type: ignore[union-attr]
+            and all(i.role in ("filler", "side", "of") for i in clauses[after].items)
+        ):
+            after += 1  # "south of the orchard, across the lane, there's ...": scenery between
+        following = clauses[after] if after < len(clauses) else None
+        if (
+            following is None
+            or following.link is None
+            or following.link.norm not in (":", ",")
+            or not following.mentions
+        ):
+            return None
+        subject, target = following.mentions[0], clause.mentions[0]
+    return None if subject is target else (subject, target)
+
+
+#: Words a placed field's clause may go on with after the direction: its own details.
+_OWN = frozenset({"filler", "geometry", "of"})
+
+
+def placements(clauses: Sequence[Clause], members: dict[int, list[int]]) -> dict[int, Mention]:
+    """Fields placed by a trailing direction right after them: "wheat to the north, ...".
+
+    Maps the position of the trailer's clause to the one mention of the clause before
+    it ("an orchard with wheat to the north" names two and is read as before).
+    """
+    placed: dict[int, Mention] = {}
+    for position, clause in enumerate(clauses):
+        link = clause.link
+        if link is None or link.role != "trailer" or link.data.get("value") not in OPPOSITE:
+            continue
+        if position == 0 or clause.mentions or any(i.role not in _OWN for i in clause.items):
+            continue  # ("Gala on the north side planted at 3.5 m by 1 m": its own measures)
+        previous = clauses[_past_a_bracket(clauses, position - 1)].named
+        if len(previous) == 1 and id(previous[0]) in members:
+            placed[position] = previous[0]
+    return placed
+
+
+def _past_a_bracket(clauses: Sequence[Clause], index: int) -> int:
+    """``index``, or the clause before the bracket that clause ``index`` closes ("a
+    Cabernet vineyard (2.7 m rows) to the south": the vineyard is placed)."""
+    link = clauses[index].link
+    if clauses[index].named or link is None or link.norm != ")":
+        return index
+    for back in range(index - 1, 0, -1):
+        opening = clauses[back].link
+        if opening is not None and opening.norm == "(":
+            # ("(2.7 m rows, 1.2 m vines)": the bracket may name the same field again)
+            inside = {id(m) for c in clauses[back:index] for m in c.named}
+            return back - 1 if inside <= {id(m) for m in clauses[back - 1].named} else index
+    return index
+
+
+def placement_pairs(
+    clauses: Sequence[Clause], members: dict[int, list[int]], placed: dict[int, Mention]
+) -> list[tuple[int, Mention, Mention]]:
+    """(trailer position, placed field, what it is placed relative to) for each placement.
+
+    A placed field is related to the nearest field named without a direction (the
+    one before it, else the first after it): "an orchard, wheat to the north and
+    maize to the south", "wheat to the north, maize to the south and strawberries
+    between them". With no such field, opposite placements relate to each other:
+    "wheat to the north, maize to the south" is wheat north of maize. A placement
+    left without a partner is dropped here and read the usual way.
+    """
+    placed_ids = {id(m) for m in placed.values()}
+    # A field placed by a direction word of its own ("valencia oranges north of it")
+    # is not the centre others are placed around.
+    for clause, following in itertools.pairwise(clauses):
+        link = following.link
+        if (
+            clause.mentions
+            and link is not None
+            and link.role == "relation"
+            and link.data.get("value") in OPPOSITE
+        ):
+            placed_ids.add(id(clause.mentions[-1]))
+    free = [m for c in clauses for m in c.named if id(m) not in placed_ids and id(m) in members]
+    pairs: list[tuple[int, Mention, Mention]] = []
+    waiting: list[tuple[int, Mention]] = []
+    for position, mention in placed.items():
+        earlier = [m for m in free if m.clause < mention.clause]
+        later = [m for m in free if m.clause > mention.clause]
+        centre = earlier[-1] if earlier else (later[0] if later else None)
+        if centre is not None:
+            pairs.append((position, mention, centre))
+            continue
+        kind = clauses[position].link.data["value"]  # type: ignore[union-attr]
+        partner = next(
+            (
+                (p, m)
+                for p, m in waiting
+                if clauses[p].link.data["value"] == OPPOSITE[kind]  # type: ignore[union-attr]
+            ),
+            None,
+        )
+        if partner is None:
+            waiting.append((position, mention))
+            continue
+        waiting.remove(partner)
+        pairs.append((partner[0], partner[1], mention))
+    for position, _ in waiting:
+        del placed[position]
+    return pairs

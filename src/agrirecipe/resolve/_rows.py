@@ -1,0 +1,316 @@
+"""Fields in a row, in an order or around a middle one.
+
+"it goes vineyard, then a hedge, then salad greens" (a "then" chain), "three strips
+from west to east: ..." (a directed row), "the first ... north of the second"
+(ordinals), "one above the other", "three plots: carrots, onions in the middle, then
+potatoes" (a listed middle), "Z with X on each side" (surrounded), "Spelt on one side
+of the hedge, ... onions on the other", "three adjacent fields". Each reader returns
+the relations it finds; :func:`agrirecipe.resolve._relations.read_relations` calls them
+in its order.
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Sequence
+from typing import Any
+
+from agrirecipe.resolve._decompose import Clause, Mention
+from agrirecipe.resolve._intent import RelationIntent, TraceStep
+from agrirecipe.resolve._lexicon import Item
+from agrirecipe.resolve._links import (
+    coordinated,
+    field_relations,
+    fields_of,
+    following_list,
+    says,
+)
+
+__all__ = [
+    "TOWARDS",
+    "adjacent_rows",
+    "directed_row",
+    "in_a_row",
+    "listed_middle",
+    "one_and_the_other",
+    "one_side_and_the_other",
+    "ordinal_pair",
+    "surrounded",
+    "then_chain",
+]
+
+
+def then_chain(
+    clauses: Sequence[Clause],
+    members: dict[int, list[int]],
+    related: set[frozenset[int]],
+    trace: list[TraceStep],
+) -> list[RelationIntent]:
+    """'it goes vineyard, then a hedge, then salad greens, then corn', 'you pass the
+    strawberries, then the Riesling vineyard': fields named one after another with
+    "then" lie one beside the next (the middle one of three between the others),
+    unless the text already placed them ("west to east: ..., then ...")."""
+    chain: list[Mention] = []
+    for position, clause in enumerate(clauses):
+        link = clause.link
+        if not clause.mentions:
+            continue
+        mention = clause.mentions[0]
+        follows = (link is not None and link.norm == "then") or (
+            position > 0
+            and clauses[position - 1].link is not None
+            and clauses[position - 1].link.norm == "then"  # type: ignore[union-attr]
+            and not clauses[position - 1].items
+        )
+        if follows and chain:
+            if all(mention is not m for m in chain):
+                chain.append(mention)
+        elif not chain or len(chain) < 2:
+            chain = [clause.mentions[-1]]
+    fields = [m for m in chain if len(members.get(id(m), [])) == 1]
+    indices = [members[id(m)][0] for m in fields]
+    if len(fields) < 2 or any(frozenset(pair) in related for pair in itertools.pairwise(indices)):
+        return []
+    link_item = next(c.link for c in clauses if c.link is not None and c.link.norm == "then")
+    relations: list[RelationIntent] = []
+    for first, second in itertools.pairwise(fields):
+        relations.extend(field_relations("next_to", second, (first,), members, link_item, trace))
+    if len(fields) == 3:
+        relations.extend(
+            field_relations("between", fields[1], (fields[0], fields[2]), members, link_item, trace)
+        )
+    return relations
+
+
+_ORDINALS = {"first": 0, "second": 1, "third": 2, "fourth": 3}
+
+
+def ordinal_pair(clauses: Sequence[Clause], position: int) -> tuple[int, int] | None:
+    """The members "the first ... north of the second" name (0-based), or None."""
+
+    def ordinal(clause: Clause) -> int | None:
+        # ("the second block is east of the first": a plot word of no crop says nothing)
+        words = [
+            w
+            for i in clause.items
+            if i.role != "plot"
+            for w in i.norm.split()
+            if w not in _ORDINAL_FILLERS
+        ]
+        if any(m.has_crop or m.category is not None for m in clause.mentions) or len(words) != 1:
+            return None
+        return _ORDINALS.get(words[0])
+
+    if position == 0:
+        return None
+    subject, obj = ordinal(clauses[position - 1]), ordinal(clauses[position])
+    return (subject, obj) if subject is not None and obj is not None else None
+
+
+#: Words around an ordinal that say nothing more ("the first one is ...").
+_ORDINAL_FILLERS = frozenset({"the", "one", "is", "lies", "sits", "are"})
+
+
+def one_and_the_other(clauses: Sequence[Clause], position: int) -> bool:
+    """Whether the relation at ``position`` is said as "one above the other"."""
+    clause = clauses[position]
+    before = clauses[position - 1] if position else None
+    return (
+        before is not None
+        and not before.mentions
+        and [i.norm for i in before.items] == ["one"]
+        and not clause.mentions
+        and [i.norm for i in clause.items] == ["the other"]
+    )
+
+
+#: "from west to east": each field of the row lies on this side of the next one.
+TOWARDS = {
+    "towards_east": "west_of",
+    "towards_west": "east_of",
+    "towards_north": "south_of",
+    "towards_south": "north_of",
+}
+
+
+def directed_row(
+    clauses: Sequence[Clause],
+    position: int,
+    members: dict[int, list[int]],
+    link: Item,
+    trace: list[TraceStep],
+    warnings: list[str],
+) -> list[RelationIntent]:
+    """'three strips from west to east: wheat, potatoes, maize', 'A, B and C from north
+    to south': the fields in the order named, each on one side of the next."""
+    fields = fields_of(list(reversed(coordinated(clauses, position))), members)
+    if len(fields) < 2:
+        # "going west to east: tomatoes first, then the jalapenos, then peppers";
+        # "going east you pass Hamlin oranges, then Navel": the clause's own field first
+        own = clauses[position].mentions[-1:]
+        previous = clauses[position - 1] if position else None
+        start: list[Mention] = []
+        if previous is not None and previous.link is not None and previous.link.norm == "then":
+            # "Gala trees first, then heading east the Durondeau pears": from the field
+            # named before "then"
+            start = [m for c in clauses[:position] for m in c.mentions][-1:]
+        fields = fields_of(start + following_list(clauses, position, own), members)
+    if len(fields) < 2:
+        warnings.append(f"ignored {link.raw!r}: it needs two or more fields before it")
+        return []
+    if link.norm.startswith("looking") and any(
+        i.role == "zone" for c in clauses[position:] for m in c.mentions for i in m.items
+    ):
+        # "Looking north: wheat at the far north end, ... strawberries closest to me":
+        # the zones place the fields; the view only says where the viewer faces
+        return []
+    kind = TOWARDS[str(link.data["value"])]
+    trace.append(
+        TraceStep(
+            stage="decompose",
+            subject=link.raw,
+            detail=f"{len(fields)} fields in a row, each {kind.replace('_', ' ')} the next",
+        )
+    )
+    return [
+        RelationIntent(kind=kind, subject=a, objects=(b,), text=link.raw)
+        for a, b in itertools.pairwise(fields)
+    ]
+
+
+def listed_middle(
+    clauses: Sequence[Clause], position: int, link: Item
+) -> tuple[Mention, tuple[Mention, Mention]] | None:
+    """'three plots: carrots, onions in the middle, then potatoes': the middle one of
+    three listed members is between the other two."""
+    if link.role != "trailer" or link.data.get("value") != "middle" or not position:
+        return None
+    previous = clauses[position - 1]
+    parent, member = previous.refined_parent, previous.refinement
+    if parent is None or member is None:
+        return None
+    listed: list[Mention] = []
+    for sub in parent.refinements:
+        if not any(sub is seen for seen in listed):
+            listed.append(sub)
+    if len(listed) != 3 or listed[1] is not member:
+        return None
+    return member, (listed[0], listed[2])
+
+
+def one_side_and_the_other(
+    clauses: Sequence[Clause],
+    members: dict[int, list[int]],
+    relations: Sequence[RelationIntent],
+    trace: list[TraceStep],
+) -> list[RelationIntent]:
+    """'Spelt on one side of the hedge, ..., and Walla Walla onions on the other': two
+    fields on the two sides of one thing are next to each other."""
+    mentions = [m for c in clauses for m in c.mentions]
+    one = next((m for m in mentions if says(m, ("one", "side"))), None)
+    other = next(
+        (m for m in mentions if m is not one and any(i.norm == "the other" for i in m.items)),
+        None,
+    )
+    if one is None or other is None or len(members.get(id(one), [])) != 1:
+        return []
+    if len(members.get(id(other), [])) != 1:
+        return []
+    pair = {members[id(one)][0], members[id(other)][0]}
+    if any({r.subject, *r.objects} == pair for r in relations):
+        return []
+    side = next(i for i in one.items if i.norm == "side")
+    return field_relations("next_to", other, (one,), members, side, trace)
+
+
+def adjacent_rows(
+    clauses: Sequence[Clause], members: dict[int, list[int]], trace: list[TraceStep]
+) -> list[RelationIntent]:
+    """'three adjacent fields': the fields of a mention described as adjacent, in a row."""
+    rows: list[RelationIntent] = []
+    seen: set[int] = set()
+    for clause in clauses:
+        for mention in clause.mentions:
+            fields = members.get(id(mention), [])
+            adjacent = [i for i in mention.items if i.data.get("adjacent")]
+            if len(fields) < 2 or not adjacent or id(mention) in seen:
+                continue
+            seen.add(id(mention))
+            rows += in_a_row(fields, mention, adjacent[0], trace, ordered=False)
+    return rows
+
+
+def in_a_row(
+    fields: Sequence[int], mention: Mention, word: Item, trace: list[TraceStep], *, ordered: bool
+) -> list[RelationIntent]:
+    """The fields of one mention side by side in the order named; with ``ordered`` and
+    three of them, the middle one also between the other two ("in a line")."""
+    trace.append(
+        TraceStep(
+            stage="decompose",
+            subject=word.raw,
+            detail=f"the {len(fields)} fields of {mention.text!r} in a row",
+        )
+    )
+    row = [
+        RelationIntent(kind="next_to", subject=b, objects=(a,), text=word.raw)
+        for a, b in itertools.pairwise(fields)
+    ]
+    if ordered and len(fields) == 3:
+        row.append(
+            RelationIntent(
+                kind="between", subject=fields[1], objects=(fields[0], fields[2]), text=word.raw
+            )
+        )
+    return row
+
+
+def surrounded(
+    value: str,
+    clauses: Sequence[Clause],
+    position: int,
+    before: Sequence[Mention],
+    after: Sequence[Mention] = (),
+) -> tuple[Any, Mention, tuple[Mention, ...]] | None:
+    """'Z with X on each side' and 'X, Y and Z, Z in the middle': Z between the other two.
+
+    For "on each side" the mention just before the words is on both sides (its
+    count was made two by :func:`~agrirecipe.resolve._structure.apply_each_side`)
+    and the one before it is in the middle.
+    """
+    distinct: list[Mention] = []
+    for mention in before:  # a field named twice counts once
+        if mention.refinements and any(r is m for r in mention.refinements for m in before):
+            continue  # "three strips: A, B and C": the members stand, not the plural
+        if not any(mention is seen for seen in distinct):
+            distinct.append(mention)
+    if value == "each_side":
+        if len(distinct) < 2 or (distinct[-1].count or 1) < 2:
+            return None
+        return "between", distinct[-2], (distinct[-1], distinct[-1])
+    middle = before[-1] if before else None
+    others = [m for m in distinct if m is not middle]
+    if middle is not None and not others:
+        # "california wonder in the middle, cayenne on one side, padron on the other": the
+        # two named after it in its sentence
+        end = next(
+            (
+                c.index
+                for c in clauses[position + 1 :]
+                if c.link is not None and c.link.norm in (".", "!", "?", ";")
+            ),
+            len(clauses),
+        )
+        others = list(
+            {
+                id(m): m for c in clauses[position + 1 : end] for m in c.named if m is not middle
+            }.values()
+        )
+        if len(others) == 2:
+            return "between", middle, (others[0], others[1])
+        return None
+    if middle is not None and len(others) == 1 and (others[0].count or 1) == 2:
+        return "between", middle, (others[0], others[0])  # "two potato fields and ..."
+    if middle is None or len(others) != 2:
+        return None
+    return "between", middle, (others[0], others[1])
