@@ -14,6 +14,7 @@ import itertools
 from collections.abc import Sequence
 
 from agrirecipe.resolve._decompose import Clause, Mention, MentionBuilder
+from agrirecipe.resolve._lexicon import reader_words
 from agrirecipe.resolve._links import ARTICLES, coordinated
 from agrirecipe.resolve._structure import (
     EACH,
@@ -29,7 +30,6 @@ from agrirecipe.resolve._structure import (
     same_variety,
     strong_crops,
 )
-from agrirecipe.resolve._words import reader_words
 
 __all__ = ["merge_appositive_plots", "merge_coreferences"]
 

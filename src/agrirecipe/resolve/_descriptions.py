@@ -13,14 +13,13 @@ import itertools
 from collections.abc import Sequence
 
 from agrirecipe.resolve._decompose import Clause, Mention
-from agrirecipe.resolve._lexicon import vocabulary
+from agrirecipe.resolve._lexicon import reader_words, vocabulary
 from agrirecipe.resolve._structure import (
     definite_before_head,
     descriptive_words,
     names_a_variety,
     strong_crops,
 )
-from agrirecipe.resolve._words import reader_words
 
 __all__ = ["dissolve_plant_parts"]
 

@@ -31,6 +31,7 @@ __all__ = [
     "Token",
     "build_lexicon",
     "normalise",
+    "reader_words",
     "tokenize",
     "vocabulary",
 ]
@@ -227,6 +228,12 @@ def _load(name: str) -> dict[str, Any]:
 def vocabulary() -> dict[str, Any]:
     """The parsed ``vocabulary.yaml``."""
     return _load("vocabulary.yaml")
+
+
+@functools.cache
+def reader_words(name: str) -> frozenset[str]:
+    """A list of words one reading pass looks for (``reader_words`` in vocabulary.yaml)."""
+    return frozenset(str(word) for word in vocabulary()["reader_words"][name])
 
 
 def _plurals(phrase: str) -> list[str]:

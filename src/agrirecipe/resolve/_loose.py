@@ -22,6 +22,7 @@ from agrirecipe.resolve._fields import (
 )
 from agrirecipe.resolve._lexicon import (
     Item,
+    reader_words,
 )
 from agrirecipe.resolve._links import PRONOUNS, coordinated
 from agrirecipe.resolve._measures import (
@@ -41,7 +42,6 @@ from agrirecipe.resolve._structure import (
     per_bed,
     strong_crops,
 )
-from agrirecipe.resolve._words import reader_words
 
 __all__ = ["attach_loose"]
 

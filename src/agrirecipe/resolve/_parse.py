@@ -21,8 +21,9 @@ step  pass                                        module (data)
       scenery and purpose words                   cues.yaml, scenery.yaml, ...)
 6     typos and unseen names                      the strategy's reader
 7     each phrase's role; latitudes; sizes        ``_scan``
-7b    what single words are in their place        ``_words`` (vocabulary.yaml
-      (counts that are not, labels, negations)    ``reader_words``)
+7b    what single words are in their place        ``_words``, ``_looks``
+      (counts that are not, labels, negations,    (vocabulary.yaml
+      colours and looks)                          ``reader_words``)
 8     scenery-only prompts, unknown crops         ``PromptReader._reject_*``
 9     clauses and mentions                        ``_decompose``
 10    counts, corrections, shared attributes;     ``_structure``,
@@ -87,6 +88,7 @@ from agrirecipe.resolve._lexicon import (
     Sense,
     Token,
     everyday_words,
+    reader_words,
     tokenize,
     vocabulary,
 )
@@ -114,7 +116,7 @@ from agrirecipe.resolve._structure import (
     share_trailing_attributes,
     take_the_lower_count,
 )
-from agrirecipe.resolve._words import purpose_diseases, read_words, reader_words
+from agrirecipe.resolve._words import purpose_diseases, read_words
 from agrirecipe.resolve._zones import (
     complete_orders,
     drop_placed_neighbours,

@@ -37,18 +37,27 @@ each decides what a word is in its place, where the lexicon alone cannot:
 11  sizes given "respectively"                            "2 ha and 3 ha respectively"
 ==  ====================================================  ===========================
 
-The words each pass looks for are data (``reader_words`` in vocabulary.yaml).
+The words each pass looks for are data (``reader_words`` in vocabulary.yaml). The
+passes about looks (2, 2a, 2c, 3, 4, 4a) live in ``_looks``.
 """
 
 from __future__ import annotations
 
-import functools
 import itertools
 from collections.abc import Sequence
 
 from agrirecipe.resolve._fields import ATTRIBUTE_ROLES
 from agrirecipe.resolve._geometry import geometry_nouns
-from agrirecipe.resolve._lexicon import Item, vocabulary
+from agrirecipe.resolve._lexicon import Item, reader_words
+from agrirecipe.resolve._looks import (
+    colour_after_a_look,
+    colours_are_not_crops,
+    crops_of,
+    negated_looks,
+    past_and_other_readiness,
+    ripening_colours,
+    weather_on_plants,
+)
 from agrirecipe.resolve._structure import descriptive_words
 
 __all__ = ["SENTENCE_MARKS", "purpose_diseases", "read_words", "reader_words"]
@@ -63,16 +72,16 @@ def read_words(items: Sequence[Item], text: str) -> None:
     _this_one(items)
     _article_of_a_container(items)
     _twins_and_compounds(items, text)
-    _colours_are_not_crops(items, text)
-    _colour_after_a_look(items)
+    colours_are_not_crops(items, text)
+    colour_after_a_look(items)
     _measured_differences(items)
     _counted_kinds(items)
-    _ripening_colours(items)
+    ripening_colours(items)
     _variety_before_its_plot(items)
     _short_names_of_named_varieties(items)
-    _past_and_other_readiness(items)
-    _negated_looks(items)
-    _weather_on_plants(items)
+    past_and_other_readiness(items)
+    negated_looks(items)
+    weather_on_plants(items)
     _all_as_intensifier(items)
     _every_plot(items)
     _plots_of_a_list(items)
@@ -164,7 +173,7 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
     named: set[str] = set()
     for index, (item, following) in enumerate(itertools.pairwise(items)):
         if item.role in ("head", "weak_variety"):
-            named |= _crops_of(item)
+            named |= crops_of(item)
         if not named or item.role != "quantity":
             continue
         ahead = items[index + 2 : index + 6]
@@ -174,7 +183,7 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
         plants_named = (
             following.role == "head"
             and following.has("crop")
-            and _crops_of(following) <= named
+            and crops_of(following) <= named
             and not any(i.role in ("plot", "size", "geometry") for i in ahead)
             and any(i.role in ("health", "cue", "stage") for i in ahead)
         )
@@ -213,13 +222,6 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
             item.data["date"] = True
 
 
-def _holds_not(plot: Item, crops: set[str]) -> bool:
-    """Whether ``plot`` is a plot word that can hold none of ``crops`` ("roots")."""
-    spec = plot.data.get("value") if plot.role == "plot" else None
-    options = set(spec.get("options", ())) if isinstance(spec, dict) else set()
-    return bool(options) and bool(crops) and not options & crops
-
-
 def _structure(item: Item) -> bool:
     """A structure crops grow under ("tunnels"), which a number may count as fields."""
     return any(sense.value == "structures" for sense in item.senses_of("scenery"))
@@ -248,13 +250,6 @@ def _twins_and_compounds(items: Sequence[Item], text: str) -> None:
         items[-1].role = "filler"
 
 
-def _crops_of(item: Item) -> set[str]:
-    """The crops a crop or variety word names."""
-    return {str(s.value) for s in item.senses_of("crop")} | {
-        str(s.crop) for s in item.senses_of("variety") if s.crop
-    }
-
-
 def _purpose(item: Item) -> bool:
     """A word naming what a request is for ("dataset", "test", "survey")."""
     group = item.data.get("scenery") or next(
@@ -277,7 +272,7 @@ def _totals_are_not_sizes(items: Sequence[Item]) -> None:
         if any(after[: len(words)] == tuple(words.split()) for words in reader_words("totals")):
             totals.append(item)
     sizes = [i for i in items if i.role == "size"]
-    crops = {crop for i in items if i.role == "head" for crop in _crops_of(i)}
+    crops = {crop for i in items if i.role == "head" for crop in crops_of(i)}
     one_field = (
         len(totals) == len(sizes) == 1
         and len(crops) == 1
@@ -290,127 +285,6 @@ def _totals_are_not_sizes(items: Sequence[Item]) -> None:
     for item in [] if one_field else totals:
         item.role = "filler"
         item.data["total"] = True
-
-
-def _worn_scenery(items: Sequence[Item], first: Item) -> bool:
-    """'Rusty watering can', 'a rusted gate', 'a rusty old harvester': the scenery's look
-    (a worn look before scenery, past at most two plain adjectives), not the crop's."""
-    if first.role != "health" or first.norm not in reader_words("worn_looks"):
-        return False
-    after = [i for i in items if i.start > first.start][:3]
-    for item in after:
-        if item.has("scenery") and not item.has("crop", "variety", "plot", "category"):
-            return True
-        if item.role not in ("filler", "unknown") or item.has("crop", "variety", "plot"):
-            return False
-    return False
-
-
-def _colours_are_not_crops(items: Sequence[Item], text: str) -> None:
-    """'striped yellow-orange with rust', 'olive-green velvety patches': a crop word joined
-    by a hyphen to a colour is a colour, not a field (nor an unknown crop). 'an orange
-    tractor', 'orange crates': a crop word that is a colour, before scenery, is its colour."""
-    for first, second in itertools.pairwise(items):
-        if (
-            first.role in ("head", "other_crop", "category")
-            and second.has("scenery")
-            and not second.has("crop", "variety", "plot", "category")
-            and (
-                first.norm in reader_words("colours")
-                # "a grain trailer", "the potato harvester": what the machine carries
-                or any(sense.value == "machines" for sense in second.senses_of("scenery"))
-                # "Fruit research station": what a site or building is for
-                or (
-                    first.has("category")
-                    and not first.has("crop", "variety")
-                    and any(
-                        s.value in ("sites", "buildings", "robots", "purposes")
-                        for s in second.senses_of("scenery")
-                    )
-                )
-            )
-        ) or _worn_scenery(items, first):
-            first.role = "filler"
-            first.data["colour"] = True
-            continue
-        if (
-            first.norm in reader_words("colour_crops")
-            and text[first.end : second.start] == " "
-            and (
-                second.norm in reader_words("colours")
-                # "the orange roots are heaped in the trailer": no orange grows in roots
-                or (first.role == "head" and _holds_not(second, _crops_of(first)))
-            )
-        ):
-            first.role = "filler"  # "olive green blotches", "lime green", "cherry red"
-            first.data["colour"] = True
-            continue
-        if text[first.end : second.start] != "-":
-            continue
-        for crop, colour in ((first, second), (second, first)):
-            if crop.role in ("head", "other_crop") and colour.norm in reader_words("colours"):
-                crop.role = "filler"
-                crop.data["colour"] = True
-
-
-def _colour_after_a_look(items: Sequence[Item]) -> None:
-    """'Washington Navels, fruit hanging ripe and orange, packed crates', 'pulling them up
-    long and orange', 'the carrots are orange': a crop word that is a colour, ending its
-    phrase after a look joined by "and" (not a crop or plot), a copula or an intensifier,
-    is a colour."""
-    leads = reader_words("colour_leads")
-    for index in range(1, len(items)):
-        joiner, word = items[index - 1], items[index]
-        look = items[index - 2] if index >= 2 else None
-        after = items[index + 1] if index + 1 < len(items) else None
-        described = joiner.norm in leads or (
-            joiner.norm in ("and", "&")
-            and look is not None
-            and look.role not in ("head", "plot", "number", "separator", "conjunction")
-        )
-        if (
-            word.role == "head"
-            and word.norm in reader_words("colour_crops")
-            and described
-            and (after is None or after.role in ("separator", "conjunction"))
-        ):
-            word.role = "filler"
-            word.data["colour"] = True
-
-
-def _ripening_colours(items: Sequence[Item]) -> None:
-    """'tops all flopped over and yellowing': a colour change said with a ripeness cue is
-    the crop ripening (senescence), not disease; 'the young green bunch': a young part of
-    the plants says nothing of the field's stage."""
-    for index, item in enumerate(items):
-        if item.role != "health" or item.norm not in reader_words("senescence"):
-            continue
-        near = [i for i in items[max(0, index - 3) : index + 4] if i is not item]
-        if any(_ripeness(i) for i in near):
-            item.role = "filler"
-    # "tops still green but the roots ... ready for lifting": the leaves, not the field
-    for before, item in itertools.pairwise(items):
-        if item.role == "stage" and before.norm in reader_words("green_parts"):
-            item.role = "filler"
-    # "a purple flower bud below the young green bunch": the part is young, not the field
-    parts = reader_words("young_parts")
-    for index, item in enumerate(items):
-        if item.role == "stage" and item.norm in ("young", "new", "fresh"):
-            following = [i for i in items[index + 1 : index + 3] if i.role != "filler"]
-            if any(i.norm in parts for i in items[index + 1 : index + 3]) and not any(
-                i.role in ("head", "plot") for i in following[:1]
-            ):
-                item.role = "filler"
-
-
-def _ripeness(item: Item) -> bool:
-    """A cue or stated word for a ripening crop ("tops flopped over", "ready to lift")."""
-    if item.role == "stage":
-        return str(item.data.get("value")) == "Maturation"
-    return item.role == "cue" and any(
-        sense.value.attribute == "stage" and sense.value.value == "Maturation"
-        for sense in item.senses_of("cue")
-    )
 
 
 def _measured_differences(items: Sequence[Item]) -> None:
@@ -492,31 +366,6 @@ def _short_names_of_named_varieties(items: Sequence[Item]) -> None:
             item.role = "head"
 
 
-def _past_and_other_readiness(items: Sequence[Item]) -> None:
-    """'wire hoops ready for the fleece': not the crop's stage. 'drilled last October;
-    it's May now': a month said as when the crop was sown is not the scene's time (when
-    another time is said)."""
-    times = [i for i in items if i.role in ("month", "season")]
-    for index, item in enumerate(items):
-        following = [i.norm for i in items[index + 1 : index + 4]]
-        if item.role == "stage" and item.norm == "ready" and following[:1] == ["for"]:
-            what = next((word for word in following[1:] if word != "the"), "")
-            if what not in reader_words("harvests"):
-                item.role = "filler"
-        if item.role != "month" or len(times) < 2:
-            continue
-        before = [i.norm for i in items[max(0, index - 3) : index]]
-        last = before[-1] if before else ""
-        if (
-            last == "last"
-            or last in reader_words("sown")
-            # "sown in April", "sown back in April"
-            or (last == "in" and any(w in reader_words("sown") for w in before[:-1]))
-        ):
-            item.role = "filler"
-            item.data["sown"] = True
-
-
 def _respective_sizes(items: Sequence[Item]) -> None:
     """'30x40m and 30x60m respectively': sizes listed before "respectively" are one for
     each field named before them, in order (``give_respectively`` gives them out)."""
@@ -580,18 +429,6 @@ def _this_one(items: Sequence[Item]) -> None:
             number.role = "filler"
 
 
-def _weather_on_plants(items: Sequence[Item]) -> None:
-    """'January King cabbages dusted with snow': a look said of weather on the plants
-    ("dusted with", "covered in" snow, frost, dew) is no disease."""
-    for first, of, what in zip(items, items[1:], items[2:], strict=False):
-        if (
-            first.role == "health"
-            and of.norm in ("with", "in", "by")
-            and what.norm in reader_words("weather_coats")
-        ):
-            first.role = "filler"
-
-
 def _all_as_intensifier(items: Sequence[Item]) -> None:
     """'our wheat, all green and even, drilled at 12.5 cm': "all" before a plain word
     stresses it; it does not say the rest of the sentence of every field."""
@@ -636,14 +473,6 @@ def _every_plot(items: Sequence[Item]) -> None:
         if after is not None and after.role in ("head", "weak_variety", "of", "number"):
             continue
         plot.role = "filler"
-
-
-def _negated_looks(items: Sequence[Item]) -> None:
-    """'not in ear yet', 'no flowers yet', 'no spots on the leaves': a stage word or a
-    visual cue right after a negation says what the field is not, so it says nothing."""
-    for negation, item in itertools.pairwise(items):
-        if negation.role == "negation" and (item.role == "stage" or "cue" in item.data):
-            item.data["negated"] = True
 
 
 def _plot_numbers_are_names(items: Sequence[Item]) -> None:
@@ -795,12 +624,6 @@ def _plots_of_a_list(items: Sequence[Item]) -> None:
         for word in between:
             if word.role == "geometry":
                 word.data["of_each_plot"] = True
-
-
-@functools.cache
-def reader_words(name: str) -> frozenset[str]:
-    """A list of words one reading pass looks for (``reader_words`` in vocabulary.yaml)."""
-    return frozenset(str(word) for word in vocabulary()["reader_words"][name])
 
 
 def purpose_diseases(items: Sequence[Item], text: str) -> None:

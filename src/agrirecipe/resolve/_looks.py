@@ -1,0 +1,204 @@
+"""What words of looks are in their place: colours that are crop words, a colour change
+that is ripening, weather on the plants, looks negated, readiness said of other things.
+
+Reading passes of :func:`agrirecipe.resolve._words.read_words` (rows 2, 2a, 2c, 3, 4 and
+4a of its table), each deciding what a look word is where the lexicon alone cannot.
+The words each pass looks for are data (``reader_words`` in vocabulary.yaml).
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Sequence
+
+from agrirecipe.resolve._lexicon import Item, reader_words
+
+__all__ = [
+    "colour_after_a_look",
+    "colours_are_not_crops",
+    "crops_of",
+    "negated_looks",
+    "past_and_other_readiness",
+    "ripening_colours",
+    "weather_on_plants",
+]
+
+
+def _holds_not(plot: Item, crops: set[str]) -> bool:
+    """Whether ``plot`` is a plot word that can hold none of ``crops`` ("roots")."""
+    spec = plot.data.get("value") if plot.role == "plot" else None
+    options = set(spec.get("options", ())) if isinstance(spec, dict) else set()
+    return bool(options) and bool(crops) and not options & crops
+
+
+def crops_of(item: Item) -> set[str]:
+    """The crops a crop or variety word names."""
+    return {str(s.value) for s in item.senses_of("crop")} | {
+        str(s.crop) for s in item.senses_of("variety") if s.crop
+    }
+
+
+def _worn_scenery(items: Sequence[Item], first: Item) -> bool:
+    """'Rusty watering can', 'a rusted gate', 'a rusty old harvester': the scenery's look
+    (a worn look before scenery, past at most two plain adjectives), not the crop's."""
+    if first.role != "health" or first.norm not in reader_words("worn_looks"):
+        return False
+    after = [i for i in items if i.start > first.start][:3]
+    for item in after:
+        if item.has("scenery") and not item.has("crop", "variety", "plot", "category"):
+            return True
+        if item.role not in ("filler", "unknown") or item.has("crop", "variety", "plot"):
+            return False
+    return False
+
+
+def colours_are_not_crops(items: Sequence[Item], text: str) -> None:
+    """'striped yellow-orange with rust', 'olive-green velvety patches': a crop word joined
+    by a hyphen to a colour is a colour, not a field (nor an unknown crop). 'an orange
+    tractor', 'orange crates': a crop word that is a colour, before scenery, is its colour."""
+    for first, second in itertools.pairwise(items):
+        if (
+            first.role in ("head", "other_crop", "category")
+            and second.has("scenery")
+            and not second.has("crop", "variety", "plot", "category")
+            and (
+                first.norm in reader_words("colours")
+                # "a grain trailer", "the potato harvester": what the machine carries
+                or any(sense.value == "machines" for sense in second.senses_of("scenery"))
+                # "Fruit research station": what a site or building is for
+                or (
+                    first.has("category")
+                    and not first.has("crop", "variety")
+                    and any(
+                        s.value in ("sites", "buildings", "robots", "purposes")
+                        for s in second.senses_of("scenery")
+                    )
+                )
+            )
+        ) or _worn_scenery(items, first):
+            first.role = "filler"
+            first.data["colour"] = True
+            continue
+        if (
+            first.norm in reader_words("colour_crops")
+            and text[first.end : second.start] == " "
+            and (
+                second.norm in reader_words("colours")
+                # "the orange roots are heaped in the trailer": no orange grows in roots
+                or (first.role == "head" and _holds_not(second, crops_of(first)))
+            )
+        ):
+            first.role = "filler"  # "olive green blotches", "lime green", "cherry red"
+            first.data["colour"] = True
+            continue
+        if text[first.end : second.start] != "-":
+            continue
+        for crop, colour in ((first, second), (second, first)):
+            if crop.role in ("head", "other_crop") and colour.norm in reader_words("colours"):
+                crop.role = "filler"
+                crop.data["colour"] = True
+
+
+def colour_after_a_look(items: Sequence[Item]) -> None:
+    """'Washington Navels, fruit hanging ripe and orange, packed crates', 'pulling them up
+    long and orange', 'the carrots are orange': a crop word that is a colour, ending its
+    phrase after a look joined by "and" (not a crop or plot), a copula or an intensifier,
+    is a colour."""
+    leads = reader_words("colour_leads")
+    for index in range(1, len(items)):
+        joiner, word = items[index - 1], items[index]
+        look = items[index - 2] if index >= 2 else None
+        after = items[index + 1] if index + 1 < len(items) else None
+        described = joiner.norm in leads or (
+            joiner.norm in ("and", "&")
+            and look is not None
+            and look.role not in ("head", "plot", "number", "separator", "conjunction")
+        )
+        if (
+            word.role == "head"
+            and word.norm in reader_words("colour_crops")
+            and described
+            and (after is None or after.role in ("separator", "conjunction"))
+        ):
+            word.role = "filler"
+            word.data["colour"] = True
+
+
+def ripening_colours(items: Sequence[Item]) -> None:
+    """'tops all flopped over and yellowing': a colour change said with a ripeness cue is
+    the crop ripening (senescence), not disease; 'the young green bunch': a young part of
+    the plants says nothing of the field's stage."""
+    for index, item in enumerate(items):
+        if item.role != "health" or item.norm not in reader_words("senescence"):
+            continue
+        near = [i for i in items[max(0, index - 3) : index + 4] if i is not item]
+        if any(_ripeness(i) for i in near):
+            item.role = "filler"
+    # "tops still green but the roots ... ready for lifting": the leaves, not the field
+    for before, item in itertools.pairwise(items):
+        if item.role == "stage" and before.norm in reader_words("green_parts"):
+            item.role = "filler"
+    # "a purple flower bud below the young green bunch": the part is young, not the field
+    parts = reader_words("young_parts")
+    for index, item in enumerate(items):
+        if item.role == "stage" and item.norm in ("young", "new", "fresh"):
+            following = [i for i in items[index + 1 : index + 3] if i.role != "filler"]
+            if any(i.norm in parts for i in items[index + 1 : index + 3]) and not any(
+                i.role in ("head", "plot") for i in following[:1]
+            ):
+                item.role = "filler"
+
+
+def _ripeness(item: Item) -> bool:
+    """A cue or stated word for a ripening crop ("tops flopped over", "ready to lift")."""
+    if item.role == "stage":
+        return str(item.data.get("value")) == "Maturation"
+    return item.role == "cue" and any(
+        sense.value.attribute == "stage" and sense.value.value == "Maturation"
+        for sense in item.senses_of("cue")
+    )
+
+
+def past_and_other_readiness(items: Sequence[Item]) -> None:
+    """'wire hoops ready for the fleece': not the crop's stage. 'drilled last October;
+    it's May now': a month said as when the crop was sown is not the scene's time (when
+    another time is said)."""
+    times = [i for i in items if i.role in ("month", "season")]
+    for index, item in enumerate(items):
+        following = [i.norm for i in items[index + 1 : index + 4]]
+        if item.role == "stage" and item.norm == "ready" and following[:1] == ["for"]:
+            what = next((word for word in following[1:] if word != "the"), "")
+            if what not in reader_words("harvests"):
+                item.role = "filler"
+        if item.role != "month" or len(times) < 2:
+            continue
+        before = [i.norm for i in items[max(0, index - 3) : index]]
+        last = before[-1] if before else ""
+        if (
+            last == "last"
+            or last in reader_words("sown")
+            # "sown in April", "sown back in April"
+            or (last == "in" and any(w in reader_words("sown") for w in before[:-1]))
+        ):
+            item.role = "filler"
+            item.data["sown"] = True
+
+
+def weather_on_plants(items: Sequence[Item]) -> None:
+    """'January King cabbages dusted with snow': a look said of weather on the plants
+    ("dusted with", "covered in" snow, frost, dew) is no disease."""
+    for first, of, what in zip(items, items[1:], items[2:], strict=False):
+        if (
+            first.role == "health"
+            and of.norm in ("with", "in", "by")
+            and what.norm in reader_words("weather_coats")
+        ):
+            first.role = "filler"
+
+
+def negated_looks(items: Sequence[Item]) -> None:
+    """'not in ear yet', 'no flowers yet', 'no spots on the leaves': a stage word or a
+    visual cue right after a negation says what the field is not, so it says nothing."""
+    for negation, item in itertools.pairwise(items):
+        if negation.role == "negation" and (item.role == "stage" or "cue" in item.data):
+            item.data["negated"] = True
