@@ -238,6 +238,12 @@ def test_the_plant_cap_is_a_setting() -> None:
         resolve("a 10 ha wheat field", resolver="rules")
     big = resolve("a 10 ha wheat field", resolver="rules", max_plants=20_000_000).recipe
     assert big.nominal_plant_count > 10_000_000
+    # the error says how much of that field fits at its spacings
+    with pytest.raises(PromptError) as capped:
+        resolve(prompt, resolver="rules", max_plants=1_000_000)
+    per_ha = recipe.nominal_plant_count / 5
+    fits = float(str(capped.value).split("at most ")[1].split(" ha")[0])
+    assert fits == pytest.approx(1_000_000 / per_ha, rel=0.02)
 
 
 def test_impossible_relations() -> None:

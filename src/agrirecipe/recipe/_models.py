@@ -383,9 +383,13 @@ class SceneRecipe(_Frozen):
         for index, spec in enumerate(self.fields):
             total += spec.nominal_plant_count
             if total > cap:
+                width, length = spec.geometry.size_m
+                per_ha = spec.nominal_plant_count / max(width * length / 10_000.0, 1e-9)
+                room_ha = max(cap - (total - spec.nominal_plant_count), 0) / per_ha
                 raise ValueError(
                     f"fields[{index}].geometry.size_m: the scene would hold {total:,} plants "
-                    f"by field {spec.id!r}, more than the cap of {cap:,} "
+                    f"by field {spec.id!r}, more than the cap of {cap:,}; at its spacings "
+                    f"({per_ha:,.0f} plants/ha) at most {room_ha:.2f} ha of it fit "
                     "(make fields smaller or raise max_plants)"
                 )
         return self
