@@ -16,6 +16,7 @@ from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._lexicon import reader_words, vocabulary
 from agrirecipe.resolve._structure import (
     definite_before_head,
+    definite_words,
     descriptive_words,
     names_a_variety,
     strong_crops,
@@ -67,6 +68,7 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
             i.role in ("stage", "health", "cue", "season", "month")
             or "cue" in i.data
             or "described" in i.data  # "plants about three metres tall"
+            or i.norm in reader_words("colours")  # "fruit red and ready"
             for i in mention.items
         )
         # "a few plants have fallen over": a verb says what the plants do or look like
@@ -88,6 +90,7 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
             or _part_of_named_crop(mention, clauses[:position])
             or _held_by_scenery(clause, mention)
             or (others_before and _bare_part_after_with(clause, mention))
+            or _crop_fruit_after_with(clause, mention, clauses[:position])
         )
         if any(i.role == "zone" for i in mention.items):
             continue  # "the vines are on the left and the orange grove on the right": placed
@@ -125,7 +128,9 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
             )
             or mention.other
             or own_size
-            or (listed and not (definite or predicate))
+            # ("San Marzano ..., fruit red and ready, and plum tomatoes ...": a described
+            # part, not the first member of a list)
+            or (listed and not (definite or predicate or (described and others_before)))
             or not (
                 described or definite or fraction or mention.distinct or predicate or one_described
             )
@@ -193,7 +198,45 @@ def _bare_part_after_with(clause: Clause, mention: Mention) -> bool:
         return False  # "a plot full of fruit" asks for a field of fruit
     head = min(h.start for h in mention.heads)
     before = [i for i in clause.items if i.end <= head]
-    return bool(before) and before[-1].role == "of"
+    # ("hung with glossy fruit", "both carrying fruit": a word of bearing before it, past
+    # plain adjectives)
+    while (
+        before
+        and before[-1].role in ("unknown", "filler", "cue")
+        and before[-1].norm not in (_bearing_words())
+    ):
+        before.pop()
+    return bool(before) and (before[-1].role == "of" or before[-1].norm in _bearing_words())
+
+
+@functools.lru_cache(maxsize=1)
+def _bearing_words() -> frozenset[str]:
+    return frozenset(str(word) for word in vocabulary()["reader_words"]["bearing"])
+
+
+def _crop_fruit_after_with(clause: Clause, mention: Mention, before: Sequence[Clause]) -> bool:
+    """ "Padron on the other, still flowering with little green peppers": a bare plural of
+    a crop named before, after "with" (past plain adjectives), is that field's fruit."""
+    crops = strong_crops(mention)
+    if (
+        not crops
+        or mention.count is not None
+        or names_a_variety(mention)
+        or any(h.role == "plot" for h in mention.heads)
+        or not any(strong_crops(m) & crops for c in before for m in c.mentions)
+    ):
+        return False
+    head = min(h.start for h in mention.heads)
+    said = [i for i in clause.items if i.end <= head]
+    # (not "w/ the lettuce in the middle": a field named again by "the")
+    while (
+        said
+        and said[-1].role in ("unknown", "filler", "cue")
+        and said[-1].norm != "with"
+        and said[-1].norm not in definite_words()
+    ):
+        said.pop()
+    return bool(said) and said[-1].norm == "with"
 
 
 def _held_by_scenery(clause: Clause, mention: Mention) -> bool:

@@ -586,6 +586,12 @@ def hoist_counted_crops(text: str, tag: Callable[[str], Sequence[Any]]) -> str:
 
         return rewrite
 
+    def plot_of_many(match: re.Match[str]) -> str:
+        # "a Ladyfinger block of 300": more than a scene's fields, so its plants
+        if float(match.group("n").replace(",", "")) <= _MOST_FIELDS:
+            return match.group(0)
+        return f"{match.group(0)} plants"
+
     def many_plants(match: re.Match[str]) -> str:
         words = match.group("words")
         if float(match.group("n").replace(",", "")) <= _MOST_FIELDS:
@@ -599,6 +605,8 @@ def hoist_counted_crops(text: str, tag: Callable[[str], Sequence[Any]]) -> str:
         return match.group(0)
 
     text = _ROW_TRIPLE.sub(r"\g<n> \g<rows> at \g<spacing>, rows \g<length> long", text)
+    text = _PLOT_OF_MANY.sub(plot_of_many, text)
+    text = _SPACING_KEY.sub("", text)
     text = _MANY_OF_A_CROP.sub(many_plants, text)
     text = _ELLIPTIC_COUNT.sub(r"\g<head> and \g<n> \g<noun> of", text)
     text = _ROWS_OF_CROP_AT.sub(crop_rows(" {tail}"), text)
@@ -616,6 +624,16 @@ _ROW_TRIPLE = re.compile(
 )
 #: More fields than a scene holds: a number above it before a crop counts plants.
 _MOST_FIELDS = 64
+#: "3.5 m x 1.0 m (row x tree)": a key saying which spacing is which, not a field.
+_SPACING_KEY = re.compile(
+    r"\s*\(\s*(?i:rows?|between rows|row spacing)\s*(?:x|by|×|/)\s*"
+    r"(?i:trees?|plants?|vines?|in[- ]?row|in the row|within rows?)\s*\)"
+)
+#: "a Ladyfinger block of 300, both at 4 m by 3 m": a plot of that many plants.
+_PLOT_OF_MANY = re.compile(
+    r"\b(?i:block|plot|plantation|orchard|grove|vineyard|stand|patch|field|strip)\s+of\s+"
+    r"(?P<n>\d{1,3}(?:,\d{3})+|\d{2,})(?=\s*(?:[,.;:)]|$))"
+)
 #: "150 Pink Lady in the bottom block": a count of plants named by their crop.
 _MANY_OF_A_CROP = re.compile(
     r"(?<![\w.,])(?P<n>\d{1,3}(?:,\d{3})+|\d{2,})\s+"

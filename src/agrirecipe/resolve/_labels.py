@@ -20,6 +20,7 @@ from agrirecipe.resolve._lexicon import Item, number_value, tokenize
 
 __all__ = [
     "drop_list_numbers",
+    "open_ordered_lists",
     "place_compass_members",
     "place_leading_directions",
     "place_neighbouring_plots",
@@ -151,6 +152,30 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
         # a label never referenced is still a name, not another field ("Plot 2: ...")
         notes.append(f"{label} = {phrase}" + ("" if count else " (a label only)"))
     return out, notes
+
+
+# "three strips side by side, west to east wheat, maize, potatoes": an order said right
+# before the list it orders
+_ORDER = re.compile(
+    r"\b(?P<order>(?i:from\s+)?(?i:west|east|north|south|left|right|top|bottom)\s+(?i:to)\s+"
+    r"(?i:west|east|north|south|left|right|top|bottom))\s+(?=[A-Za-z])"
+)
+
+
+def open_ordered_lists(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
+    """``text`` with a colon after an order said right before a crop's name ("west to east
+    wheat, maize, potatoes" is "west to east: wheat, maize, potatoes"), as the reader
+    reads a heading; an order said of anything else ("rows run west to east in both") is
+    left."""
+
+    def colon(match: re.Match[str]) -> str:
+        following = text[match.end() :].split(",")[0].split(".")[0]
+        first = tag(following)
+        if first and first[0].has(*_NAMING):
+            return f"{match.group('order')}: "
+        return match.group(0)
+
+    return _ORDER.sub(colon, text)
 
 
 # "2 plots: (1) wheat ..., 1 ha; (2) a 1 ha maize plot ...": the numbers of a list

@@ -207,6 +207,17 @@ def share_each_measures(clauses: Sequence[Clause]) -> None:
     a measure said with "each" by the last of a list is every listed field's."""
     for position, clause in enumerate(clauses):
         for mention in clause.mentions[-1:]:
+            ordered = sorted(mention.items, key=lambda i: i.start)
+            sizes = [
+                a
+                for a, b in itertools.pairwise(ordered)
+                if a.role == "size" and b.role == "all" and b.norm in ("each", "both")
+            ]
+            if sizes:
+                # "wheat north of maize north of potatoes 1 ha each": every field's size
+                for other in sentence_fields(clauses, position):
+                    if other is not mention and not any(i.role == "size" for i in other.items):
+                        other.items.extend(sizes)
             # "150 trees each at 7 m x 4 m": the whole measure, said for every one
             measures = [i for i in mention.items if i.role == "geometry"]
             said_each = [

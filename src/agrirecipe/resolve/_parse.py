@@ -75,6 +75,7 @@ from agrirecipe.resolve._intent import (
 )
 from agrirecipe.resolve._labels import (
     drop_list_numbers,
+    open_ordered_lists,
     place_compass_members,
     place_leading_directions,
     place_neighbouring_plots,
@@ -180,7 +181,7 @@ class PromptReader(FieldReading):
             return self.lexicon.tag(tokenize(phrase))
 
         text, labels = resolve_labels(text, tag)
-        text = place_compass_members(text, tag)
+        text = place_compass_members(open_ordered_lists(text, tag), tag)
         text = place_trailing_directions(place_leading_directions(text))
         text = place_neighbouring_plots(text)
         text = hoist_counted_crops(text, tag)

@@ -257,7 +257,7 @@ def apply_refinements(
                 or (link.norm == "," and _lists_exactly(clauses, clause.index, parent.count))
                 # "... on two bed plots. Lollo Rosso: 4 beds ... Beside it, carrots: ..."
                 or (
-                    link.norm == "."
+                    link.norm in (".", "?", "!")  # ("... for our sim? Gala apples ...")
                     and _lists_exactly(clauses, clause.index, parent.count, to_the_end=True)
                 )
             )
@@ -476,6 +476,12 @@ def _listed(clauses: Sequence[Clause], start: int, *, to_the_end: bool = False) 
                     and not _bare_crop_first(clause)
                     # ("two fields, wheat by the barn, maize near the river")
                     and not _placed_by_scenery(clause)
+                    # ("... Conference pears ... and, north of them, Kordia cherries")
+                    and not (
+                        not clause.mentions
+                        and any(i.norm in PRONOUNS for i in clause.items)
+                        and all(i.norm in PRONOUNS or i.role == "filler" for i in clause.items)
+                    )
                 )
             )
         ):

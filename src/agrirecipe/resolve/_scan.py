@@ -68,6 +68,14 @@ def assign_roles(items: Sequence[Item]) -> None:
         alone = (
             _alone(previous, following)
             or _opening_month(item, previous, following)
+            # "May flight: Winter Wheat and Spring Wheat plots": a capitalised month that
+            # opens the prompt (not "May I have ...")
+            or (
+                item.raw[:1].isupper()
+                and previous is None
+                and following is not None
+                and following.norm not in _NOT_AFTER_A_MONTH
+            )
             # "March sunshine", "June rain": a month's weather
             or (
                 item.raw[:1].isupper()
@@ -239,6 +247,27 @@ def _attributive(item: Item, previous: Item | None, following: Item | None) -> b
         and following is not None
         and following.has("plot", "crop", "category", "variety")
     )
+
+
+#: Words after an opening "May" that make it the verb ("May I have ...").
+_NOT_AFTER_A_MONTH = frozenset(
+    {
+        "i",
+        "we",
+        "you",
+        "it",
+        "they",
+        "be",
+        "have",
+        "need",
+        "the",
+        "this",
+        "these",
+        "those",
+        "all",
+        "our",
+    }
+)
 
 
 def _alone(previous: Item | None, following: Item | None) -> bool:

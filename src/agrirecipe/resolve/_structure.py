@@ -210,6 +210,18 @@ def apply_plural_counts(clauses: Sequence[Clause], plural_count: int) -> None:
                     mention.count = mention.quantity
                 continue
             spec = plots[-1].data["value"] if plots else {}
+            first = first_word(mention)
+            if (
+                mention.count is None
+                and spec.get("plural")
+                and first is not None
+                and first.norm == "both"
+                and not any(c.mentions for c in clauses[:position])
+            ):
+                # "Spray-drone trial, both blocks in full bloom. Conference pears ... and
+                # ... Kordia cherries": two fields, named after it
+                mention.count = 2
+                continue
             if mention.count is not None or not spec.get("plural") or spec.get("individual"):
                 continue
             if spec.get("one_field") and mention.has_crop:

@@ -165,6 +165,24 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
             item.data["counts_scenery"] = True
         elif item.role == "number" and item.norm in ("a", "an") and following.role == "cue":
             item.role = "filler"  # "a combine already working in the spelt": not a field
+
+    # "dormant vines pruned back to two canes", "at the 2-3 true leaf stage": parts of each
+    # plant counted (past a second number of a range)
+    for index, item in enumerate(items):
+        if item.role != "number":
+            continue
+        end = index + 1
+        while end < len(items) and (
+            items[end].role == "number" or items[end].norm in ("-", "to", "or")
+        ):
+            end += 1
+        # ("2-3 true leaf stage": a cue phrase that opens with a part counts it too)
+        part = items[end].norm.split() if end < len(items) else []
+        if part and part[0] in reader_words("counted_parts"):
+            for counted in items[index:end]:
+                if counted.role == "number":
+                    counted.role = "filler"
+                    counted.data["counts_plants"] = True
     # "Jalapenos in the tunnel, lots of fruit turning red": after a crop is named, a vague
     # quantity of fruit, leaves or plants counts plants, not fields
     described = descriptive_words()
@@ -537,13 +555,37 @@ def _plot_words_of_other_things(items: Sequence[Item]) -> None:
     for before, item, after in zip(items, items[1:], items[2:], strict=False):
         if item.role == "plot" and before.role == after.role == "unknown":
             item.role = "filler"
-    for before, item in itertools.pairwise(items):
+    named = False
+    for index, item in enumerate(items):
+        earlier = items[index - 1] if index else None
+        later = items[index + 1] if index + 1 < len(items) else None
         if (
             item.role == "plot"
             and item.norm in ("patches", "patch")
-            and (before.role == "health" or "cue" in before.data)
+            and earlier is not None
+            and (earlier.role == "health" or "cue" in earlier.data)
         ):
             item.role = "filler"
+        # "whole patches collapsing", "lapwings on the bare patches": once a field is
+        # named, patches said with a look are parts of it
+        elif (
+            named
+            and item.role == "plot"
+            and item.norm == "patches"
+            and (
+                (earlier is not None and earlier.norm in reader_words("patch_looks"))
+                or (
+                    later is not None
+                    and (
+                        later.role in ("health", "cue") or later.norm in reader_words("patch_looks")
+                    )
+                )
+            )
+        ):
+            item.role = "filler"
+            if earlier is not None and earlier.role == "unknown":
+                earlier.role = "filler"
+        named = named or item.role in ("head", "plot", "category")
 
 
 def _plots_of_a_list(items: Sequence[Item]) -> None:
