@@ -203,15 +203,10 @@ def _bare_part_after_with(clause: Clause, mention: Mention) -> bool:
     while (
         before
         and before[-1].role in ("unknown", "filler", "cue")
-        and before[-1].norm not in (_bearing_words())
+        and before[-1].norm not in (reader_words("bearing"))
     ):
         before.pop()
-    return bool(before) and (before[-1].role == "of" or before[-1].norm in _bearing_words())
-
-
-@functools.lru_cache(maxsize=1)
-def _bearing_words() -> frozenset[str]:
-    return frozenset(str(word) for word in vocabulary()["reader_words"]["bearing"])
+    return bool(before) and (before[-1].role == "of" or before[-1].norm in reader_words("bearing"))
 
 
 def _crop_fruit_after_with(clause: Clause, mention: Mention, before: Sequence[Clause]) -> bool:

@@ -27,6 +27,7 @@ __all__ = [
     "fields_of",
     "following_list",
     "last_named",
+    "link_norm",
     "listed_after",
     "listing",
     "own_mentions",
@@ -193,14 +194,14 @@ def coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:
         index > 0
         and listing(clauses[index].link)
         and not _placed_by_pronoun(clauses[index])
-        and _link_norm(clauses[index]) != ";"
+        and link_norm(clauses[index]) != ";"
     ):
         previous = clauses[index - 1]
-        if not previous.mentions and not previous.items and _link_norm(previous) == ")":
+        if not previous.mentions and not previous.items and link_norm(previous) == ")":
             # "red onions (red baron) n walla wallas side by side, ready ...": past the
             # bracket to the member it follows
             opening = next(
-                (k for k in range(index - 2, 0, -1) if _link_norm(clauses[k]) == "("), None
+                (k for k in range(index - 2, 0, -1) if link_norm(clauses[k]) == "("), None
             )
             # (only past a bracket that names the member again: "(0.3 ha, ripening)" is
             # the member's own words, which end the list's shared words)
@@ -262,7 +263,7 @@ def _before_a_bracket(
     return index - 1
 
 
-def _link_norm(clause: Clause) -> str | None:
+def link_norm(clause: Clause) -> str | None:
     return clause.link.norm if clause.link is not None else None
 
 

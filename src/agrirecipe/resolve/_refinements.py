@@ -16,7 +16,7 @@ from agrirecipe._errors import PromptError
 from agrirecipe.resolve._decompose import Clause, Mention, MentionBuilder
 from agrirecipe.resolve._geometry import geometry_nouns
 from agrirecipe.resolve._lexicon import Item
-from agrirecipe.resolve._links import PRONOUNS, listing
+from agrirecipe.resolve._links import PRONOUNS, link_norm, listing
 from agrirecipe.resolve._structure import (
     EACH,
     POINTER_WORDS,
@@ -206,7 +206,7 @@ def apply_refinements(
             and not parent.refinements
             and _bracketed_variety(clause, parent)
             and clause.index + 1 < len(clauses)
-            and _link_norm(clauses[clause.index + 1]) == ")"
+            and link_norm(clauses[clause.index + 1]) == ")"
         ):
             # "2 strawberry fields (sonata)": the variety of them all
             for head in clause.mentions[0].heads:
@@ -380,10 +380,6 @@ def apply_refinements(
             # uncounted plural is as many fields as it lists, not one more of no crop
             mention.count = len(mention.refinements)
     return top
-
-
-def _link_norm(clause: Clause) -> str | None:
-    return clause.link.norm if clause.link is not None else None
 
 
 def _bracketed_variety(clause: Clause, member: Mention) -> bool:
