@@ -740,6 +740,7 @@ def test_placements_around_a_field_named_first() -> None:
         ("north_of", "Wheat", ("Apple",)),
         ("south_of", "Maize", ("Apple",)),
         ("between", "Apple", ("Wheat", "Maize")),  # implied: one on each side
+        ("north_of", "Wheat", ("Maize",)),  # implied: the order is closed over "between"
     }
 
 

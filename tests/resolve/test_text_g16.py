@@ -116,3 +116,144 @@ def test_a_size_said_each_by_the_last_of_a_list() -> None:
     for field in fields:
         width, length = field.geometry.size_m
         assert width * length == pytest.approx(10_000, rel=0.01)
+
+
+def relations(prompt: str) -> set[tuple[str, str, tuple[str, ...]]]:
+    """The recipe's relations, each field named by its variety when the prompt names one,
+    else by its crop."""
+    scene = recipe(prompt)
+    name = {f.id: (f.variety if "variety" in f.stated else f.crop) for f in scene.fields}
+    return {(r.kind, name[r.subject], tuple(name[o] for o in r.objects)) for r in scene.relations}
+
+
+@pytest.mark.parametrize(
+    ("prompt", "expected"),
+    [
+        # an order said as a walk from one side to the opposite one
+        (
+            "Starting at the bottom of the farm by the road and working up to the top: Red "
+            "Baron onions, then Chantenay carrots, then Fontane potatoes up against the woods.",
+            {("south_of", "Red Baron", ("Chantenay",)), ("south_of", "Chantenay", ("Fontane",))},
+        ),
+        # a zone said with what it is part of
+        (
+            "Top third of the slope: Pinot Noir. Middle third: Riesling. Bottom third: Chardonnay.",
+            {("north_of", "Pinot Noir", ("Riesling",)), ("north_of", "Riesling", ("Chardonnay",))},
+        ),
+        # zone words misspelt
+        (
+            "ok so the farm: cherrys at the top, then a big feild of wheat, then the carrots at "
+            "the botom near the pond",
+            {("north_of", "Cherry", ("Wheat",)), ("north_of", "Wheat", ("Carrot",))},
+        ),
+        # "on the eastern block ... on the western block"
+        (
+            "Queensland banana farm in July: Lady Finger on the eastern block, Cavendish on the "
+            "western block.",
+            {("east_of", "Lady Finger", ("Cavendish",))},
+        ),
+        # the two on either side of a field "in between" are in that order themselves
+        (
+            "We're a fruit farm: cherries on the north block, pears on the south block, and "
+            "strawberries in tunnels in between.",
+            {("north_of", "Cherry", ("Pear",))},
+        ),
+        # "east of that block": the block named before, after scenery placed it
+        (
+            "It's March, the Royal Gala block north of the packhouse is ripe, and the Bartlett "
+            "pears east of that block are ripening too.",
+            {("east_of", "Williams", ("Gala",))},
+        ),
+        # the next bed over
+        (
+            "Close-up of the capsicum beds, leaves peppered with dark spots, while the tomatoes "
+            "in the next bed over look perfectly fine.",
+            {("next_to", "Tomato", ("Pepper",))},
+        ),
+        # "w/ the onions": the onions named before, placed
+        (
+            "danvers carrots + stuttgarter onions + cayenne peppers w/ the onions in the middle",
+            {("between", "Stuttgarter", ("Danvers", "Cayenne"))},
+        ),
+    ],
+)
+def test_fields_placed_in_other_words(
+    prompt: str, expected: set[tuple[str, str, tuple[str, ...]]]
+) -> None:
+    said = relations(prompt)
+    for relation in expected:
+        kind, subject, objects = relation
+        inverse = {"north_of": "south_of", "south_of": "north_of"}
+        inverse |= {"east_of": "west_of", "west_of": "east_of"}
+        flipped = (inverse.get(kind, kind), objects[0], (subject,)) if len(objects) == 1 else None
+        assert relation in said or flipped in said, (relation, said)
+
+
+def test_the_royal_gala_block_is_not_placed_by_the_packhouse_against_the_pears() -> None:
+    said = relations(
+        "the Royal Gala block north of the packhouse is ripe, and the Bartlett pears east of "
+        "that block are ripening too."
+    )
+    assert said == {("east_of", "Williams", ("Gala",))}
+
+
+@pytest.mark.parametrize(
+    ("prompt", "crops"),
+    [
+        # produce a container holds is scenery
+        (
+            "September shot of the chilli patch: Cayenne on one side with long thin red pods "
+            "and Padron on the other. A string of dried peppers hangs on the shed wall.",
+            ["Pepper", "Pepper"],
+        ),
+        ("a Gala orchard in autumn, a basket of pears on the grass", ["Apple"]),
+        # ... unless it is all the prompt names
+        ("a basket of pears", ["Pear"]),
+        # a plot word for any crop heading counted plots
+        (
+            "Market garden, two plots: 100 ft x 40 ft of staked San Marzano tomatoes, and "
+            "right next to it a plot of Padron peppers exactly the same size.",
+            ["Tomato", "Pepper"],
+        ),
+        # "one X one Y" in brackets, without commas
+        (
+            "iceberg lettuce in between 2 cabbage fields (one red express one january king)",
+            ["Lettuce", "Cabbage", "Cabbage"],
+        ),
+    ],
+)
+def test_no_phantom_field_from_produce_titles_and_bracketed_members(
+    prompt: str, crops: list[str]
+) -> None:
+    assert [f.crop for f in recipe(prompt).fields] == crops
+
+
+def test_a_crop_said_of_both_blocks_before_them_describes_each() -> None:
+    fields = recipe(
+        "LiDAR canopy dataset, late August, grapes ripening in both blocks. Chardonnay: 25 "
+        "rows x 80 m. Cabernet: 18 rows x 80 m, east of the Chardonnay."
+    ).fields
+    assert [(f.variety, f.stage) for f in fields] == [
+        ("Chardonnay", "Maturation"),
+        ("Cabernet Sauvignon", "Maturation"),
+    ]
+
+
+def test_still_green_is_a_look_and_veraison_is_ripening() -> None:
+    scene = generate(
+        "Across the farm track there's a field of sweet peppers, still green and young.",
+        resolver="hybrid",
+    )
+    assert scene.recipe.fields[0].stage == "Vegetative"
+    assert any("still green" in w for w in scene.recipe.warnings)
+    (vines,) = recipe("The vines at veraison, half the berries purple and half still green.").fields
+    assert vines.stage == "Maturation"
+    (tomatoes,) = recipe("a tomato plot, fruit still green").fields
+    assert tomatoes.stage == "Reproductive"
+
+
+def test_its_may_is_the_month() -> None:
+    (pears,) = recipe(
+        "omg durondeau pears sick w/ fire blight, shepherds crook tips n all, its may"
+    ).fields
+    assert (pears.season, pears.health) == ("Spring", "Ill")

@@ -83,6 +83,10 @@ _OTHER_AFTER_MEASURE = re.compile(
 _ONE_AFTER_ONE = re.compile(
     r"(?P<first>\b(?i:one|1)\s+(?!of\b|each\b|another\b)(?:(?i:with|of)\s+)?"
     # ("one 40x60m one 30x60m": a size said for each)
-    r"(?:[A-Za-z][\w'-]*|\d[\d.]*\s*(?:x|by)\s*\d[\d.]*\s*m\b|\d[\d.]*\s*(?:ha|acres?)\b))"
+    # ("one red express one january king": a name of up to three words)
+    # (never a unit: "a 1 m x 1 m orchard")
+    r"(?:(?!(?i:m|x|by|ha|cm|mm|ft|in)\b)[A-Za-z][\w'-]*"
+    r"(?:\s+(?!(?i:one|and|or|then|m|x|by|ha|cm|mm|ft|in)\b)[A-Za-z][\w'-]*){0,2}"
+    r"|\d[\d.]*\s*(?:x|by)\s*\d[\d.]*\s*m\b|\d[\d.]*\s*(?:ha|acres?)\b))"
     r"\s+(?P<second>(?i:one|1)\b)"
 )

@@ -120,7 +120,15 @@ def merge_coreferences(
             and first.norm in definite
             and mention.count is None
         )
-        if clause is None or not kept or (clause.mentions[0] is not mention and not later_definite):
+        if (
+            clause is None
+            or not kept
+            or (
+                clause.mentions[0] is not mention
+                and not later_definite
+                and not _with_one_named_before(clause, kept, mention)
+            )
+        ):
             if first is not None and first.norm == "both" and mention.count is None:
                 mention.count = 2  # "Both cereal fields beside the dryer": two, named now
             kept.append(mention)
@@ -341,6 +349,25 @@ def merge_coreferences(
         else:
             clause.mentions.remove(mention)
     return kept
+
+
+def _with_one_named_before(clause: Clause, kept: Sequence[Mention], mention: Mention) -> bool:
+    """'carrots + onions + peppers w/ the onions in the middle': "with the" and a crop a
+    field named before (no variety, no count) after another field in the same clause is
+    that field again, placed by what follows."""
+    first = first_word(mention)
+    if first is None or first.norm != "the" or mention.count is not None:
+        return False
+    before = [i for i in clause.items if i.end <= first.start]
+    own = strong_crops(mention)
+    return (
+        bool(before)
+        and before[-1].norm == "with"
+        and bool(own)
+        and not names_a_variety(mention)
+        and not own & strong_crops(clause.mentions[0])
+        and any(strong_crops(m) == own for m in kept if m not in clause.mentions)
+    )
 
 
 def _of_it(mention: Mention) -> bool:

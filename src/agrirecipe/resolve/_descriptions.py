@@ -41,6 +41,7 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
     dissolved: list[str] = []
     for clause in clauses:
         dissolved.extend(_dissolve_described_after_of(clause, words))
+    dissolved.extend(_dissolve_held_produce(clauses))
     for position, clause in enumerate(clauses):
         if len(clause.mentions) != 1:
             continue
@@ -156,6 +157,34 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
         clause.mentions = []
         dissolved.append(mention.text)
     return dissolved
+
+
+def _dissolve_held_produce(clauses: Sequence[Clause]) -> list[str]:
+    """'A string of dried peppers hangs on the shed wall', 'a basket of pears on the
+    grass': a crop a container holds (the container, "of", describing words, the crop)
+    is harvested produce, scenery, once a field is named elsewhere in the prompt."""
+    containers = reader_words("produce_containers")
+    held: list[tuple[Clause, Mention]] = []
+    for clause in clauses:
+        for mention in clause.mentions:
+            if any(i.role in ("plot", "size", "geometry") for i in mention.items):
+                continue  # "a sack of seed potatoes planted in 20 rows": a field
+            start = min((h.start for h in mention.heads), default=None)
+            before = [i for i in clause.items if start is not None and i.end <= start]
+            while before and before[-1].role in ("unknown", "filler"):
+                before.pop()  # "dried", "freshly picked"
+            if len(before) >= 2 and before[-1].role == "of" and before[-2].norm in containers:
+                held.append((clause, mention))
+    fields = sum(len(c.mentions) for c in clauses)
+    if not held or len(held) == fields:
+        return []  # ("a basket of pears" alone is what the prompt asks for)
+    for clause, mention in held:
+        for head in mention.heads:
+            head.role = "filler"
+            head.data["scenery"] = "produce"
+        clause.mentions = [m for m in clause.mentions if m is not mention]
+        clause.loose = [*clause.loose, *mention.items]
+    return [mention.text for _, mention in held]
 
 
 def _fruit_of_named_crop(mention: Mention, before: Sequence[Clause]) -> bool:

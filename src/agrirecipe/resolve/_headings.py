@@ -10,6 +10,7 @@ the next sentences name exactly two fields.
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Sequence
 
 from agrirecipe.resolve._decompose import Clause, Mention
@@ -18,6 +19,7 @@ from agrirecipe.resolve._words import SENTENCE_MARKS
 
 __all__ = [
     "drop_counted_summaries",
+    "drop_forward_summaries",
     "drop_joint_headings",
     "drop_list_headings",
     "drop_titles",
@@ -183,12 +185,14 @@ def _heads_counted_plots(clauses: Sequence[Clause], mention: Mention) -> bool:
     plot = mention.plot
     options = strong_crops(mention) if heading_crop or plot is None else set(plot["options"])
     members = {id(r): r for r in plots.refinements}.values()
+    # ("Market garden, two plots: tomatoes ... and peppers": a plot word for any crop)
+    holds_any = plot is not None and not heading_crop and not options
     return (
         not plots.has_crop
         and (plots.count or 0) >= 2
         and len(members) >= 2
-        and bool(options)
-        and all(strong_crops(r) and strong_crops(r) <= options for r in members)
+        and (bool(options) or holds_any)
+        and all(strong_crops(r) and (holds_any or strong_crops(r) <= options) for r in members)
     )
 
 
@@ -326,3 +330,43 @@ def drop_titles(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Ment
     for clause in clauses:
         clause.mentions = [field if m is title else m for m in clause.mentions]
     return mentions[1:]
+
+
+#: Words that say the fields they count are all of them ("in both blocks").
+_ALL_OF = frozenset({"both", "all"})
+#: Attributes a summary said before its fields gives each of them.
+_SUMMARY_ROLES = frozenset({"stage", "health", "cue", "season", "month"})
+
+
+def drop_forward_summaries(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
+    """'grapes ripening in both blocks, rows north-south. Chardonnay: 25 rows ...
+    Cabernet: 18 rows ...': a crop said of "both" (or "all the") plots, with no variety,
+    before the fields of that crop are named (two for "both"), describes each of them
+    and is not one more field. Its stage, health, cues and season go to each field that
+    states none of its own. Return the fields left."""
+    for position, summary in enumerate(mentions):
+        ordered = sorted(summary.items, key=lambda i: i.start)
+        said_of_all = any(
+            a.norm in _ALL_OF and b.role == "plot" and b.norm.endswith("s")
+            for a, b in itertools.pairwise(ordered)
+        )
+        crops = strong_crops(summary)
+        if not said_of_all or not crops or names_a_variety(summary) or summary.count is not None:
+            continue
+        later = [m for m in mentions[position + 1 :] if strong_crops(m)]
+        if len(later) < 2 or not all(strong_crops(m) <= crops for m in later):
+            continue
+        # (each field once: "east of the Chardonnay" names the Chardonnay again)
+        named = {
+            frozenset((c, v) for c, v, weak in m.interpretations or () if not weak) for m in later
+        }
+        if any(a.norm == "both" for a in ordered) and len(named) != 2:
+            continue
+        lent = [i for i in summary.items if i.role in _SUMMARY_ROLES]
+        for field in later:
+            own = {i.role for i in field.items}
+            field.items.extend(i for i in lent if i.role not in own)
+        for clause in clauses:
+            clause.mentions = [m for m in clause.mentions if m is not summary]
+        return [m for m in mentions if m is not summary]
+    return mentions

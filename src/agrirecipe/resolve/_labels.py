@@ -25,6 +25,7 @@ __all__ = [
     "place_leading_directions",
     "place_neighbouring_plots",
     "place_trailing_directions",
+    "place_walked_orders",
     "resolve_labels",
 ]
 
@@ -418,3 +419,42 @@ def place_neighbouring_plots(text: str) -> str:
     return _NEIGHBOURING.sub(
         lambda m: f"{m.group('at')} {m.group('count')}{m.group('plots')} side by side", text
     )
+
+
+#: The side words a walk across the farm starts and ends at, with the side opposite.
+_WALK_SIDES = {
+    "bottom": "top",
+    "top": "bottom",
+    "north": "south",
+    "south": "north",
+    "east": "west",
+    "west": "east",
+    "left": "right",
+    "right": "left",
+}
+_SIDE = "|".join(_WALK_SIDES)
+# "Starting at the bottom of the farm by the road and working up to the top: onions,
+# then carrots, then potatoes", "from the bottom of the farm up to the top: ...": an
+# order said as a walk from one side to the opposite one
+_WALKED = re.compile(
+    rf"\b(?:(?i:starting|beginning|start|begin)\s+(?i:at|from)|(?i:from))\s+(?i:the)\s+"
+    rf"(?P<start>(?i:{_SIDE}))(?:\s+(?i:end|side|edge))?\b"
+    r"(?P<between>[^:;.,!?]{0,60}?)"
+    r"\s+(?:(?i:and)\s+)?(?:(?i:working|going|moving|heading|walking|coming|running)\s+)?"
+    r"(?:(?i:up|down|across|over|along|back)\s+)?(?i:to|towards|toward)\s+(?i:the)\s+"
+    rf"(?P<end>(?i:{_SIDE}))(?:\s+(?i:end|side|edge))?\b"
+)
+
+
+def place_walked_orders(text: str) -> str:
+    """``text`` with "starting at the bottom ... and working up to the top" written
+    "from bottom to top" (an order of the fields named after it), when the walk ends at
+    the side opposite where it starts."""
+
+    def order(match: re.Match[str]) -> str:
+        start, end = match.group("start").lower(), match.group("end").lower()
+        if _WALK_SIDES[start] != end:
+            return match.group(0)
+        return f"from {start} to {end}"
+
+    return _WALKED.sub(order, text)

@@ -136,7 +136,10 @@ def ripening_colours(items: Sequence[Item]) -> None:
             item.role = "filler"
     # "tops still green but the roots ... ready for lifting": the leaves, not the field
     for before, item in itertools.pairwise(items):
-        if item.role == "stage" and before.norm in reader_words("green_parts"):
+        stage_cue = item.role == "cue" and all(
+            sense.value.attribute == "stage" for sense in item.senses_of("cue")
+        )
+        if (item.role == "stage" or stage_cue) and before.norm in reader_words("green_parts"):
             item.role = "filler"
     # "a purple flower bud below the young green bunch": the part is young, not the field
     parts = reader_words("young_parts")

@@ -235,10 +235,11 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
             shared = seasons + others
             if len(targets) > 1:
                 shared = [i for i in shared if i.role not in own]
-            said = {i.role for i in shared}
-            # Its own words replace what a list lent it ("ripe wheat and maize, ...").
+            said = {attribute_of(i) for i in shared}
+            # Its own words replace what a list lent it ("ripe wheat and maize, ..."; a
+            # look too: "ripe wheat in front and maize behind it, still green").
             target.items[:] = [
-                i for i in target.items if not (i in target.borrowed and i.role in said)
+                i for i in target.items if not (i in target.borrowed and attribute_of(i) in said)
             ]
             target.items.extend(shared)
         # "Bing and Lapins cherry blocks, 5 m rows": a plural noun shared by the list

@@ -63,6 +63,7 @@ from agrirecipe.resolve._fields import (
 from agrirecipe.resolve._geometry import find_geometry, hoist_counted_crops
 from agrirecipe.resolve._headings import (
     drop_counted_summaries,
+    drop_forward_summaries,
     drop_joint_headings,
     drop_list_headings,
     drop_titles,
@@ -80,6 +81,7 @@ from agrirecipe.resolve._labels import (
     place_leading_directions,
     place_neighbouring_plots,
     place_trailing_directions,
+    place_walked_orders,
     resolve_labels,
 )
 from agrirecipe.resolve._lexicon import (
@@ -183,7 +185,7 @@ class PromptReader(FieldReading):
         text, labels = resolve_labels(text, tag)
         text = place_compass_members(open_ordered_lists(text, tag), tag)
         text = place_trailing_directions(place_leading_directions(text))
-        text = place_neighbouring_plots(text)
+        text = place_walked_orders(place_neighbouring_plots(text))
         text = hoist_counted_crops(text, tag)
         for note in labels:
             self.trace.append(TraceStep(stage="decompose", subject="label", detail=note))
@@ -241,7 +243,7 @@ class PromptReader(FieldReading):
         share_trailing_attributes(clauses)
         mentions = apply_refinements(clauses, self.crop_categories, builder)
         mentions = share_counted_fields(mentions)
-        mentions = drop_joint_headings(clauses, mentions)
+        mentions = drop_forward_summaries(clauses, drop_joint_headings(clauses, mentions))
         mentions = merge_coreferences(clauses, mentions, builder)
         mentions = merge_appositive_plots(clauses, mentions)
         mentions = drop_list_headings(clauses, mentions)

@@ -55,6 +55,11 @@ from agrirecipe.resolve._rows import (
 __all__ = ["read_relations"]
 
 
+#: Words of a clause that places a field by scenery alone ("the Royal Gala block north of
+#: the packhouse is ripe": the look goes on describing the block).
+_SAID_OF_A_LANDMARK = frozenset({"filler", "non_agricultural", "stage", "health", "season", "cue"})
+
+
 def read_relations(
     clauses: Sequence[Clause],
     members: dict[int, list[int]],
@@ -94,8 +99,7 @@ def read_relations(
             # ("a lettuce field east of the big barn, and east of that again ...", "split
             # by a hawthorn hedge")
             and all(
-                i.role in ("filler", "non_agricultural")
-                or (i.role == "number" and i.norm in ARTICLES)
+                i.role in _SAID_OF_A_LANDMARK or (i.role == "number" and i.norm in ARTICLES)
                 for i in clause.items
             )
             and any("scenery" in i.data or i.role == "non_agricultural" for i in clause.items)
@@ -194,7 +198,8 @@ def read_relations(
             continue
         if (
             pronoun
-            and not clause.mentions
+            # ("east of that block": a field named before, not one of its own)
+            and all(m.clause != clause.index for m in clause.mentions)
             and position
             and clauses[position - 1].named
             and clauses[position - 1].items  # not "one ... and, north of it, one ..."

@@ -106,6 +106,7 @@ def find_zones(tokens: Sequence[Token], claimed: Sequence[bool] = ()) -> list[Zo
             if first and tokens[first - 1].norm == "from" and zone != "order":
                 continue  # "shot from the top of the water tower": where the photo is taken
             if zone != "order":
+                last = _past_part_of(tokens, last)
                 found.append(ZoneMatch(zone, first, last))
             for index in range(first, last):
                 taken[index] = True
@@ -123,6 +124,21 @@ def find_zones(tokens: Sequence[Token], claimed: Sequence[bool] = ()) -> list[Zo
     if len(sides) < 2 and not (sides and any(m.zone == "middle" for m in found)):
         return []
     return sorted(found, key=lambda m: m.first)
+
+
+@functools.cache
+def _parts_of() -> frozenset[str]:
+    """Words a zone is said to be part of ("the top third of the slope")."""
+    data: dict[str, Any] = yaml.safe_load((DATA_DIR / "zones.yaml").read_text("utf-8"))
+    return frozenset(str(w) for w in data["parts_of"])
+
+
+def _past_part_of(tokens: Sequence[Token], last: int) -> int:
+    """The end of a zone word with what it is part of ("top third of the slope")."""
+    words = [t.norm for t in tokens[last : last + 3]]
+    if len(words) == 3 and words[:2] == ["of", "the"] and words[2] in _parts_of():
+        return last + 3
+    return last
 
 
 #: The opposite side of each compass side.
@@ -397,6 +413,20 @@ def complete_orders(
                 completed.append(
                     RelationIntent(kind="between", subject=middle, objects=(before[0], after[0]))
                 )
+                placed_against = {
+                    r.subject for r in relations if r.objects == (middle,) and r.kind != "between"
+                }
+                if (
+                    {before[0], after[0]} <= placed_against
+                    and not related(axis, before[0], after[0])
+                    and (axis, *before, *after) not in added
+                ):
+                    # "cherries on the north block, pears on the south block, and
+                    # strawberries in between": the two placed against the middle one are
+                    # in that order themselves
+                    completed.append(
+                        RelationIntent(kind=kinds[axis], subject=before[0], objects=(after[0],))
+                    )
     return completed
 
 
