@@ -24,8 +24,11 @@ __all__ = ["RowPlan", "plan_rows"]
 # The unplanted border a stated plot keeps when no headland is stated: at most
 # this share of its shorter planted side (a 6 m wide test plot keeps 0.6 m).
 _HEADLAND_SHARE = 0.1
-# Stated density and in-row spacing may disagree by this much before it is a contradiction.
-_AGREE = 0.02
+# Stated density and in-row spacing may disagree by this much before it is a contradiction
+# (a density said rounded: "2,800 trees/ha, 3.5 x 1.0 m" is 2,857 planted); the grid as
+# said is kept, with a warning past half a percent.
+_AGREE = 0.05
+_ROUNDED = 0.005
 # Exact factorisations of a tree count are used while their aspect is within this
 # factor of the crop's usual field shape.
 _MAX_ASPECT_STRETCH = 4.0
@@ -209,6 +212,12 @@ def plan_rows(
             )
         if in_row is None:  # a stated in-row spacing that agrees is kept as said
             in_row = from_density
+        elif abs(from_density - in_row) > _ROUNDED * in_row:
+            warnings.append(
+                f"{label}: {density:,.0f} plants/ha read as said roughly: planted at "
+                f"{spacing:g} m x {in_row:g} m as stated "
+                f"({10_000.0 * rows_per_bed / (spacing * in_row):,.0f} plants/ha)"
+            )
     length_rows = stated.get("row_length_m")
     per_row = stated.get("plants_per_row")
     if in_row is None and per_row is not None and length_rows is not None and per_row > 1:

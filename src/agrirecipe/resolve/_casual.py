@@ -47,7 +47,13 @@ def expand_casual(prompt: str) -> str:
         return f" {forms[key]} " if forms[key] else " "
 
     lower, lower_forms = _lower_forms()
-    text = pattern.sub(replace, prompt)
+    # "a straw🍓berry field": an emoji inside a word is not part of it
+    text = _EMOJI_IN_WORD.sub("", prompt)
+    # "apples w of the pears", "onions just S of it": a compass letter before "of"
+    text = _LETTER_SIDE.sub(lambda m: f"{_LETTER_SIDES[m.group('side').lower()]} of", text)
+    # "cab south of the pinot": the wine trade's short name (not a tractor's cab)
+    text = _CAB.sub("cabernet", text)
+    text = pattern.sub(replace, text)
     text = lower.sub(lambda match: lower_forms[match.group(0)], text)
     # "2 carrot fields, one nantes one chantenay": a list of members without commas
     text = _ONE_AFTER_ONE.sub(r"\g<first>, \g<second>", text)
@@ -61,12 +67,48 @@ def expand_casual(prompt: str) -> str:
         ),
         text,
     )
+    # "the greenhouse-to-field transfer test", "a sim-to-real benchmark": a purpose's
+    # compound, not a field ("row-to-row", "north-to-south" keep their meaning)
+    text = _COMPOUND.sub(lambda m: m.group(0) if _kept_compound(m) else " ", text)
+    # "Jonagored on M9", "Gala on MM106", "cherries on Gisela 5": a rootstock, not a count
+    text = _ROOTSTOCK.sub(" rootstock ", text)
     # "apples north pears south": a compass word ends one placement, the next crop begins
     text = _PLACED_AFTER_PLACED.sub(r"\g<first>, ", text)
+    # "riesling on the left chardonnay on the right": likewise a side said with "the"
+    text = _SIDE_AFTER_SIDE.sub(r"\g<first>, ", text)
+    # "valencia one bigger (4ha) moro one 2ha": a size in brackets ends its member
+    text = _SIZE_IN_BRACKETS.sub(r"\g<size>, ", text)
     # "1 of them 5 ha the other 3 ha": a measure ends one member, "the other" begins the next
     return _OTHER_AFTER_MEASURE.sub(r"\g<unit>, ", text)
 
 
+_COMPOUND = re.compile(r"\b(?P<a>[A-Za-z]+)-to-(?P<b>[A-Za-z]+)\b")
+_SIDES = frozenset(
+    {"north", "south", "east", "west", "top", "bottom", "left", "right", "front", "back"}
+)
+
+
+def _kept_compound(match: re.Match[str]) -> bool:
+    """A compound of one word twice ("row-to-row") or of sides ("north-to-south")."""
+    a, b = match.group("a").lower(), match.group("b").lower()
+    return a == b or a in _SIDES or b in _SIDES
+
+
+# Apple, pear and cherry rootstocks by their series letters and number (M9, MM106, G.41,
+# B9, Gisela 5): a letter (or two) joined to the number, or "Gisela" before one.
+# (in capitals only, and never M2 or M3: "200 plants per m2" is a unit)
+_ROOTSTOCK = re.compile(
+    r"(?<![\w.])(?:(?:MM|M|G|B)\.?(?![23]\b)\d{1,3}|(?i:gisela)\s*\d{1,2})(?![\w.²³])"
+)
+_LETTER_SIDES = {"n": "north", "s": "south", "e": "east", "w": "west"}
+_LETTER_SIDE = re.compile(r"(?<=[A-Za-z] )(?P<side>[NSEWnsew]) of\b")
+_CAB = re.compile(
+    r"(?<!tractor )(?<!truck )(?<!lorry )(?<!combine )(?<!sprayer )(?<!digger )(?<!the )"
+    r"(?<!my )(?<!its )(?<!a )\b(?i:cab)\b(?! (?i:sav|sauv|franc)\b)"
+)
+_EMOJI_IN_WORD = re.compile(
+    "(?<=[A-Za-z])[\U0001f000-\U0001faff\u2600-\u27bf\ufe0f\u200d]+(?=[A-Za-z])"
+)
 _NUMBERED_ITEM = re.compile(r"(?<![\w.,(])\d{1,2}\)\s+(?=[A-Za-z])")
 _COMPASS = r"(?i:north|south|east|west)"
 _PLACED_AFTER_PLACED = re.compile(
@@ -76,6 +118,18 @@ _PLACED_AFTER_PLACED = re.compile(
 )
 
 
+_SIDE_WORDS = r"(?i:left|right|top|bottom|north|south|east|west)"
+_SIDE_AFTER_SIDE = re.compile(
+    rf"(?P<first>\b(?i:on|at|in|to) (?i:the) {_SIDE_WORDS})\s+"
+    # (not "on the left of the barn", "at the top end", "on the left hand side")
+    r"(?=(?!(?i:of|and|or|then|side|end|half|third|hand|corner|edge|part|field|block|plot|"
+    r"rows?|beds?|there|is|are|was|with|by|near|next|beside|behind|one|ones)\b)[A-Za-z]+\s+"
+    rf"(?:[A-Za-z]+\s+)?(?i:on|at|in|to) (?i:the) {_SIDE_WORDS}\b)"
+)
+_SIZE_IN_BRACKETS = re.compile(
+    r"(?P<size>\(\s*\d[\d.,]*\s*(?i:ha|hectares?|acres?|ac|m2|m²)\s*\))\s+(?=[A-Za-z])"
+    r"(?!(?i:and|or|each|both|of|with|next|north|south|east|west|beside)\b)"
+)
 _OTHER_AFTER_MEASURE = re.compile(
     r"\b(?P<unit>ha|hectares?|acres?|m|metres|meters|rows)\s+(?=(?i:the others?)\b)"
 )

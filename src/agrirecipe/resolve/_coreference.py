@@ -139,6 +139,7 @@ def merge_coreferences(
             (first is not None and first.norm in definite)
             or definite_before_head(clause, mention)
             or _of_it(mention)
+            or _bare_one(kept, mention)
         )
         if (
             is_definite
@@ -349,6 +350,22 @@ def merge_coreferences(
         else:
             clause.mentions.remove(mention)
     return kept
+
+
+def _bare_one(kept: Sequence[Mention], mention: Mention) -> bool:
+    """'fruit one north of the veg one', 'agria one south of the fontane': a crop said
+    with "one" after it and nothing before it stands for the field of that crop named
+    before (not "a spring wheat one", a new field)."""
+    first = first_word(mention)
+    own = strong_crops(mention)
+    if first is None or first not in mention.heads or not pronoun_one(mention):
+        return False
+    if own:
+        return any(own <= strong_crops(m) for m in kept)
+    # ("fruit one north of the veg one": a field of a group of crops named before)
+    return mention.category is not None and any(
+        m.category == mention.category and not m.has_crop for m in kept
+    )
 
 
 def _with_one_named_before(clause: Clause, kept: Sequence[Mention], mention: Mention) -> bool:

@@ -14,6 +14,7 @@ import itertools
 from collections.abc import Sequence
 
 from agrirecipe.resolve._decompose import Clause, Mention
+from agrirecipe.resolve._links import link_norm
 from agrirecipe.resolve._structure import names_a_variety, strong_crops
 from agrirecipe.resolve._words import SENTENCE_MARKS
 
@@ -166,18 +167,26 @@ def _heads_counted_plots(clauses: Sequence[Clause], mention: Mention) -> bool:
     blocks, Kordia and Regina': a plot word or a crop right before a count of plots that
     lists members it can hold is their heading."""
     heading_crop = mention.has_crop and not names_a_variety(mention)
+    # ("Wheat plots for the phenotyping rover: two strips, ...": a plural said without a
+    # number before a colon)
+    plural_heading = (
+        mention.implied_count
+        and mention.clause + 1 < len(clauses)
+        and link_norm(clauses[mention.clause + 1]) == ":"
+    )
     if (
         (mention.plot is None and not heading_crop)
         or (mention.has_crop and not heading_crop)
-        or (mention.count or 1) != 1
+        or ((mention.count or 1) != 1 and not plural_heading)
         or mention.refinements
         or mention.clause + 1 >= len(clauses)
         or clauses[mention.clause].mentions[-1:] != [mention]
     ):
         return False
     following = clauses[mention.clause + 1]
-    # ("Rain-cover test for cherries: two blocks, Kordia and Regina")
-    if following.link is None or following.link.norm not in (",", ":"):
+    # ("Rain-cover test for cherries: two blocks, Kordia and Regina"; "sensor test field -
+    # 3 plots side by side, west to east: wheat, maize, potatoes")
+    if following.link is None or following.link.norm not in (",", ":", "-", "–", "—"):
         return False
     if len(following.mentions) != 1:
         return False
@@ -226,7 +235,14 @@ def _joint_headings(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> l
         ):
             continue
         owners: dict[int, int] = {}
+        seen: set[frozenset[tuple[str, str | None]]] = set()
         for member in after:
+            # ("a block of Bing and a block of Durondeau, Bing east of the Durondeau": a
+            # variety named again is the same member)
+            varieties = _varieties(member)
+            if varieties and varieties in seen:
+                continue
+            seen.add(varieties)
             fitting = [h for h in before if strong_crops(member) <= strong_crops(h)]
             if len(fitting) != 1 or not strong_crops(member):
                 break
@@ -239,6 +255,13 @@ def _joint_headings(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> l
             ):
                 return list(before)
     return []
+
+
+def _varieties(mention: Mention) -> frozenset[tuple[str, str | None]]:
+    """The (crop, variety) pairs a mention names strongly with a variety (else empty)."""
+    return frozenset(
+        (c, v) for c, v, weak in mention.interpretations or () if v is not None and not weak
+    )
 
 
 def _ends_sentence(clause: Clause) -> bool:

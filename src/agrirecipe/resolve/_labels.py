@@ -30,14 +30,30 @@ __all__ = [
 ]
 
 _NOUNS = r"(?:block|plot|field|parcel|area|section|strip|zone|bay|compartment|trial plot)"
+# "Field one: Russet potatoes ... Field two, south of field one: Fontane": a number word
+# as a label (always after its noun, like a number)
+_WORD_LABELS = r"(?i:one|two|three|four|five|six|seven|eight|nine|ten)"
+
+
+def _said(label: str) -> str:
+    """A pattern for a label as written: a letter in capitals ("north of B", never the
+    article "a"), a number word in any case ("field one")."""
+    return re.escape(label) if _letter(label) or label.isdigit() else f"(?i:{re.escape(label)})"
+
+
+def _letter(label: str) -> bool:
+    """A label that is one letter (referred to with or without its noun: "north of B")."""
+    return len(label) == 1 and label.isalpha()
+
+
 # "Block A:", "plot 2 -", "Field B," : a label that introduces what follows it.
 _DEFINITION = re.compile(
-    rf"\b(?i:{_NOUNS})\s+(?P<label>[A-H]|\d{{1,2}})\b\s*"
+    rf"\b(?i:{_NOUNS})\s+(?P<label>[A-H]|\d{{1,2}}|{_WORD_LABELS})\b\s*"
     rf"(?P<mark>[:,(\-–—]|(?i:is|has|sits|lies|stands|goes)\b)"
 )
 # "plot 2 Kordia cherries" among labels defined with a mark
 _LOOSE_DEFINITION = re.compile(
-    rf"\b(?i:{_NOUNS})\s+(?P<label>[A-H]|\d{{1,2}})\b(?P<mark>)\s+(?=[A-Za-z])"
+    rf"\b(?i:{_NOUNS})\s+(?P<label>[A-H]|\d{{1,2}}|{_WORD_LABELS})\b(?P<mark>)\s+(?=[A-Za-z])"
 )
 # "A = Roma, B = San Marzano": a bare letter given a crop by an equals sign
 _BARE_DEFINITION = re.compile(r"(?<![\w=])(?P<label>[A-H])\s*(?P<mark>=)(?!=)")
@@ -71,7 +87,7 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
     label ("Block A = Jonagored apples"). Text with fewer than two labels that name
     crops is returned unchanged.
     """
-    text = _valued_members(_numbered_members(text))
+    text = _PLURAL_LABELS.sub(_one_noun_each, _valued_members(_numbered_members(text)))
     definitions = sorted(
         [
             *(m for m in _DEFINITION.finditer(text) if not _REFERRED.search(text[: m.start()])),
@@ -80,7 +96,15 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
         ],
         key=lambda m: m.start(),
     )
-    if definitions:
+    # ("Plot 2 sits between plots 1 and 3": a label as the subject of a placing verb,
+    # naming no crop after it, is referred to, not defined)
+    subjects = [
+        m
+        for m in definitions
+        if m.group("mark").isalpha() and not _crop_phrase(text[m.end() :], tag)
+    ]
+    definitions = [m for m in definitions if m not in subjects]
+    if definitions or subjects:
         # "Plot 1 is Gala apples, plot 2 Kordia cherries, and plot 3 is ...": with other
         # labels defined, a label right before a crop's name defines it too
         defined = {m.group("label").upper() for m in definitions}
@@ -136,23 +160,38 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
         # only after its noun)
         pattern = re.compile(
             rf"(?P<before>\b(?i:{_BEFORE_REFERENCE})\s+)(?:(?i:the)\s+)?"
-            + (rf"(?:{noun})?" if label.isalpha() else noun)
-            + rf"{re.escape(label)}\b"
+            + (rf"(?:{noun})?" if _letter(label) else noun)
+            + _said(label)
+            + r"\b"
         )
         template = "\\g<before>the " + phrase.replace("\\", "\\\\")
         replaced, count = pattern.subn(template, out)
         out = replaced
-        if label.isalpha():
-            # "A is north of B, and D sits between A and C"
-            subject = re.compile(
-                rf"(?:^|(?<=[.;,:]\s)|(?<=\b(?i:and)\s))(?:{noun})?{re.escape(label)}\b"
-                rf"(?=\s+(?i:{_SUBJECT_VERBS})\b)"
-            )
-            out, said = subject.subn("the " + phrase.replace("\\", "\\\\"), out)
-            count += said
+        # "A is north of B, and D sits between A and C"; "Plot 2 sits between ..." (a
+        # number only after its noun)
+        subject = re.compile(
+            r"(?:^|(?<=[.;,:]\s)|(?<=\b(?i:and)\s))"
+            + (rf"(?:{noun})?" if _letter(label) else noun)
+            + _said(label)
+            + rf"\b(?=\s+(?i:{_SUBJECT_VERBS})\b)"
+        )
+        out, said = subject.subn("the " + phrase.replace("\\", "\\\\"), out)
+        count += said
         # a label never referenced is still a name, not another field ("Plot 2: ...")
         notes.append(f"{label} = {phrase}" + ("" if count else " (a label only)"))
     return out, notes
+
+
+# "between plots 1 and 3", "blocks A and C": one noun for two labels
+_PLURAL_LABELS = re.compile(
+    rf"\b(?P<noun>(?i:{_NOUNS}))s\s+(?P<a>[A-H]|\d{{1,2}}|{_WORD_LABELS})\s+(?P<and>(?i:and|&|or))\s+"
+    rf"(?P<b>[A-H]|\d{{1,2}}|{_WORD_LABELS})\b"
+)
+
+
+def _one_noun_each(match: re.Match[str]) -> str:
+    noun = match.group("noun")
+    return f"{noun} {match.group('a')} {match.group('and')} {noun} {match.group('b')}"
 
 
 # "three strips side by side, west to east wheat, maize, potatoes": an order said right
@@ -395,9 +434,19 @@ _NOT_PLACED = frozenset(
 )
 
 
+# "two apple blocks: Granny (west) and Fuji (east)": a side in brackets after a field
+_BRACKETED_SIDE = re.compile(
+    r"\(\s*(?P<side>(?i:north|south|east|west))(?i:ern)?(?:\s+(?i:side|end|half))?\s*\)"
+)
+
+
 def place_trailing_directions(text: str) -> str:
     """``text`` with "carrots north, potatoes south" written "carrots in the north,
-    potatoes in the south" (two or more such places, not all the same)."""
+    potatoes in the south" (two or more such places, not all the same), and likewise
+    "Granny (west) and Fuji (east)"."""
+    sides = {m.group("side").lower() for m in _BRACKETED_SIDE.finditer(text)}
+    if len(sides) >= 2:
+        text = _BRACKETED_SIDE.sub(lambda m: f"in the {m.group('side').lower()}", text)
     matches = [m for m in _TRAILING.finditer(text) if m.group("word").lower() not in _NOT_PLACED]
     if len(matches) < 2 or len({m.group("side").lower() for m in matches}) < 2:
         return text

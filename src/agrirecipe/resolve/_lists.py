@@ -16,7 +16,7 @@ import yaml
 
 from agrirecipe.resolve._lexicon import DATA_DIR
 
-__all__ = ["spread_value_lists"]
+__all__ = ["fill_gapped_counts", "spread_value_lists"]
 
 _NUMBER = r"\d+(?:[.,]\d+)?"
 
@@ -69,3 +69,33 @@ def spread_value_lists(text: str) -> str:
         return ", " + ", ".join(members[:-1]) + " and " + members[-1]
 
     return _pattern().sub(spread, text)
+
+
+@functools.cache
+def _gapped() -> re.Pattern[str]:
+    units = "|".join(re.escape(str(u)) for u in _data()["gapped_units"])
+    # (a name, not a word of the measure: "each 12 rows, at 75, 50 and 30 cm")
+    name = (
+        r"(?!(?i:at|on|in|with|by|of|every|each|both|about|around|approx|roughly|spaced|"
+        r"and|or|the|a|an|all|plus|also|then|to|from|x)\b)[A-Za-z][\w'-]*"
+    )
+    return re.compile(
+        rf"\b(?P<said>\d+)\s+(?P<unit>{units})\b"
+        # the next plot's name (one to three words, no number or unit among them)
+        rf"(?P<gap>\s*(?:,|;|\band\b|\bwhile\b)\s*{name}(?:\s+(?!\d){name}){{0,2}}\s+)"
+        # (a whole number, not "also 0.9 m rows")
+        rf"(?P<count>\d+)(?![.,]?\d)(?=\s*(?:[.;,!?)]|$|\band\b))",
+        re.IGNORECASE,
+    )
+
+
+def fill_gapped_counts(text: str) -> str:
+    """``text`` with "Chardonnay has 20 rows, Cabernet 16" written "..., Cabernet 16
+    rows": a bare number after the next name counts what the one before it counted."""
+    return _gapped().sub(
+        lambda m: (
+            f"{m.group('said')} {m.group('unit')}{m.group('gap')}{m.group('count')} "
+            f"{m.group('unit')}"
+        ),
+        text,
+    )

@@ -144,7 +144,11 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
             and bool(clauses[position + 1].items)
             and clauses[position + 1].items[0].role not in ("number", "quantity", "filler")
         )
-        if not before or (
+        in_brackets = bracketed_by(clauses, position) if clause.link is not None else None
+        if in_brackets is not None and clause.link is not None and clause.link.norm == "(":
+            # "valencia one bigger (4ha), moro one 2ha": a bracket is about what it follows
+            targets = [in_brackets]
+        elif not before or (
             next_link is not None
             and next_link.role == "conjunction"
             and forward is not None
@@ -200,19 +204,25 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
             listed = [i for i in geometry if any(m.share for m in i.data["geometry"])]
             before[-1].items.extend(listed)
             geometry = [i for i in geometry if i not in listed]
-        if geometry and (
-            shared_by_all(clauses, position)
-            # "Rows run east-west in both blocks": said of both in its own clause
-            or any(i.role == "all" and i.norm in ("both", "each") for i in clause.items)
-            or opens_with_rows(clauses, position)
-            or shared_by_all_after(clauses, position)
-            # "8 rows each at 1.5 m": "each" inside the measure itself
-            # ("20 rows, 50 m each": each row's length)
-            or any(
-                t.norm in ("each", "both")
-                for i in geometry
-                if not per_bed(i) and not each_row_long(clauses, position, i)
-                for t in i.tokens
+        # ("... a Riesling block whose rows run east-west": the rows of the field just named)
+        relative = clause.link is not None and clause.link.norm in ("whose", "which")
+        if (
+            geometry
+            and not relative
+            and (
+                shared_by_all(clauses, position)
+                # "Rows run east-west in both blocks": said of both in its own clause
+                or any(i.role == "all" and i.norm in ("both", "each") for i in clause.items)
+                or opens_with_rows(clauses, position)
+                or shared_by_all_after(clauses, position)
+                # "8 rows each at 1.5 m": "each" inside the measure itself
+                # ("20 rows, 50 m each": each row's length)
+                or any(
+                    t.norm in ("each", "both")
+                    for i in geometry
+                    if not per_bed(i) and not each_row_long(clauses, position, i)
+                    for t in i.tokens
+                )
             )
         ):
             # "A, B and C, each 20 x 30 m, rows at 90°": still about each of them;

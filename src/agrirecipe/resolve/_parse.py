@@ -95,7 +95,7 @@ from agrirecipe.resolve._lexicon import (
     tokenize,
     vocabulary,
 )
-from agrirecipe.resolve._lists import spread_value_lists
+from agrirecipe.resolve._lists import fill_gapped_counts, spread_value_lists
 from agrirecipe.resolve._loose import attach_loose
 from agrirecipe.resolve._measures import (
     parallel_spacing,
@@ -177,7 +177,7 @@ class PromptReader(FieldReading):
                 stage="resolve",
                 hint=f"describe the fields you want, e.g. {_EXAMPLES}",
             )
-        text = drop_list_numbers(spread_value_lists(expand_casual(prompt)))
+        text = drop_list_numbers(fill_gapped_counts(spread_value_lists(expand_casual(prompt))))
 
         def tag(phrase: str) -> list[Item]:
             return self.lexicon.tag(tokenize(phrase))

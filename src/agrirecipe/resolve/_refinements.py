@@ -86,6 +86,31 @@ def apply_refinements(
             and parent is not None
             and previous is not None
             and previous.refined_parent is parent
+            and clause.link is not None
+            and clause.link.role in ("relation", "between")
+            and len(clause.mentions) == 1
+            and definite_before_head(clause, clause.mentions[0])
+            and any(strong_crops(clause.mentions[0]) & strong_crops(r) for r in parent.refinements)
+            # (not "Block B, directly east of the Conference pears: Jonagored apples": the
+            # field it places comes after)
+            and not (
+                clause.index + 1 < len(clauses) and link_norm(clauses[clause.index + 1]) == ":"
+            )
+        ):
+            # "three fields: wheat up by the woods, potatoes right next to the wheat, and
+            # ...": the member a relation places against, named again; the listing goes on
+            again = clause.mentions[0]
+            clause.mentions = [
+                next(r for r in parent.refinements if strong_crops(again) & strong_crops(r))
+            ]
+            clause.refined_parent = parent
+            clause.refinement = previous.refinement
+            continue
+        if (
+            enumerating
+            and parent is not None
+            and previous is not None
+            and previous.refined_parent is parent
             and not clause.mentions
             and clause.items
             and clause.link is not None
@@ -293,6 +318,7 @@ def apply_refinements(
                 # "..., Valencia east of Hamlin", "bintje spuds & nantes carrots, carrots
                 # east of the spuds": a member named again
                 lists_members = False
+
             room = (parent.count or 1) - len(parent.refinements)
             if (
                 parent.implied_count

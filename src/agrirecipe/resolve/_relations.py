@@ -60,6 +60,13 @@ __all__ = ["read_relations"]
 _SAID_OF_A_LANDMARK = frozenset({"filler", "non_agricultural", "stage", "health", "season", "cue"})
 
 
+def _a_distance(clause: Clause) -> bool:
+    """A clause of only a distance ("20 m" before "south of them")."""
+    return any(i.role == "length_unit" for i in clause.items) and all(
+        i.role in ("filler", "number", "length_unit") for i in clause.items
+    )
+
+
 def read_relations(
     clauses: Sequence[Clause],
     members: dict[int, list[int]],
@@ -203,6 +210,8 @@ def read_relations(
             and position
             and clauses[position - 1].named
             and clauses[position - 1].items  # not "one ... and, north of it, one ..."
+            # (nor "cherry trees and, 20 m south of them, a plum tomato plot": a distance)
+            and not _a_distance(clauses[position - 1])
         ):
             # "put valencia oranges north of it, and a banana plot ...": the pronoun
             # ends its clause after a subject, so it points back and the fields after

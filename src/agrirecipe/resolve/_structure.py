@@ -21,7 +21,7 @@ from typing import Any
 
 from agrirecipe.resolve._decompose import Clause, Mention, MentionBuilder
 from agrirecipe.resolve._lexicon import Item, vocabulary
-from agrirecipe.resolve._links import listing
+from agrirecipe.resolve._links import link_norm, listing
 
 __all__ = [
     "EACH",
@@ -277,6 +277,33 @@ def take_the_lower_count(clauses: Sequence[Clause]) -> None:
             and 1 < lower < upper == mention.count
         ):
             mention.count = int(lower)
+    # "some veg fields, like 3 or 4, near a farmhouse": a count said after a plural that
+    # said none (the lower of two)
+    for clause, following in itertools.pairwise(clauses):
+        if not clause.mentions or following.mentions or following.link is None:
+            continue
+        plural = clause.mentions[-1]
+        said = [i for i in following.items if i.role != "filler"]
+        if (
+            not plural.implied_count
+            or following.link.norm != ","
+            or len(said) != 1
+            or said[0].role != "number"
+            or not isinstance(value := said[0].data.get("value"), int | float)
+            or not float(value).is_integer()
+            or not 1 < value <= 20
+        ):
+            continue
+        plural.count = int(value)
+        plural.implied_count = False
+        said[0].role = "filler"  # (counted: not a number for anything else)
+        index = following.index + 1
+        if index < len(clauses):
+            alternative = clauses[index]
+            if link_norm(alternative) == "or" and not alternative.mentions:
+                for item in alternative.items:
+                    if item.role == "number":
+                        item.role = "filler"
 
 
 def share_count_over_a_list(clauses: Sequence[Clause]) -> None:
