@@ -6,10 +6,15 @@ size said "each" by the last of a list."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import pytest
 
 from agrirecipe import generate
 from agrirecipe.recipe import SceneRecipe
+
+#: The fixture named_relations' answer (tests/resolve/conftest.py).
+NamedRelations = set[tuple[str, str, tuple[str, ...]]]
 
 
 def recipe(prompt: str) -> SceneRecipe:
@@ -118,14 +123,6 @@ def test_a_size_said_each_by_the_last_of_a_list() -> None:
         assert width * length == pytest.approx(10_000, rel=0.01)
 
 
-def relations(prompt: str) -> set[tuple[str, str, tuple[str, ...]]]:
-    """The recipe's relations, each field named by its variety when the prompt names one,
-    else by its crop."""
-    scene = recipe(prompt)
-    name = {f.id: (f.variety if "variety" in f.stated else f.crop) for f in scene.fields}
-    return {(r.kind, name[r.subject], tuple(name[o] for o in r.objects)) for r in scene.relations}
-
-
 @pytest.mark.parametrize(
     ("prompt", "expected"),
     [
@@ -178,9 +175,11 @@ def relations(prompt: str) -> set[tuple[str, str, tuple[str, ...]]]:
     ],
 )
 def test_fields_placed_in_other_words(
-    prompt: str, expected: set[tuple[str, str, tuple[str, ...]]]
+    prompt: str,
+    expected: set[tuple[str, str, tuple[str, ...]]],
+    named_relations: Callable[[str], NamedRelations],
 ) -> None:
-    said = relations(prompt)
+    said = named_relations(prompt)
     for relation in expected:
         kind, subject, objects = relation
         inverse = {"north_of": "south_of", "south_of": "north_of"}
@@ -189,8 +188,10 @@ def test_fields_placed_in_other_words(
         assert relation in said or flipped in said, (relation, said)
 
 
-def test_the_royal_gala_block_is_not_placed_by_the_packhouse_against_the_pears() -> None:
-    said = relations(
+def test_the_royal_gala_block_is_not_placed_by_the_packhouse_against_the_pears(
+    named_relations: Callable[[str], NamedRelations],
+) -> None:
+    said = named_relations(
         "the Royal Gala block north of the packhouse is ripe, and the Bartlett pears east of "
         "that block are ripening too."
     )

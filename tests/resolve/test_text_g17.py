@@ -7,22 +7,19 @@ brackets, emojis inside words, grids said "3.2 m rows at 1.25 m", and relations 
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import pytest
 
 from agrirecipe import generate
 from agrirecipe.recipe import SceneRecipe
 
+#: The fixture named_relations' answer (tests/resolve/conftest.py).
+NamedRelations = set[tuple[str, str, tuple[str, ...]]]
+
 
 def recipe(prompt: str) -> SceneRecipe:
     return generate(prompt, resolver="hybrid").recipe
-
-
-def relations(prompt: str) -> set[tuple[str, str, tuple[str, ...]]]:
-    """The recipe's relations, each field named by its variety when the prompt names one,
-    else by its crop."""
-    scene = recipe(prompt)
-    name = {f.id: (f.variety if "variety" in f.stated else f.crop) for f in scene.fields}
-    return {(r.kind, name[r.subject], tuple(name[o] for o in r.objects)) for r in scene.relations}
 
 
 @pytest.mark.parametrize(
@@ -167,9 +164,11 @@ def test_grids_said_with_at_and_with_the_unit_once() -> None:
     ],
 )
 def test_relations_said_in_other_words(
-    prompt: str, expected: tuple[str, str, tuple[str, ...]]
+    prompt: str,
+    expected: tuple[str, str, tuple[str, ...]],
+    named_relations: Callable[[str], NamedRelations],
 ) -> None:
-    assert expected in relations(prompt)
+    assert expected in named_relations(prompt)
 
 
 def test_a_relative_clause_of_rows_is_the_field_just_named() -> None:
