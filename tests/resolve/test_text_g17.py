@@ -178,3 +178,29 @@ def test_a_relative_clause_of_rows_is_the_field_just_named() -> None:
     ).fields
     assert chardonnay.geometry.rotation_deg % 180 == 0
     assert riesling.geometry.rotation_deg % 180 == 90
+
+
+def test_two_weak_variety_names_of_one_crop_name_it_together() -> None:
+    fields = recipe(
+        "Albion on the table-tops and Centenary in the soil beds next to them, both full of "
+        "ripe red berries; pickers in blue tabards working the Albion."
+    ).fields
+    assert [(f.crop, f.variety) for f in fields] == [
+        ("Strawberry", "Albion"),
+        ("Strawberry", "Malling Centenary"),
+    ]
+    assert len(recipe("Albion and Centenary").fields) == 2
+
+
+def test_where_the_photo_is_taken_from_and_a_rusty_chain_are_scenery() -> None:
+    fields = recipe(
+        "From the terrace: an orchard in full blossom on the slope and a vineyard down below "
+        "it, blue sky, a white van on the road."
+    ).fields
+    assert [f.category for f in fields] == ["Fruits", "Fruits"]
+    assert fields[1].crop == "Grape"
+    spelt, durum = recipe(
+        "Spelt on the near side of the hedge and durum beyond it, both still green with the "
+        "ears just coming out. Skylarks, huge sky, a gate with a rusty chain."
+    ).fields
+    assert (spelt.health, durum.health) == ("Healthy", "Healthy")

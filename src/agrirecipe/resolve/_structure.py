@@ -64,10 +64,11 @@ def promote_weak_varieties(clauses: Sequence[Clause], builder: MentionBuilder) -
     The crop comes from the mention the clause is coordinated with (the next
     clause, joined by "and"), else from the nearest earlier mention.
     """
+    supported = _named_together(clauses)
     for position, clause in enumerate(clauses):
         _fold_described_plants(clause)
         if clause.mentions:
-            _promote_into_plot(clauses, clause)
+            _promote_into_plot(clauses, clause, supported)
             continue
         weak = [item for item in clause.loose if item.role == "weak_variety"]
         if not weak:
@@ -105,7 +106,9 @@ def promote_weak_varieties(clauses: Sequence[Clause], builder: MentionBuilder) -
             at = clause.loose.index(weak[0])
             # "half acre of russets": what a size or a plot is "of" is a crop
             planted = at > 0 and clause.loose[at - 1].role == "of"
-            if len(crops) == 1 and planted:
+            if len(crops) == 1 and (planted or crops <= supported):
+                # ("Albion on the table-tops and Centenary in the soil beds": two names of
+                # varieties of one crop name it together)
                 _promote(clause, weak[0], weak[0].senses_of("variety")[0])
             elif len(crops) == 1 and weak[0].tokens[0].capitalised and in_list:
                 # "west to east: Lollo, then Imperator carrots": a capitalised name in a
@@ -140,7 +143,23 @@ def _fold_described_plants(clause: Clause) -> None:
     weak[0].role = "weak_variety"
 
 
-def _promote_into_plot(clauses: Sequence[Clause], clause: Clause) -> None:
+def _named_together(clauses: Sequence[Clause]) -> set[str]:
+    """Crops two or more different capitalised weak variety names in the prompt are all
+    varieties of ("Albion ... and Centenary ...": strawberries)."""
+    names: dict[str, set[str]] = {}
+    for clause in clauses:
+        for item in clause.items:
+            weak = item.role == "weak_variety" or (
+                item.role == "filler" and item.senses_of("variety")
+            )
+            if weak and item.tokens[0].capitalised:
+                for sense in item.senses_of("variety"):
+                    if sense.crop:
+                        names.setdefault(str(sense.crop), set()).add(item.norm)
+    return {crop for crop, said in names.items() if len(said) >= 2}
+
+
+def _promote_into_plot(clauses: Sequence[Clause], clause: Clause, supported: set[str]) -> None:
     """ "second plot of Sonata", "Sonata in the open ground": a weak variety name right
     after a crop-less plot's "of", or opening the plot's clause, names the plot's crop
     when an earlier field grows that crop."""
@@ -157,6 +176,7 @@ def _promote_into_plot(clauses: Sequence[Clause], clause: Clause) -> None:
         ):
             continue
         named = {c for c2 in clauses[: clause.index] for m in c2.mentions for c in strong_crops(m)}
+        named |= supported
         senses = [s for s in item.senses_of("variety") if s.crop in named]
         if senses:
             item.role = "head"
