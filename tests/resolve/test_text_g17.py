@@ -204,3 +204,21 @@ def test_where_the_photo_is_taken_from_and_a_rusty_chain_are_scenery() -> None:
         "ears just coming out. Skylarks, huge sky, a gate with a rusty chain."
     ).fields
     assert (spelt.health, durum.health) == ("Healthy", "Healthy")
+
+
+def test_beds_placed_side_by_side_are_plots_and_the_same_spec_is_the_whole_planting() -> None:
+    cos, lollo = recipe(
+        "June, overcast. My shot of two beds side by side, Cos lettuce and Lollo Rosso, both "
+        "ready to cut, drip tape along the rows."
+    ).fields
+    assert (cos.variety, lollo.variety) == ("Romaine", "Lollo Rosso")
+    assert cos.geometry.size_m == lollo.geometry.size_m
+    ripe, young = recipe(
+        "need lettuce for the robot's camera, 35 cm x 30 cm spacing, 40 rows, 20 m lenght, "
+        "rows due east-west, at harvest. Plus a second lettuce plot with the same spec 10 m to "
+        "the west, just planted."
+    ).fields
+    for field in (ripe, young):
+        assert (field.row_count, field.agronomy.in_row_spacing_m) == (40, 0.3)
+        assert field.geometry.rotation_deg % 180 == 90
+    assert (ripe.stage, young.stage) == ("Maturation", "Vegetative")

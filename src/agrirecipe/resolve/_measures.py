@@ -320,7 +320,7 @@ def same_spacing(intent: FieldIntent, before: FieldIntent, words: Sequence[Item]
     direction = any(w in i.norm for i in words for w in ("direction", "orientation"))
     length = any(w in i.norm for i in words for w in ("length", "long"))
     # "6 beds of 200-ft rows, and the same layout of Sonata": the whole planting again
-    layout = any("layout" in i.norm for i in words)
+    layout = any(w in i.norm for i in words for w in ("layout", "spec", "setup", "set up"))
     keys = (
         ("row_bearing_deg",)
         if direction
