@@ -13,7 +13,9 @@ named for what it reads, its words in the data file beside it):
 ====  ==========================================  ===============================
 step  pass                                        module (data)
 ====  ==========================================  ===============================
-1     texting forms become words                  ``_casual`` (casual.yaml)
+1     texting forms become words; value lists     ``_casual`` (casual.yaml),
+      and counts said once; labels, walks and     ``_lists`` (value_lists.yaml),
+      sides said in other words                   ``_labels``
 2     words, numbers and marks                    ``_lexicon.tokenize``
 3     stated row geometry                         ``_geometry`` (geometry.yaml)
 4     zones of a farm                             ``_zones`` (zones.yaml)
@@ -26,10 +28,11 @@ step  pass                                        module (data)
       colours and looks)                          ``reader_words``)
 8     scenery-only prompts, unknown crops         ``PromptReader._reject_*``
 9     clauses and mentions                        ``_decompose``
-10    counts, corrections, shared attributes;     ``_structure``,
-      the members a plural lists; descriptions    ``_refinements``,
-      of plants named; back-references; list      ``_descriptions``,
-      headings                                    ``_coreference``, ``_headings``
+10    weak variety names; counts, corrections,    ``_weak_varieties``,
+      shared attributes; the members a plural     ``_structure``,
+      lists; descriptions of plants named;        ``_refinements``,
+      back-references; list headings              ``_descriptions``,
+                                                  ``_coreference``, ``_headings``
 11    head-less clauses' words to their fields    ``_loose``,
       (which fields a measure is said of)         ``_measures``
 12    fields of each mention, their attributes    ``_fields``
@@ -111,7 +114,6 @@ from agrirecipe.resolve._structure import (
     apply_plural_counts,
     drop_alternatives,
     drop_negated,
-    promote_weak_varieties,
     raise_conflicts,
     share_count_over_a_list,
     share_counted_fields,
@@ -119,6 +121,7 @@ from agrirecipe.resolve._structure import (
     share_trailing_attributes,
     take_the_lower_count,
 )
+from agrirecipe.resolve._weak_varieties import promote_weak_varieties
 from agrirecipe.resolve._words import purpose_diseases, read_words
 from agrirecipe.resolve._zones import (
     complete_orders,

@@ -1,0 +1,165 @@
+"""Weak variety names: names that are varieties only beside their crop (issue 8).
+
+"Navel and Valencia oranges", "Flint on the north side, Popcorn on the south side",
+"second plot of Sonata", "Albion on the table-tops and Centenary in the soil beds": a
+name that is also an everyday word (``weak_variety_words`` in vocabulary.yaml) names a
+variety when a field beside it grows that variety's crop, when it is what a plot or a
+size is "of", when it opens a list of fields in capitals, or when another such name in
+the prompt is a variety of the same crop. :func:`promote_weak_varieties` makes such a
+name the head of its clause's mention.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any
+
+from agrirecipe.resolve._decompose import Clause, Mention, MentionBuilder
+from agrirecipe.resolve._lexicon import Item
+from agrirecipe.resolve._links import listing
+from agrirecipe.resolve._structure import descriptive_words, strong_crops
+
+__all__ = ["promote_weak_varieties"]
+
+
+def promote_weak_varieties(clauses: Sequence[Clause], builder: MentionBuilder) -> None:
+    """A clause holding only a weak variety name ("navel and valencia oranges") gets a head.
+
+    The crop comes from the mention the clause is coordinated with (the next
+    clause, joined by "and"), else from the nearest earlier mention.
+    """
+    supported = _named_together(clauses)
+    for position, clause in enumerate(clauses):
+        _fold_described_plants(clause)
+        if clause.mentions:
+            _promote_into_plot(clauses, clause, supported)
+            continue
+        weak = [item for item in clause.loose if item.role == "weak_variety"]
+        if not weak:
+            continue
+        neighbours: list[Mention] = []
+        following = clauses[position + 1] if position + 1 < len(clauses) else None
+        if (
+            following is not None
+            and following.link is not None
+            # "navel and valencia oranges"; "Sonata in 10 beds north of Malling Centenary"
+            and following.link.role in ("conjunction", "relation", "between")
+            and following.mentions
+        ):
+            neighbours.append(following.mentions[0])
+        neighbours += [m for c in reversed(clauses[:position]) for m in reversed(c.mentions)]
+        if weak[0].tokens[0].capitalised:
+            # "Flint on the north side, Popcorn on the south side": a capitalised name
+            # beside a variety of its crop later in the sentence
+            for later in clauses[position + 1 :]:
+                if later.link is not None and later.link.norm in (".", "!", "?", ";"):
+                    break
+                neighbours += later.mentions[:1]
+        for neighbour in neighbours:
+            crops = strong_crops(neighbour)
+            senses = [s for s in weak[0].senses_of("variety") if s.crop in crops]
+            if not senses:
+                continue
+            mention = _promote(clause, weak[0], senses[0])
+            if neighbour is (following.mentions[0] if following and following.mentions else None):
+                mention.plot = neighbour.plot
+            break
+        else:
+            crops = {s.crop for s in weak[0].senses_of("variety") if s.crop}
+            in_list = clause.link is not None and (listing(clause.link) or clause.link.norm == ":")
+            at = clause.loose.index(weak[0])
+            # "half acre of russets": what a size or a plot is "of" is a crop
+            planted = at > 0 and clause.loose[at - 1].role == "of"
+            if len(crops) == 1 and (planted or crops <= supported):
+                # ("Albion on the table-tops and Centenary in the soil beds": two names of
+                # varieties of one crop name it together)
+                _promote(clause, weak[0], weak[0].senses_of("variety")[0])
+            elif len(crops) == 1 and weak[0].tokens[0].capitalised and in_list:
+                # "west to east: Lollo, then Imperator carrots": a capitalised name in a
+                # list of fields is its variety even when no field beside it is its crop
+                _promote(clause, weak[0], weak[0].senses_of("variety")[0])
+
+
+def _fold_described_plants(clause: Clause) -> None:
+    """ "Sonata with grey mould furring the fruit": after a weak variety name, a mention
+    made only of words for plants or fruit describes that variety's field; its words
+    become the clause's loose words so the name can head the clause."""
+    weak = [
+        i
+        for i in clause.items
+        if i.role == "weak_variety" or (i.role == "filler" and i.senses_of("variety"))
+    ]
+    if not weak or not clause.mentions:
+        return
+    words = descriptive_words()
+    if not all(h.norm in words for m in clause.mentions for h in m.heads):
+        return
+    first = min(h.start for m in clause.mentions for h in m.heads)
+    if weak[0].start > first:
+        return
+    loose = {id(i): i for i in clause.loose}
+    for mention in clause.mentions:
+        for head in mention.heads:
+            head.role = "filler"
+        loose.update((id(i), i) for i in mention.items)
+    clause.loose = sorted(loose.values(), key=lambda i: i.start)
+    clause.mentions = []
+    weak[0].role = "weak_variety"
+
+
+def _named_together(clauses: Sequence[Clause]) -> set[str]:
+    """Crops two or more different capitalised weak variety names in the prompt are all
+    varieties of ("Albion ... and Centenary ...": strawberries)."""
+    names: dict[str, set[str]] = {}
+    for clause in clauses:
+        for item in clause.items:
+            weak = item.role == "weak_variety" or (
+                item.role == "filler" and item.senses_of("variety")
+            )
+            if weak and item.tokens[0].capitalised:
+                for sense in item.senses_of("variety"):
+                    if sense.crop:
+                        names.setdefault(str(sense.crop), set()).add(item.norm)
+    return {crop for crop, said in names.items() if len(said) >= 2}
+
+
+def _promote_into_plot(clauses: Sequence[Clause], clause: Clause, supported: set[str]) -> None:
+    """ "second plot of Sonata", "Sonata in the open ground": a weak variety name right
+    after a crop-less plot's "of", or opening the plot's clause, names the plot's crop
+    when an earlier field grows that crop."""
+    if len(clause.mentions) != 1:
+        return
+    mention = clause.mentions[0]
+    if mention.has_crop or mention.plot is None or mention.category is not None:
+        return
+    ordered = sorted(clause.items, key=lambda i: i.start)
+    for index, item in enumerate(ordered):
+        opens = index == 0 and item.tokens[0].capitalised
+        if item.role not in ("weak_variety", "filler") or not (
+            opens or (index > 0 and ordered[index - 1].role == "of")
+        ):
+            continue
+        named = {c for c2 in clauses[: clause.index] for m in c2.mentions for c in strong_crops(m)}
+        named |= supported
+        senses = [s for s in item.senses_of("variety") if s.crop in named]
+        if senses:
+            item.role = "head"
+            item.data["promoted"] = True
+            if item not in mention.items:
+                mention.items.append(item)
+            mention.heads.append(item)
+            mention.interpretations = [(str(senses[0].crop), str(senses[0].value), False)]
+        return
+
+
+def _promote(clause: Clause, item: Item, sense: Any) -> Mention:
+    """Make a weak variety name the head of its clause's one mention."""
+    item.role = "head"
+    item.data["promoted"] = True
+    mention = Mention(clause=clause.index)
+    mention.items = [i for i in clause.loose if i is not item]
+    mention.heads.append(item)
+    mention.items.append(item)
+    mention.interpretations = [(str(sense.crop), str(sense.value), False)]
+    clause.mentions, clause.loose = [mention], []
+    return mention
