@@ -24,7 +24,7 @@ from agrirecipe.resolve._lexicon import (
     Item,
     reader_words,
 )
-from agrirecipe.resolve._links import PRONOUNS, coordinated
+from agrirecipe.resolve._links import PRONOUNS, coordinated, link_norm
 from agrirecipe.resolve._measures import (
     after_list_plots,
     bracketed_by,
@@ -156,6 +156,9 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
             and starts_bare
             # ("onions, mature, sept, 1 ha + 1 ha of spuds": the spuds say their own)
             and not {i.role for i in attributes} & {i.role for i in forward.items}
+            # (not "dent corn (field corn) 76cm rows & flint corn": after a bracket that
+            # closes on the field before)
+            and link_norm(clause) != ")"
         ):
             targets = [forward] if forward is not None else []
         elif _same_as_before_next(clauses, position, attributes, forward):

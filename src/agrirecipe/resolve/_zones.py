@@ -439,5 +439,18 @@ def drop_placed_neighbours(
     return [
         r
         for r in relations
-        if r.kind != "next_to" or frozenset((r.subject, *r.objects)) not in placed
+        if r.kind != "next_to"
+        or frozenset((r.subject, *r.objects)) not in placed
+        # ("two wheat fields next to each other: dinkel on the left, durum on the right":
+        # said to touch, and placed too)
+        or _said_to_touch(r)
     ]
+
+
+#: Words that say fields touch, whatever side each is on.
+_TOUCHING = ("each other", "one another", "side by side")
+
+
+def _said_to_touch(relation: RelationIntent) -> bool:
+    text = (relation.text or "").lower()
+    return any(words in text for words in _TOUCHING)
