@@ -89,3 +89,26 @@ def test_measures_after_a_bracket_and_rows_on_each_ridge() -> None:
     (carrots,) = recipe("Danvers carrots on 30-inch ridges, 2 rows each, 20 ridges").fields
     assert carrots.agronomy.rows_per_bed == 2
     assert carrots.row_count == 40
+
+
+def test_a_gap_before_the_list_of_plots_is_no_row_spacing() -> None:
+    onions, carrots = recipe(
+        "Two plots for the weeding-robot benchmark, 10 m apart: the western one onions, rows "
+        "0.30 m apart with a bulb every 10 cm, 40 rows of 25 m; the eastern one carrots on 75 cm "
+        "ridges, two rows per ridge, 12 ridges."
+    ).fields
+    assert (onions.agronomy.row_spacing_m, carrots.agronomy.rows_per_bed) == (0.3, 2)
+
+
+def test_the_other_two_and_both_blocks_are_the_members() -> None:
+    fields = recipe(
+        "Three 20 x 60 m potato plots in a line, north to south: Bintje, then Agria, then "
+        "Fontane. Only the Agria in the middle has late blight; the other two are clean."
+    ).fields
+    assert [f.health for f in fields] == ["Healthy", "Ill", "Healthy"]
+    fields = recipe(
+        "Two apple blocks: Jonagored at 3.5 m rows and 1 m in-row, and Pink Lady west of it at "
+        "3.2 m rows. Rows NW-SE in both blocks. Harvest-ready, late September."
+    ).fields
+    assert [f.stage for f in fields] == ["Maturation", "Maturation"]
+    assert {f.geometry.rotation_deg % 180 for f in fields} == {45.0}

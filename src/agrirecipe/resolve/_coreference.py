@@ -133,6 +133,16 @@ def merge_coreferences(
                 mention.count = 2  # "Both cereal fields beside the dryer": two, named now
             kept.append(mention)
             continue
+        said_of_all = _both_of_the_counted(kept, mention)
+        if said_of_all:
+            # "Two apple blocks: Jonagored ..., and Pink Lady ... Rows NW-SE in both
+            # blocks.": what is said of "both blocks" is said of each member
+            attributes = [i for i in mention.items if i not in mention.heads]
+            for each in said_of_all:
+                each.items.extend(attributes)
+            clause.mentions.remove(mention)
+            merged.add(clause.index)
+            continue
         # "the carrots ...", "fire blight on the pears", "the Roma one"; "one big field
         # of it" (of the crop just named)
         is_definite = (
@@ -350,6 +360,28 @@ def merge_coreferences(
         else:
             clause.mentions.remove(mention)
     return kept
+
+
+def _both_of_the_counted(kept: Sequence[Mention], mention: Mention) -> list[Mention]:
+    """The members of the counted plural named last, when ``mention`` is only "both" (or
+    "all") and a plural plot noun naming no crop ("in both blocks"); else none."""
+    if mention.has_crop or mention.count is not None:
+        return []
+    ordered = sorted(mention.items, key=lambda i: i.start)
+    said = any(
+        a.norm in ("both", "all")
+        and b.role == "plot"
+        and b in mention.heads
+        and b.norm.endswith("s")
+        for a, b in itertools.pairwise(ordered)
+    )
+    host = next((m for m in reversed(kept) if m.refinements), None)
+    if not said or host is None:
+        return []
+    members = list({id(r): r for r in host.refinements}.values())
+    if len(members) < 2 or (any(a.norm == "both" for a in ordered) and len(members) != 2):
+        return []
+    return members
 
 
 def _bare_one(kept: Sequence[Mention], mention: Mention) -> bool:

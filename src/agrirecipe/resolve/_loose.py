@@ -71,7 +71,8 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
             # "make the corn biggest like 5 ha, the others 1 ha each": every field
             # that does not say the same of itself
             for mention in mentions:
-                for sub in (mention, *mention.refinements):
+                # (each member of a counted plural, not the plural its members share)
+                for sub in {id(r): r for r in mention.refinements}.values() or (mention,):
                     roles = {i.role for i in sub.items}
                     sub.items.extend(i for i in others if i.role not in roles)
             continue
