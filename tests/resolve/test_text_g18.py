@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import pytest
 
-from agrirecipe import UnknownCropError, generate
+from agrirecipe import PromptError, UnknownCropError, generate
 from agrirecipe.recipe import SceneRecipe
 
 
@@ -112,3 +112,13 @@ def test_the_other_two_and_both_blocks_are_the_members() -> None:
     ).fields
     assert [f.stage for f in fields] == ["Maturation", "Maturation"]
     assert {f.geometry.rotation_deg % 180 for f in fields} == {45.0}
+
+
+def test_a_weak_variety_name_alone_with_its_field_said() -> None:
+    (russet,) = recipe(
+        "The big pivot circle is Russet, 50 ha, tops dying back and ready for lifting in September."
+    ).fields
+    assert (russet.crop, russet.stage) == ("Potato", "Maturation")
+    # (a stray name with nothing said of a field is still no crop)
+    with pytest.raises(PromptError, match="no crop or field"):
+        recipe("Flint walls around the yard")

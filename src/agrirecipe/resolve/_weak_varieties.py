@@ -29,6 +29,13 @@ def promote_weak_varieties(clauses: Sequence[Clause], builder: MentionBuilder) -
     clause, joined by "and"), else from the nearest earlier mention.
     """
     supported = _named_together(clauses)
+    # ("The big pivot circle is Russet, 50 ha, ...": the only name of a crop in a prompt
+    # that says how big or how grown its field is; not "Flint walls around the yard")
+    alone = (
+        not any(c.mentions for c in clauses)
+        and sum(1 for c in clauses for i in c.loose if i.role == "weak_variety") == 1
+        and any(i.role in ("size", "geometry", "stage") for c in clauses for i in c.items)
+    )
     for position, clause in enumerate(clauses):
         _fold_described_plants(clause)
         if clause.mentions:
@@ -74,7 +81,7 @@ def promote_weak_varieties(clauses: Sequence[Clause], builder: MentionBuilder) -
                 # ("Albion on the table-tops and Centenary in the soil beds": two names of
                 # varieties of one crop name it together)
                 _promote(clause, weak[0], weak[0].senses_of("variety")[0])
-            elif len(crops) == 1 and weak[0].tokens[0].capitalised and in_list:
+            elif len(crops) == 1 and weak[0].tokens[0].capitalised and (in_list or alone):
                 # "west to east: Lollo, then Imperator carrots": a capitalised name in a
                 # list of fields is its variety even when no field beside it is its crop
                 _promote(clause, weak[0], weak[0].senses_of("variety")[0])
