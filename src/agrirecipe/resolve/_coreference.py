@@ -27,6 +27,7 @@ from agrirecipe.resolve._structure import (
     names_a_variety,
     one_of_the,
     pronoun_one,
+    said_of_all_plots,
     same_variety,
     strong_crops,
 )
@@ -365,21 +366,13 @@ def merge_coreferences(
 def _both_of_the_counted(kept: Sequence[Mention], mention: Mention) -> list[Mention]:
     """The members of the counted plural named last, when ``mention`` is only "both" (or
     "all") and a plural plot noun naming no crop ("in both blocks"); else none."""
-    if mention.has_crop or mention.count is not None:
+    if mention.has_crop or mention.count is not None or not said_of_all_plots(mention):
         return []
-    ordered = sorted(mention.items, key=lambda i: i.start)
-    said = any(
-        a.norm in ("both", "all")
-        and b.role == "plot"
-        and b in mention.heads
-        and b.norm.endswith("s")
-        for a, b in itertools.pairwise(ordered)
-    )
     host = next((m for m in reversed(kept) if m.refinements), None)
-    if not said or host is None:
+    if host is None:
         return []
     members = list({id(r): r for r in host.refinements}.values())
-    if len(members) < 2 or (any(a.norm == "both" for a in ordered) and len(members) != 2):
+    if len(members) < 2 or (any(i.norm == "both" for i in mention.items) and len(members) != 2):
         return []
     return members
 

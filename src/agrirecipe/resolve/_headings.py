@@ -10,12 +10,11 @@ the next sentences name exactly two fields.
 
 from __future__ import annotations
 
-import itertools
 from collections.abc import Sequence
 
 from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._links import link_norm
-from agrirecipe.resolve._structure import names_a_variety, strong_crops
+from agrirecipe.resolve._structure import names_a_variety, said_of_all_plots, strong_crops
 from agrirecipe.resolve._words import SENTENCE_MARKS
 
 __all__ = [
@@ -355,8 +354,6 @@ def drop_titles(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Ment
     return mentions[1:]
 
 
-#: Words that say the fields they count are all of them ("in both blocks").
-_ALL_OF = frozenset({"both", "all"})
 #: Attributes a summary said before its fields gives each of them.
 _SUMMARY_ROLES = frozenset({"stage", "health", "cue", "season", "month"})
 
@@ -368,13 +365,13 @@ def drop_forward_summaries(clauses: Sequence[Clause], mentions: list[Mention]) -
     and is not one more field. Its stage, health, cues and season go to each field that
     states none of its own. Return the fields left."""
     for position, summary in enumerate(mentions):
-        ordered = sorted(summary.items, key=lambda i: i.start)
-        said_of_all = any(
-            a.norm in _ALL_OF and b.role == "plot" and b.norm.endswith("s")
-            for a, b in itertools.pairwise(ordered)
-        )
         crops = strong_crops(summary)
-        if not said_of_all or not crops or names_a_variety(summary) or summary.count is not None:
+        if (
+            not said_of_all_plots(summary)
+            or not crops
+            or names_a_variety(summary)
+            or summary.count is not None
+        ):
             continue
         later = [m for m in mentions[position + 1 :] if strong_crops(m)]
         if len(later) < 2 or not all(strong_crops(m) <= crops for m in later):
@@ -383,7 +380,7 @@ def drop_forward_summaries(clauses: Sequence[Clause], mentions: list[Mention]) -
         named = {
             frozenset((c, v) for c, v, weak in m.interpretations or () if not weak) for m in later
         }
-        if any(a.norm == "both" for a in ordered) and len(named) != 2:
+        if any(i.norm == "both" for i in summary.items) and len(named) != 2:
             continue
         lent = [i for i in summary.items if i.role in _SUMMARY_ROLES]
         for field in later:

@@ -42,6 +42,7 @@ __all__ = [
     "per_bed",
     "pronoun_one",
     "raise_conflicts",
+    "said_of_all_plots",
     "same_variety",
     "share_count_over_a_list",
     "share_counted_fields",
@@ -285,6 +286,19 @@ EACH = frozenset({"each", "all", "both"})
 def names_a_variety(mention: Mention) -> bool:
     """Whether the mention names a variety (not only a crop)."""
     return any(v is not None for _, v, weak in mention.interpretations or () if not weak)
+
+
+def said_of_all_plots(mention: Mention) -> bool:
+    """'in both blocks', 'all the plots': "both" or "all" right before a plural plot noun
+    the mention is headed by."""
+    ordered = sorted(mention.items, key=lambda i: i.start)
+    return any(
+        a.norm in ("both", "all")
+        and b.role == "plot"
+        and b in mention.heads
+        and b.norm.endswith("s")
+        for a, b in itertools.pairwise(ordered)
+    )
 
 
 def pronoun_one(mention: Mention) -> bool:
