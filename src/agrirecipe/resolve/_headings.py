@@ -14,7 +14,12 @@ from collections.abc import Sequence
 
 from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._links import link_norm
-from agrirecipe.resolve._structure import names_a_variety, said_of_all_plots, strong_crops
+from agrirecipe.resolve._structure import (
+    names_a_variety,
+    said_of_all_plots,
+    same_variety,
+    strong_crops,
+)
 from agrirecipe.resolve._words import SENTENCE_MARKS
 
 __all__ = [
@@ -234,14 +239,13 @@ def _joint_headings(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> l
         ):
             continue
         owners: dict[int, int] = {}
-        seen: set[frozenset[tuple[str, str | None]]] = set()
+        seen: list[Mention] = []
         for member in after:
             # ("a block of Bing and a block of Durondeau, Bing east of the Durondeau": a
             # variety named again is the same member)
-            varieties = _varieties(member)
-            if varieties and varieties in seen:
+            if any(same_variety(earlier, member) for earlier in seen):
                 continue
-            seen.add(varieties)
+            seen.append(member)
             fitting = [h for h in before if strong_crops(member) <= strong_crops(h)]
             if len(fitting) != 1 or not strong_crops(member):
                 break
@@ -254,13 +258,6 @@ def _joint_headings(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> l
             ):
                 return list(before)
     return []
-
-
-def _varieties(mention: Mention) -> frozenset[tuple[str, str | None]]:
-    """The (crop, variety) pairs a mention names strongly with a variety (else empty)."""
-    return frozenset(
-        (c, v) for c, v, weak in mention.interpretations or () if v is not None and not weak
-    )
 
 
 def _ends_sentence(clause: Clause) -> bool:
