@@ -5,10 +5,14 @@ measure after a bracket, and rows on each ridge."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import pytest
 
 from agrirecipe import PromptError, UnknownCropError, generate
 from agrirecipe.recipe import SceneRecipe
+
+NamedRelations = set[tuple[str, str, tuple[str, ...]]]
 
 
 def recipe(prompt: str) -> SceneRecipe:
@@ -122,3 +126,90 @@ def test_a_weak_variety_name_alone_with_its_field_said() -> None:
     # (a stray name with nothing said of a field is still no crop)
     with pytest.raises(PromptError, match="no crop or field"):
         recipe("Flint walls around the yard")
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "Strawberry beds on 1.4 m centres with 80 cm bed tops, 2 rows a bed, 10 beds",
+        "Lettuce in 10 beds on 1.4 m centres, beds 20 cm high, 4 rows per bed, 50 cm paths",
+        "10 beds of lettuce on 1.4 m centres, 4 rows per bed, sown 2 cm deep",
+    ],
+)
+def test_measures_no_recipe_holds_are_not_used(prompt: str) -> None:
+    # a bed's top, its height, the paths between beds and the sowing depth are no bed
+    # width and no row spacing (they were read as a second bed width and refused, or
+    # taken as the beds' width)
+    result = generate(prompt, resolver="hybrid", explain=True)
+    (field,) = result.recipe.fields
+    assert (field.bed_count, field.agronomy.row_spacing_m) == (10, 1.4)
+    assert "not used" in str(result.explanation)
+
+
+def test_sowing_depth_and_tramlines_are_no_row_spacing() -> None:
+    (wheat,) = recipe("wheat drilled 3 cm deep, 12.5 cm rows, tramlines every 24 m").fields
+    assert wheat.agronomy.row_spacing_m == 0.125
+    (carrots,) = recipe("carrots sown 2 cm deep in 45 cm rows").fields
+    assert carrots.agronomy.row_spacing_m == 0.45
+
+
+def test_a_count_after_the_plot_noun() -> None:
+    low, high = recipe(
+        "Corn plot pair for our stand-count drone, side by side: one at 30,000 plants per acre "
+        "and one at 36,000 per acre, both on 30-inch rows, 24 rows each, 500 ft long."
+    ).fields
+    assert [round(f.plants_per_ha) for f in (low, high)] == [74132, 88958]
+    assert low.row_count == high.row_count == 24
+    assert [
+        f.variety for f in recipe("we need a lettuce strip trio: Iceberg, Lollo and Cos").fields
+    ] == [
+        "Iceberg",
+        "Lollo Rosso",
+        "Romaine",
+    ]
+
+
+def test_a_total_size_before_the_sizes_that_make_it_up() -> None:
+    wheat, maize = recipe(
+        "We farm 4 acres: 2.5 acres of wheat and 1.5 of corn, with a hedge between them."
+    ).fields
+    assert (wheat.crop, maize.crop) == ("Wheat", "Maize")
+    assert wheat.geometry.area_m2 == pytest.approx(2.5 * 4046.8564224, rel=0.01)
+    assert maize.geometry.area_m2 == pytest.approx(1.5 * 4046.8564224, rel=0.01)
+    # (a size that is not their sum is still a second size of the first field)
+    with pytest.raises(PromptError, match="two sizes"):
+        recipe("We farm 9 acres: 2.5 acres of wheat and 1.5 of corn")
+
+
+def test_rows_on_each_ridge_are_not_every_fields(
+    named_relations: Callable[[str], NamedRelations],
+) -> None:
+    prompt = (
+        "Danvers carrots on 30-inch ridges, 2 rows each, 20 ridges, beside a strip of Red "
+        "Baron onions in 12-inch rows, 30 rows. For the weeding robot, June."
+    )
+    carrots, onions = recipe(prompt).fields
+    assert (carrots.bed_count, carrots.agronomy.rows_per_bed) == (20, 2)
+    assert (onions.row_count, onions.agronomy.rows_per_bed) == (30, 1)
+    assert named_relations(prompt) == {("next_to", "Danvers", ("Red Baron",))}
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "Two plots in my photo, side by side with a ditch between: onions whose leaves are pale "
+        "with greyish-violet fuzz, and carrots that look perfectly healthy.",
+        "Two plots side by side, a farm track running between them: onions and carrots",
+    ],
+)
+def test_a_ditch_between_plots_said_side_by_side_keeps_them_side_by_side(
+    prompt: str, named_relations: Callable[[str], NamedRelations]
+) -> None:
+    assert [f.crop for f in recipe(prompt).fields] == ["Onion", "Carrot"]
+    assert named_relations(prompt) == {("next_to", "Carrot", ("Onion",))}
+
+
+def test_a_hedge_between_two_fields_is_scenery_not_a_between() -> None:
+    result = generate("onions and carrots with a hedge between them", resolver="hybrid")
+    assert [f.crop for f in result.recipe.fields] == ["Onion", "Carrot"]
+    assert not any("between" in w for w in result.recipe.warnings)

@@ -78,8 +78,27 @@ def expand_casual(prompt: str) -> str:
     text = _SIDE_AFTER_SIDE.sub(r"\g<first>, ", text)
     # "valencia one bigger (4ha) moro one 2ha": a size in brackets ends its member
     text = _SIZE_IN_BRACKETS.sub(r"\g<size>, ", text)
+    # "Corn plot pair", "a lettuce strip trio": a count said after the plot noun
+    text = _PLOT_COUNT_AFTER.sub(_count_before_plots, text)
     # "1 of them 5 ha the other 3 ha": a measure ends one member, "the other" begins the next
     return _OTHER_AFTER_MEASURE.sub(r"\g<unit>, ", text)
+
+
+_PLOT_COUNT_AFTER = re.compile(
+    r"(?P<lead>\b(?i:a|an|the|our|my|this|that|for|of|with|and|need|want)\s+|^|(?<=[,.;:!?(])\s*)"
+    r"(?P<words>(?:[A-Za-z][\w'-]*\s+){0,3}?)"
+    r"(?P<noun>(?i:plot|block|field|strip|bed|orchard|vineyard|grove|tunnel|greenhouse|paddock))s?"
+    r"\s+(?P<count>(?i:pair|duo|trio|quartet))\b(?!\s+of\b)"
+)
+_COUNT_WORDS = {"pair": "two", "duo": "two", "trio": "three", "quartet": "four"}
+
+
+def _count_before_plots(match: re.Match[str]) -> str:
+    lead = match.group("lead")
+    if lead.strip().lower() in {"a", "an", "the"}:
+        lead = ""
+    count = _COUNT_WORDS[match.group("count").lower()]
+    return f"{lead}{count} {match.group('words')}{match.group('noun')}s"
 
 
 _COMPOUND = re.compile(r"\b(?P<a>[A-Za-z]+)-to-(?P<b>[A-Za-z]+)\b")

@@ -104,6 +104,8 @@ class _Tables:
     areas: dict[str, float]
     directions: dict[str, float]
     row_words: frozenset[str]
+    #: Measures of things a recipe does not hold (bed tops, paths, sowing depth).
+    unused: tuple[re.Pattern[str], ...] = ()
 
 
 @functools.lru_cache(maxsize=1)
@@ -132,16 +134,20 @@ def _tables() -> _Tables:
         "{AREA}": _alternatives(areas),
         "{DIR}": _alternatives(directions),
     }
-    patterns: list[_Pattern] = []
-    for entry in data["patterns"]:
+
+    def compiled(pattern: str) -> re.Pattern[str]:
         # A pattern ends where a word ends ("\\b" fails after "°").
-        source = re.sub(r"\\b$", "(?![a-z0-9])", str(entry["re"]))
+        source = re.sub(r"\\b$", "(?![a-z0-9])", pattern)
         for name, regex in fill.items():
             source = source.replace(name, regex)
+        return re.compile(rf"(?<![\w.]){source}")
+
+    patterns: list[_Pattern] = []
+    for entry in data["patterns"]:
         patterns.append(
             _Pattern(
                 key=str(entry["key"]),
-                regex=re.compile(rf"(?<![\w.]){source}"),
+                regex=compiled(str(entry["re"])),
                 scale=float(entry.get("scale", 1.0)),
                 invert=bool(entry.get("invert", False)),
                 min_m=entry.get("min_m"),
@@ -166,6 +172,7 @@ def _tables() -> _Tables:
         directions=directions,
         # the nouns only: "crop rows" is near rows, "a root-crop harvester" is not
         row_words=frozenset(str(phrase).split()[-1] for phrase in (*words["rows"], *words["beds"])),
+        unused=tuple(compiled(str(pattern)) for pattern in data["unused"]),
     )
 
 
@@ -176,11 +183,16 @@ def geometry_nouns() -> frozenset[str]:
     return frozenset(str(w) for key in ("rows", "beds", "plants") for w in words[key])
 
 
-def find_geometry(tokens: Sequence[Token]) -> list[GeometryMatch]:
+def find_geometry(
+    tokens: Sequence[Token], unused: list[tuple[int, int]] | None = None
+) -> list[GeometryMatch]:
     """Every stated geometry value in the prompt, in prompt order, never overlapping.
 
-    Raises :class:`~agrirecipe.PromptError` for a value that cannot be a
-    geometry ("0 cm apart", "nan rows").
+    Measures of things a recipe does not hold ("0.76 m bed tops", "beds 20 cm
+    high", "sown 3 cm deep") are read first and are no geometry; their token
+    spans (first, last + 1) are added to ``unused`` when it is given. Raises
+    :class:`~agrirecipe.PromptError` for a value that cannot be a geometry
+    ("0 cm apart", "nan rows").
     """
     tables = _tables()
     text_parts: list[str] = []
@@ -207,6 +219,16 @@ def find_geometry(tokens: Sequence[Token]) -> list[GeometryMatch]:
                 high = mid - 1
         return low
 
+    for regex in tables.unused:
+        for match in regex.finditer(text):
+            if match.end() < len(text) and text[match.end()] not in " ":
+                continue  # ended inside a token
+            first = token_at(match.start())
+            last = token_at(match.end() - 1) + 1
+            if not any(claimed[first:last]):
+                claimed[first:last] = [True] * (last - first)
+                if unused is not None:
+                    unused.append((first, last))
     for pattern in tables.patterns:
         for match in pattern.regex.finditer(text):
             if match.end() < len(text) and text[match.end()] not in " ":

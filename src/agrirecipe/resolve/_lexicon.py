@@ -236,6 +236,14 @@ def reader_words(name: str) -> frozenset[str]:
     return frozenset(str(word) for word in vocabulary()["reader_words"][name])
 
 
+@functools.cache
+def scenery_words(*groups: str) -> tuple[str, ...]:
+    """The phrases of these groups of ``scenery.yaml``, longest first."""
+    data = _load("scenery.yaml")
+    phrases = {str(p) for group in groups for p in data[group]}
+    return tuple(sorted(phrases, key=len, reverse=True))
+
+
 def _plurals(phrase: str) -> list[str]:
     """Plural forms of a phrase's last word (``"cherry tomato"`` -> ``"cherry tomatoes"``)."""
     head, _, last = phrase.rpartition(" ")

@@ -89,13 +89,34 @@ def _gapped() -> re.Pattern[str]:
     )
 
 
+@functools.cache
+def _gapped_of() -> re.Pattern[str]:
+    units = "|".join(
+        re.escape(str(u)) for u in (*_data()["gapped_units"], *_data()["gapped_area_units"])
+    )
+    name = r"(?!(?i:and|or|the|a|an|with|then|plus)\b)[A-Za-z][\w'-]*"
+    return re.compile(
+        rf"\b(?P<said>\d[\d.,]*)\s+(?P<unit>{units})\s+of\s+{name}(?:\s+{name}){{0,2}}"
+        rf"\s*(?:,|;|\band\b|\bwhile\b|\bplus\b)\s*(?:\band\s+)?"
+        rf"(?P<count>\d[\d.,]*)(?=\s+of\s+[A-Za-z])",
+        re.IGNORECASE,
+    )
+
+
 def fill_gapped_counts(text: str) -> str:
     """``text`` with "Chardonnay has 20 rows, Cabernet 16" written "..., Cabernet 16
-    rows": a bare number after the next name counts what the one before it counted."""
-    return _gapped().sub(
+    rows": a bare number after the next name counts what the one before it counted;
+    likewise "25 acres of wheat and 15 of corn" ("15 acres of corn")."""
+    text = _gapped().sub(
         lambda m: (
             f"{m.group('said')} {m.group('unit')}{m.group('gap')}{m.group('count')} "
             f"{m.group('unit')}"
         ),
         text,
     )
+    pattern = _gapped_of()
+    while (match := pattern.search(text)) is not None:
+        # (one at a time: "20 acres of wheat, 15 of corn and 5 of potatoes" fills each)
+        at = match.end("count")
+        text = f"{text[:at]} {match.group('unit')}{text[at:]}"
+    return text

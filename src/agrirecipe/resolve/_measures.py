@@ -10,6 +10,7 @@ field's, every listed field's, or the field before's again.
 from __future__ import annotations
 
 import itertools
+import math
 from collections.abc import Iterable, Sequence
 
 from agrirecipe.resolve._decompose import Clause, Mention
@@ -23,6 +24,7 @@ from agrirecipe.resolve._words import SENTENCE_MARKS
 __all__ = [
     "after_list_plots",
     "bracketed_by",
+    "drop_total_sizes",
     "each_row_long",
     "in_a_sentence_of_measures",
     "opens_with_rows",
@@ -35,6 +37,37 @@ __all__ = [
     "shared_by_all",
     "shared_by_all_after",
 ]
+
+
+def _area(item: Item) -> float:
+    size = item.data["size"]
+    if size.area_m2 is not None:
+        return float(size.area_m2)
+    return float(size.width_m * size.length_m)
+
+
+def drop_total_sizes(items: Sequence[Item]) -> list[str]:
+    """'We farm 40 acres: 25 acres of wheat and 15 of corn': a size said before any crop
+    and followed by two or more sizes that add up to it (within 1 %) is the farm's total,
+    not one more size of the first field. It becomes a filler word (--explain lists it as
+    not used); return its words."""
+    sizes = [index for index, item in enumerate(items) if item.role == "size"]
+    dropped: list[str] = []
+    for position, index in enumerate(sizes):
+        later = sizes[position + 1 :]
+        if len(later) < 2 or any(i.role == "head" for i in items[index + 1 : later[0]]):
+            continue
+        total, added = _area(items[index]), 0.0
+        for count, other in enumerate(later, start=1):
+            added += _area(items[other])
+            if count >= 2 and math.isclose(added, total, rel_tol=0.01):
+                items[index].role = "filler"
+                items[index].data["scenery"] = "total"
+                dropped.append(items[index].raw)
+                break
+            if added > total * 1.01:
+                break
+    return dropped
 
 
 def sentence_fields(clauses: Sequence[Clause], position: int) -> list[Mention]:
@@ -107,7 +140,10 @@ def shared_by_all(clauses: Sequence[Clause], position: int) -> bool:
             or any(
                 t.norm in ("each", "both")
                 for i in previous.loose
-                if i.role == "geometry" and not each_row_long(clauses, index - 1, i)
+                # ("30-inch ridges, 2 rows each, 20 ridges": rows on each ridge)
+                if i.role == "geometry"
+                and not per_bed(i)
+                and not each_row_long(clauses, index - 1, i)
                 for t in i.tokens
             )
             # "8 rows per block, 5 m between rows": measures said per plot

@@ -45,7 +45,7 @@ step  pass                                        module (data)
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 
 from agrirecipe._errors import PromptError, UnknownCropError
 from agrirecipe.resolve._casual import expand_casual
@@ -81,6 +81,7 @@ from agrirecipe.resolve._labels import (
     drop_list_numbers,
     open_ordered_lists,
     place_compass_members,
+    place_divided_plots,
     place_leading_directions,
     place_neighbouring_plots,
     place_trailing_directions,
@@ -101,6 +102,7 @@ from agrirecipe.resolve._lexicon import (
 from agrirecipe.resolve._lists import fill_gapped_counts, spread_value_lists
 from agrirecipe.resolve._loose import attach_loose
 from agrirecipe.resolve._measures import (
+    drop_total_sizes,
     parallel_spacing,
     same_spacing,
     share_each_measures,
@@ -188,17 +190,20 @@ class PromptReader(FieldReading):
         text, labels = resolve_labels(text, tag)
         text = place_compass_members(open_ordered_lists(text, tag), tag)
         text = place_trailing_directions(place_leading_directions(text))
-        text = place_walked_orders(place_neighbouring_plots(text))
+        text = place_walked_orders(place_neighbouring_plots(place_divided_plots(text)))
         text = hoist_counted_crops(text, tag)
         for note in labels:
             self.trace.append(TraceStep(stage="decompose", subject="label", detail=note))
         tokens = tokenize(text)
         spans: list[tuple[int, int, tuple[Sense, ...]]] = []
-        for match in find_geometry(tokens):
+        unused: list[tuple[int, int]] = []
+        for match in find_geometry(tokens, unused):
             if spans and spans[-1][:2] == (match.first, match.last):  # "20 rows at 5 m"
                 spans[-1] = (match.first, match.last, (*spans[-1][2], Sense("geometry", match)))
             else:
                 spans.append((match.first, match.last, (Sense("geometry", match),)))
+        # "0.76 m bed tops", "sown 3 cm deep": measures no recipe holds, listed as not used
+        spans += [(first, last, (Sense("scenery", "measures"),)) for first, last in unused]
         claimed = [False] * len(tokens)
         for first, last, _ in spans:
             claimed[first:last] = [True] * (last - first)
@@ -210,6 +215,9 @@ class PromptReader(FieldReading):
         purpose_diseases(items, text)
         prompt_latitude, latitude_text, items = read_latitude(text, items)
         items = read_sizes(read_heights(items))
+        self._note(
+            drop_total_sizes(items), "the sizes after it add up to it: a total, not a field's size"
+        )
         read_words(items, text)
         self._reject_scenery(items)
         self._reject_other_crops(items)
@@ -219,29 +227,14 @@ class PromptReader(FieldReading):
         apply_plural_counts(clauses, int(vocabulary()["plural_fields"]))
         take_the_lower_count(clauses)
         share_count_over_a_list(clauses)
-        for dropped in apply_corrections(clauses):
-            self.trace.append(
-                TraceStep(stage="decompose", subject=dropped, detail="replaced by a correction")
-            )
-        for alternative in drop_alternatives(clauses):
-            self.trace.append(
-                TraceStep(
-                    stage="decompose",
-                    subject=alternative,
-                    detail="an alternative to the crop before it: one field, of the first named",
-                )
-            )
+        self._note(apply_corrections(clauses), "replaced by a correction")
+        self._note(
+            drop_alternatives(clauses),
+            "an alternative to the crop before it: one field, of the first named",
+        )
         raise_conflicts(clauses)
-        for negated in drop_negated(clauses):
-            self.trace.append(
-                TraceStep(stage="decompose", subject=negated, detail="negated: not a field")
-            )
-        for dissolved in dissolve_plant_parts(clauses):
-            self.trace.append(
-                TraceStep(
-                    stage="decompose", subject=dissolved, detail="the named fields' own fruit"
-                )
-            )
+        self._note(drop_negated(clauses), "negated: not a field")
+        self._note(dissolve_plant_parts(clauses), "the named fields' own fruit")
         share_leading_attributes(clauses)
         share_trailing_attributes(clauses)
         mentions = apply_refinements(clauses, self.crop_categories, builder)
@@ -334,6 +327,10 @@ class PromptReader(FieldReading):
             trace=tuple(self.trace),
             resolver=self.strategy,
         )
+
+    def _note(self, subjects: Iterable[str], detail: str) -> None:
+        """Record in the trace what one reading pass did to each of these words."""
+        self.trace.extend(TraceStep(stage="decompose", subject=s, detail=detail) for s in subjects)
 
     def _tag(
         self, tokens: Sequence[Token], spans: Sequence[tuple[int, int, tuple[Sense, ...]]]

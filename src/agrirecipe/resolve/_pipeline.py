@@ -378,13 +378,14 @@ def _validate(intent: SceneIntent, context: ResolveContext) -> None:
     # "in": "12 maize rows" is read as "maize in 12 rows"; "plants": "150 Pink Lady" as
     # "150 Pink Lady plants"; "one", "other": "the north block has ..., the south block
     # ..." is read as "one ..., the other ..."; "at", "rows", "long": "8 rows x 76 cm x
-    # 30 m" as "8 rows at 76 cm, rows 30 m long"
+    # 30 m" as "8 rows at 76 cm, rows 30 m long"; "plot": "the polytunnel of tomatoes" as
+    # "the plot of tomatoes"
     expanded = expand_casual(intent.prompt)
     prompt_words = (
         _words(intent.prompt)
         | _words(expanded)
         | _words(spread_value_lists(expanded))
-        | {"the", "in", "plants", "one", "other", "at", "rows", "long"}
+        | {"the", "in", "plants", "one", "other", "at", "rows", "long", "plot"}
     )
     for index, field in enumerate(intent.fields):
         path = f"fields[{index}]"
