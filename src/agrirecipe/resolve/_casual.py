@@ -78,12 +78,43 @@ def expand_casual(prompt: str) -> str:
     text = _SIDE_AFTER_SIDE.sub(r"\g<first>, ", text)
     # "valencia one bigger (4ha) moro one 2ha": a size in brackets ends its member
     text = _SIZE_IN_BRACKETS.sub(r"\g<size>, ", text)
+    # "one w rows n-s": "w" for "with" before what a plot has (not the "w" of "e-w")
+    text = _W_FOR_WITH.sub("with", text)
+    # "spec: crop = onion; beds = 10; rows: 24": a count or a crop written as a setting
+    text = _SETTING_COUNT.sub(r"\g<n> \g<key>", text)
+    text = _SETTING_CROP.sub("", text)
+    # "fruit & veg fields, like 4 or 5 of em": the fields' count said after them
+    text = _COUNT_OF_THEM.sub(
+        lambda m: f"{m.group('lead')}{m.group('count')} {m.group('words')}{m.group('plots')}", text
+    )
+    # "An acre and a half of chillies": one and a half acres
+    text = _UNIT_AND_A_HALF.sub(lambda m: f"1.5 {m.group('unit')}s", text)
     # "Corn plot pair", "a lettuce strip trio": a count said after the plot noun
     text = _PLOT_COUNT_AFTER.sub(_count_before_plots, text)
     # "1 of them 5 ha the other 3 ha": a measure ends one member, "the other" begins the next
     return _OTHER_AFTER_MEASURE.sub(r"\g<unit>, ", text)
 
 
+_COUNT_OF_THEM = re.compile(
+    r"(?P<lead>(?:^|(?<=[.;:!?])\s*)(?:(?i:the|our|my|some)\s+)?)"
+    r"(?P<words>(?:[A-Za-z][\w'&-]*\s+){0,4}?)"
+    r"(?P<plots>(?i:fields|plots|blocks|strips|beds|orchards|patches|paddocks))\s*,\s*"
+    r"(?:(?i:like|about|around|maybe|roughly|approximately|approx|say)\s+)?"
+    # (ending the sentence: "the plots, 3 of them, wheat, maize and potatoes" is a list)
+    r"(?P<count>\d+(?:\s+(?i:or|to|-)\s+\d+)?)\s+(?i:of)\s+(?i:them|em|'em)\b\s*"
+    r"(?=[.!?;]|$)"
+)
+_UNIT_AND_A_HALF = re.compile(r"\b(?i:an?|one)\s+(?P<unit>(?i:acre|hectare))\s+(?i:and a half)\b")
+_W_FOR_WITH = re.compile(r"(?<=[A-Za-z] )(?i:w)(?= (?:rows?|beds?|ridges?|a|an|the|some|\d)\b)")
+_SETTING_COUNT = re.compile(
+    r"\b(?P<key>(?i:beds|rows|ridges|trees|plants|vines|plots|blocks|strips|fields))\s*[=:]\s*"
+    # (the number is the whole setting: not "Two potato fields: 3 ha of Fontane")
+    r"(?P<n>\d+)(?=\s*(?:[;,)]|\.(?!\d)|$))"
+)
+_SETTING_CROP = re.compile(
+    # ("=" only: "three cultivars: Red Express, ..." is a list's heading)
+    r"\b(?i:crop|crops|variety|varieties|cultivar|cultivars|cv|species)\s*=\s*(?=[A-Za-z])"
+)
 _PLOT_COUNT_AFTER = re.compile(
     r"(?P<lead>\b(?i:a|an|the|our|my|this|that|for|of|with|and|need|want)\s+|^|(?<=[,.;:!?(])\s*)"
     r"(?P<words>(?:[A-Za-z][\w'-]*\s+){0,3}?)"
@@ -161,5 +192,6 @@ _ONE_AFTER_ONE = re.compile(
     r"(?:(?!(?i:m|x|by|ha|cm|mm|ft|in)\b)[A-Za-z][\w'-]*"
     r"(?:\s+(?!(?i:one|and|or|then|m|x|by|ha|cm|mm|ft|in)\b)[A-Za-z][\w'-]*){0,2}"
     r"|\d[\d.]*\s*(?:x|by)\s*\d[\d.]*\s*m\b|\d[\d.]*\s*(?:ha|acres?)\b))"
-    r"\s+(?P<second>(?i:one|1)\b)"
+    # (not the whole part of a decimal: "one vine every 1.2 m")
+    r"\s+(?P<second>(?i:one|1)\b(?![.,]\d))"
 )

@@ -200,7 +200,8 @@ def merge_coreferences(
                 m
                 for k in reversed(kept)
                 for m in (k.refinements[::-1] or [k])
-                if strong_crops(m) == own_crops and m.count is None and not m.refinements
+                # ("a wheat field & a maize field ..., wheat north of maize": one each)
+                if strong_crops(m) == own_crops and (m.count or 1) == 1 and not m.refinements
             ][:1]
             if repeated and _compatible(builder, repeated[0], mention):
                 placed_again = repeated[0]

@@ -320,12 +320,14 @@ def _dissolve_described_after_of(clause: Clause, words: frozenset[str]) -> list[
 
 def _a_look_on(owner: Mention) -> bool:
     """ "strawberries ... have grey mould on the fruit": the mention ends with a disease
-    or a look and "on"/"in", so the plant part after it is where that shows."""
+    or a look and "on"/"in", so the plant part after it is where that shows (also with a
+    word or two between: "dark scabby spots on the fruit")."""
     ordered = sorted(owner.items, key=lambda i: i.start)
     return (
         len(ordered) >= 2
         and ordered[-1].norm in ("on", "in", "over", "across", "along")
-        and ordered[-2].role in ("health", "cue")
+        and any(i.role in ("health", "cue") for i in ordered[-4:-1])
+        and all(i.role in ("health", "cue", "unknown", "filler") for i in ordered[-4:-1])
     )
 
 

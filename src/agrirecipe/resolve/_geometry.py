@@ -247,6 +247,8 @@ def find_geometry(
             value = _value(pattern, groups, tables)
             if value is None:
                 continue
+            if pattern.key == "rows" and value == 1 and _PLURAL_ROWS.search(match.group(0)):
+                continue  # "the other one rows e-w": "one" is the plot, not a count of rows
             second: float | None = None
             if pattern.key2 is not None:
                 if pattern.constant2 is not None:
@@ -289,6 +291,8 @@ def find_geometry(
     found.sort(key=lambda m: m.first)
     return _respectively(tokens, found, claimed, tables)
 
+
+_PLURAL_ROWS = re.compile(r"\b(?:one|1) (?:rows|lines|drills|beds|ridges)\b")
 
 #: Words that join the values of a "respectively" list ("3.4 m and 3.5 m", "36, 40").
 _LIST_JOINS = frozenset({"and", ",", "&"})
@@ -502,9 +506,10 @@ def row_spec(items: Sequence[Any], text: str) -> RowSpec | None:
 
 
 def _bare_apart(text: str) -> bool:
-    """Whether a spacing was said only as "<length> apart", naming neither rows nor plants."""
+    """Whether a spacing was said only as "<length> apart" (or "<length> spacing"),
+    naming neither rows nor plants."""
     words = text.lower().split()
-    return bool(words) and words[-1] == "apart" and not set(words) & _ROW_WORDS
+    return bool(words) and words[-1] in ("apart", "spacing") and not set(words) & _ROW_WORDS
 
 
 _ROW_WORDS = frozenset({"row", "rows", "line", "lines", "drill", "drills", "between"})
@@ -523,8 +528,8 @@ def merge_geometry(matches: Sequence[GeometryMatch], text: str) -> RowSpec | Non
             and match.value < previous
             and _bare_apart(match.text)
         ):
-            # "Onions in 30 cm rows, 10 cm apart": with the rows spaced already, a bare
-            # "apart" is how far apart the plants stand in the row
+            # "Onions in 30 cm rows, 10 cm apart", "0.75 m rows, 0.4 m spacing": with the
+            # rows spaced already, a bare "apart" is how far apart the plants stand in the row
             match = replace(match, key="in_row_spacing_m")
             previous = None
         if previous is not None and not math.isclose(previous, match.value, rel_tol=1e-9):

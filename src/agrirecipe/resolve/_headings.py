@@ -27,7 +27,9 @@ __all__ = [
     "drop_forward_summaries",
     "drop_joint_headings",
     "drop_list_headings",
+    "drop_plural_headings",
     "drop_titles",
+    "fill_counted_lists",
 ]
 
 
@@ -355,6 +357,17 @@ def drop_titles(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Ment
 _SUMMARY_ROLES = frozenset({"stage", "health", "cue", "season", "month"})
 
 
+def _lend_and_drop(clauses: Sequence[Clause], summary: Mention, fields: Sequence[Mention]) -> None:
+    """Give ``summary``'s stage, health, cues and season to each of ``fields`` that states
+    none of its own, and take ``summary`` out of its clause."""
+    lent = [i for i in summary.items if i.role in _SUMMARY_ROLES]
+    for field in fields:
+        own = {i.role for i in field.items}
+        field.items.extend(i for i in lent if i.role not in own)
+    for clause in clauses:
+        clause.mentions = [m for m in clause.mentions if m is not summary]
+
+
 def drop_forward_summaries(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
     """'grapes ripening in both blocks, rows north-south. Chardonnay: 25 rows ...
     Cabernet: 18 rows ...': a crop said of "both" (or "all the") plots, with no variety,
@@ -379,11 +392,80 @@ def drop_forward_summaries(clauses: Sequence[Clause], mentions: list[Mention]) -
         }
         if any(i.norm == "both" for i in summary.items) and len(named) != 2:
             continue
-        lent = [i for i in summary.items if i.role in _SUMMARY_ROLES]
-        for field in later:
-            own = {i.role for i in field.items}
-            field.items.extend(i for i in lent if i.role not in own)
-        for clause in clauses:
-            clause.mentions = [m for m in clause.mentions if m is not summary]
+        _lend_and_drop(clauses, summary, later)
         return [m for m in mentions if m is not summary]
+    return mentions
+
+
+def drop_plural_headings(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
+    """'Vineyard test blocks for a grape-yield camera, three blocks from west to east:
+    Chardonnay, Riesling, Cabernet': the first field named, a plural plot with no number
+    (two fields only by its plural) and no variety, followed in its sentence or the next
+    by two or more fields of named crops (of its own crop, when it names one), is what
+    those fields are: a heading, not two fields more. Its stage, health, cues and season
+    go to each field after it that states none of its own. Return the fields left."""
+    if len(mentions) < 2:
+        return mentions
+    heading, later = mentions[0], mentions[1:]
+    if (
+        not heading.implied_count
+        or heading.refinements
+        or names_a_variety(heading)
+        or any(i.role in ("relation", "between", "size", "geometry") for i in heading.items)
+    ):
+        return mentions
+    members = [r for m in later for r in ({id(r): r for r in m.refinements}.values() or (m,))]
+    crops = strong_crops(heading)
+    if len(members) < 2 or not all(
+        strong_crops(m) and (not crops or strong_crops(m) <= crops) for m in members
+    ):
+        return mentions
+    ends = [
+        c.index
+        for c in clauses[heading.clause + 1 :]
+        if c.link is not None and c.link.norm in SENTENCE_MARKS
+    ]
+    # (the fields begin in the heading's sentence or the next)
+    if len(ends) >= 2 and later[0].clause >= ends[1]:
+        return mentions
+    if any(
+        c.link is not None and c.link.role in ("relation", "between")
+        for c in clauses[heading.clause + 1 : later[0].clause + 1]
+    ):
+        return mentions  # ("test plots next to a wheat field and a maize field": placed)
+    _lend_and_drop(clauses, heading, later)
+    return later
+
+
+def fill_counted_lists(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
+    """'three fields: cabbages nearest to me, a strip of onions in between, and a field of
+    sweetcorn up the hill': fields named later in the sentence of a counted plot of no
+    crop whose list named fewer members than its count are its members too, when they are
+    exactly as many as it lacks (never a member of any crop made up for the gap). Return
+    the fields left."""
+    for heading in mentions:
+        members = list({id(r): r for r in heading.refinements}.values())
+        if heading.has_crop or not members or (heading.count or 1) <= len(members):
+            continue
+        ends = next(
+            (
+                c.index
+                for c in clauses[heading.clause + 1 :]
+                if c.link is not None and c.link.norm in SENTENCE_MARKS
+            ),
+            len(clauses),
+        )
+        later = [
+            m
+            for m in mentions[mentions.index(heading) + 1 :]
+            if m.clause < ends and all(m is not r for r in members)
+        ]
+        if len(later) != (heading.count or 1) - len(members) or not all(
+            strong_crops(m) and (m.count or 1) == 1 and not m.refinements for m in later
+        ):
+            continue
+        for mention in later:
+            mention.is_refinement = True
+            heading.refinements.append(mention)
+        return [m for m in mentions if all(m is not other for other in later)]
     return mentions

@@ -13,18 +13,16 @@ reader places fields by a trailing direction.
 
 from __future__ import annotations
 
-import functools
 import re
 from collections.abc import Callable, Sequence
 
-from agrirecipe.resolve._lexicon import Item, number_value, scenery_words, tokenize
+from agrirecipe.resolve._lexicon import Item, number_value, tokenize
 
 __all__ = [
     "drop_list_numbers",
     "open_ordered_lists",
     "place_compass_members",
     "place_leading_directions",
-    "place_neighbouring_plots",
     "place_trailing_directions",
     "place_walked_orders",
     "resolve_labels",
@@ -455,55 +453,6 @@ def place_trailing_directions(text: str) -> str:
         start, end = match.span("side")
         text = f"{text[:start]}in the {match.group('side')}{text[end:]}"
     return text
-
-
-# "Savoy and January King in two neighbouring blocks": the plots of a list, side by side
-_NEIGHBOURING = re.compile(
-    r"\b(?P<at>(?i:in|on))\s+(?P<count>(?:\w+\s+)?)(?i:neighbouring|neighboring|adjacent)\s+"
-    r"(?P<plots>(?i:blocks|plots|fields|strips|beds|patches|paddocks))\b"
-)
-
-
-def place_neighbouring_plots(text: str) -> str:
-    """``text`` with "in two neighbouring blocks" written "in two blocks side by side",
-    and "the polytunnel of cherry tomatoes" written "the plot of cherry tomatoes"."""
-    text = _COVERED.sub(lambda m: f"{m.group('article')}plot{m.group('of')}", text)
-    return _NEIGHBOURING.sub(
-        lambda m: f"{m.group('at')} {m.group('count')}{m.group('plots')} side by side", text
-    )
-
-
-# "next to the polytunnel of cherry tomatoes", "a glasshouse full of lettuce": the crop's
-# plot under cover (the cover is scenery; the plot can be placed)
-_COVERED = re.compile(
-    r"(?P<article>\b(?i:a|an|the|one|our|my|their|that|this)\s+(?:(?i:big|small|long|large|"
-    r"little|old|new)\s+)?)(?i:poly ?tunnel|tunnel|greenhouse|glasshouse|glass house|"
-    r"hoop ?house|high tunnel)"
-    r"(?P<of>\s+(?:(?i:full of|of|with|growing|planted with|planted to)\s+))(?=[A-Za-z])"
-)
-
-
-@functools.cache
-def _divided() -> re.Pattern[str]:
-    things = "|".join(re.escape(w) for w in scenery_words("boundaries", "ground", "trees"))
-    return re.compile(
-        r"(?P<side>\b(?i:side by side)\s*)?(?:,\s*)?(?:(?i:with|and)\s+)?"
-        r"(?i:a|an|the|one|just a|only a|a narrow|a wide|a little|a small)\s+"
-        rf"(?:[\w'-]+\s+){{0,2}}?(?i:{things})\s+(?:(?i:running|that runs|going)\s+)?"
-        r"(?:(?i:in)\s+)?(?i:between)"
-        r"(?:\s+(?i:them|the two|the two of them|both|the plots|the fields|the blocks|"
-        r"the two plots|the two fields|the two blocks))?"
-        # (not "a hedge between the wheat and the maize": the fields it divides named)
-        r"(?=\s*(?:[,.;:!?)]|$|(?i:and|with|but)\b))"
-    )
-
-
-def place_divided_plots(text: str) -> str:
-    """``text`` with "two plots, side by side with a ditch between: ..." written "two
-    plots, side by side: ...", and "wheat and maize with a hedge between them" written
-    "wheat and maize": a ditch, hedge or track between two plots is scenery, not a
-    "between" that needs a field on each side (side by side only where it is said)."""
-    return _divided().sub(lambda m: "side by side" if m.group("side") else "", text)
 
 
 #: The side words a walk across the farm starts and ends at, with the side opposite.

@@ -225,6 +225,10 @@ def _load(name: str) -> dict[str, Any]:
     return data
 
 
+#: The nouns a scenery tree's name may stand before ("cypress trees", "a willow tree").
+_TREE_NOUNS = ("tree", "trees", "hedge", "hedges", "hedgerow", "windbreak")
+
+
 def vocabulary() -> dict[str, Any]:
     """The parsed ``vocabulary.yaml``."""
     return _load("vocabulary.yaml")
@@ -343,8 +347,11 @@ class Lexicon:
             return None  # "train" is a word of its own, not a misspelt "grain"
         # Damerau-Levenshtein counts a swapped pair of letters ("appel", "whaet") as one
         # edit; one edit in five letters is the most a short word may differ by, two in
-        # nine a long one ("chantaney" is Chantenay).
-        cutoff = 0.79 if letters < 9 else 0.77  # (0.8, 0.78 themselves: float-safe)
+        # nine a long one ("chantaney" is Chantenay; "chantney", eight letters typed, two
+        # edits from the nine of Chantenay).
+        # (one word only: "fruit fat" is no misspelt "fruit set")
+        long_word = letters >= 9 or (letters == 8 and " " not in text)
+        cutoff = 0.77 if long_word else 0.79  # (0.78, 0.8 themselves: float-safe)
         match = process.extractOne(
             text,
             self.fuzzy_choices,
@@ -524,6 +531,10 @@ def _build_lexicon(hierarchy: Hierarchy, knowledge: KnowledgeBase, crop_names: b
         if group != "version":
             for phrase in phrases:
                 add(str(phrase), Sense("scenery", group))
+                if group == "trees" and str(phrase).split()[-1] not in _TREE_NOUNS:
+                    # "cypress trees on the ridge", "a line of poplar trees": still scenery
+                    for noun in _TREE_NOUNS:
+                        add(f"{phrase} {noun}", Sense("scenery", group))
     for crop in hierarchy.crops.values():
         disease = knowledge.crop_file(crop.name).disease.name
         for name in _disease_names(disease):

@@ -91,9 +91,8 @@ def _gapped() -> re.Pattern[str]:
 
 @functools.cache
 def _gapped_of() -> re.Pattern[str]:
-    units = "|".join(
-        re.escape(str(u)) for u in (*_data()["gapped_units"], *_data()["gapped_area_units"])
-    )
+    # (areas only: "12 beds of Sturon and 12 of Red Baron" is read as the same beds)
+    units = "|".join(re.escape(str(u)) for u in _data()["gapped_area_units"])
     name = r"(?!(?i:and|or|the|a|an|with|then|plus)\b)[A-Za-z][\w'-]*"
     return re.compile(
         rf"\b(?P<said>\d[\d.,]*)\s+(?P<unit>{units})\s+of\s+{name}(?:\s+{name}){{0,2}}"

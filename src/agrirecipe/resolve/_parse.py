@@ -15,9 +15,11 @@ step  pass                                        module (data)
 ====  ==========================================  ===============================
 1     texting forms become words; value lists     ``_casual`` (casual.yaml),
       and counts said once; labels, walks and     ``_lists`` (value_lists.yaml),
-      sides said in other words                   ``_labels``
+      sides said in other words; plots said to    ``_labels``, ``_neighbours``
+      touch
 2     words, numbers and marks                    ``_lexicon.tokenize``
-3     stated row geometry                         ``_geometry`` (geometry.yaml)
+3     stated row geometry (and measures no        ``_geometry`` (geometry.yaml)
+      recipe holds, as not used)
 4     zones of a farm                             ``_zones`` (zones.yaml)
 5     phrases and their senses; visual cues,      ``_lexicon`` (vocabulary.yaml,
       scenery and purpose words                   cues.yaml, scenery.yaml, ...)
@@ -69,7 +71,9 @@ from agrirecipe.resolve._headings import (
     drop_forward_summaries,
     drop_joint_headings,
     drop_list_headings,
+    drop_plural_headings,
     drop_titles,
+    fill_counted_lists,
 )
 from agrirecipe.resolve._intent import (
     Hemisphere,
@@ -81,9 +85,7 @@ from agrirecipe.resolve._labels import (
     drop_list_numbers,
     open_ordered_lists,
     place_compass_members,
-    place_divided_plots,
     place_leading_directions,
-    place_neighbouring_plots,
     place_trailing_directions,
     place_walked_orders,
     resolve_labels,
@@ -106,6 +108,11 @@ from agrirecipe.resolve._measures import (
     parallel_spacing,
     same_spacing,
     share_each_measures,
+)
+from agrirecipe.resolve._neighbours import (
+    place_divided_plots,
+    place_neighbouring_plots,
+    place_sides,
 )
 from agrirecipe.resolve._refinements import apply_refinements
 from agrirecipe.resolve._relations import read_relations
@@ -191,6 +198,7 @@ class PromptReader(FieldReading):
         text = place_compass_members(open_ordered_lists(text, tag), tag)
         text = place_trailing_directions(place_leading_directions(text))
         text = place_walked_orders(place_neighbouring_plots(place_divided_plots(text)))
+        text = place_sides(text)
         text = hoist_counted_crops(text, tag)
         for note in labels:
             self.trace.append(TraceStep(stage="decompose", subject="label", detail=note))
@@ -244,7 +252,9 @@ class PromptReader(FieldReading):
         mentions = merge_appositive_plots(clauses, mentions)
         mentions = drop_list_headings(clauses, mentions)
         mentions = drop_counted_summaries(clauses, mentions)
+        mentions = fill_counted_lists(clauses, mentions)
         mentions = drop_titles(clauses, mentions)
+        mentions = drop_plural_headings(clauses, mentions)
         apply_each_side(clauses)
         for clause in clauses:
             # "... and there's a duck pond in the middle": the zone of scenery, not a field

@@ -72,7 +72,10 @@ def apply_plural_counts(clauses: Sequence[Clause], plural_count: int) -> None:
     for position, clause in enumerate(clauses):
         for index, mention in enumerate(clause.mentions):
             plots = [h for h in mention.heads if h.role == "plot"]
-            fields_named = any(not h.data["value"]["individual"] for h in plots)
+            # ("strawberry plants in a field with loads of ripe red berries": one field)
+            fields_named = any(
+                not h.data["value"]["individual"] and h.data["value"].get("plural") for h in plots
+            )
             if mention.count is None and mention.quantity is not None:
                 # "several vegetable fields", "lots of vegetables": fields; "lots of grapes":
                 # many vines in one vineyard; "a few beds of Cos": one field of beds.
@@ -428,6 +431,9 @@ def apply_each_side(clauses: Sequence[Clause]) -> None:
         link = clause.link
         if link is None or link.role != "trailer" or link.data.get("value") != "each_side":
             continue
+        said = clauses[position - 1].items if position else []
+        if said and "scenery" in max(said, key=lambda i: i.start).data:
+            continue  # "... with hawthorn hedges on both sides": the hedges' sides
         before = [m for c in clauses[:position] for m in c.mentions]
         if len(before) >= 2 and (before[-1].count or 1) == 1 and not before[-1].refinements:
             before[-1].count = 2

@@ -296,8 +296,11 @@ def _totals_are_not_sizes(items: Sequence[Item]) -> None:
         and len(crops) == 1
         and not any(i.role == "category" for i in items)
         and not any(i.role == "number" and i.data.get("value", 1) != 1 for i in items)
+        # ("Lettuces in long beds ..., about 0.5 ha in total": beds are one field)
         and not any(
-            i.role == "plot" and i.data["value"]["plural"] for i in items if "value" in i.data
+            i.role == "plot" and i.data["value"]["plural"] and not i.data["value"].get("one_field")
+            for i in items
+            if "value" in i.data
         )
     )
     for item in [] if one_field else totals:
@@ -674,8 +677,9 @@ def purpose_diseases(items: Sequence[Item], text: str) -> None:
     'Apple-counting scene', 'fruit-detection plots': a crop joined by a hyphen to what a
     robot does names the task, not a field."""
     for index, item in enumerate(items):
-        # "for a banana canopy-segmentation dataset": the crop a purpose is about
-        if item.role != "head" or index == 0:
+        # "for a banana canopy-segmentation dataset", "for citrus canopy scans": the crop
+        # (or kind of crop) a purpose is about
+        if item.role not in ("head", "category") or index == 0:
             continue
         opener = index - 1
         if items[opener].norm in ("a", "an", "the", "our", "my") and opener:
@@ -703,12 +707,14 @@ def purpose_diseases(items: Sequence[Item], text: str) -> None:
                 item.data["scenery"] = "purposes"
             continue
         after = items[index + 1 : index + 2]
-        # "Apple-counting", "Vineyard-robot"
+        # "Apple-counting", "Vineyard-robot"; "a tropical-orchard SLAM test": a plot joined
+        # by a hyphen to the word before it, then what the test is for
+        joined_before = index > 0 and text[items[index - 1].end : item.start] == "-"
         if (
             after
             and _purpose(after[0])
             and item.role in ("head", "plot")
-            and text[item.end : after[0].start] == "-"
+            and (text[item.end : after[0].start] == "-" or joined_before)
         ):
             item.role = "filler"
             item.data["scenery"] = "purposes"

@@ -1,0 +1,128 @@
+"""Fields placed beside each other in words (issue 8).
+
+Before the prompt is read, a few ways people say that plots touch, or which side of
+the farm or of a view they are on, are written the way the reader places fields:
+"in two neighbouring blocks" is "in two blocks side by side", "with a ditch between"
+is scenery, "riesling in the middle w/ pinot noir on one side & cabernet on the other"
+is "riesling between pinot noir and cabernet", "on the 20 ha east field" is "in the
+east, 20 ha", and "the polytunnel of cherry tomatoes" is a plot that can be placed.
+"""
+
+from __future__ import annotations
+
+import functools
+import re
+
+from agrirecipe.resolve._lexicon import scenery_words
+
+__all__ = ["place_divided_plots", "place_neighbouring_plots", "place_sides"]
+
+
+# "Savoy and January King in two neighbouring blocks": the plots of a list, side by side
+_NEIGHBOURING = re.compile(
+    r"\b(?P<at>(?i:in|on))\s+(?P<count>(?:\w+\s+)?)(?i:neighbouring|neighboring|adjacent)\s+"
+    r"(?P<plots>(?i:blocks|plots|fields|strips|beds|patches|paddocks))\b"
+)
+
+
+def place_neighbouring_plots(text: str) -> str:
+    """``text`` with "in two neighbouring blocks" written "in two blocks side by side",
+    "Two plots ..., one beside the other: onions ... and carrots" written "..., side by
+    side: ...", and "the polytunnel of cherry tomatoes" written "the plot of cherry
+    tomatoes"."""
+    text = _COVERED.sub(lambda m: f"{m.group('article')}plot{m.group('of')}", text)
+    text = _ONE_BESIDE_THE_OTHER.sub("side by side:", text)
+    return _NEIGHBOURING.sub(
+        lambda m: f"{m.group('at')} {m.group('count')}{m.group('plots')} side by side", text
+    )
+
+
+# "Two plots for the weeding robot, one beside the other: onions ... and carrots ...": the
+# plots named after the colon stand side by side (before it, "one next to the other"
+# relates the two named first, in order)
+_ONE_BESIDE_THE_OTHER = re.compile(
+    r"\b(?i:one)\s+(?i:beside|next to|alongside|by)\s+(?i:the other)(?:\s+(?i:one))?\s*:"
+)
+# "next to the polytunnel of cherry tomatoes", "a glasshouse full of lettuce": the crop's
+# plot under cover (the cover is scenery; the plot can be placed)
+_COVERED = re.compile(
+    r"(?P<article>\b(?i:a|an|the|one|our|my|their|that|this)\s+(?:(?i:big|small|long|large|"
+    r"little|old|new)\s+)?)(?i:poly ?tunnel|tunnel|greenhouse|glasshouse|glass house|"
+    r"hoop ?house|high tunnel)"
+    r"(?P<of>\s+(?:(?i:full of|of|with|growing|planted with|planted to)\s+))(?=[A-Za-z])"
+)
+
+
+@functools.cache
+def _divided() -> re.Pattern[str]:
+    things = "|".join(re.escape(w) for w in scenery_words("boundaries", "ground", "trees"))
+    return re.compile(
+        r"(?P<side>\b(?i:side by side)\s*)?(?:,\s*)?(?:(?i:with|and)\s+)?"
+        r"(?i:a|an|the|one|just a|only a|a narrow|a wide|a little|a small)\s+"
+        rf"(?:[\w'-]+\s+){{0,2}}?(?i:{things})\s+(?:(?i:running|that runs|going)\s+)?"
+        r"(?:(?i:in)\s+)?(?i:between)"
+        r"(?:\s+(?i:them|the two|the two of them|both|the plots|the fields|the blocks|"
+        r"the two plots|the two fields|the two blocks))?"
+        # (not "a hedge between the wheat and the maize": the fields it divides named)
+        r"(?=\s*(?:[,.;:!?)]|$|(?i:and|with|but)\b))"
+    )
+
+
+def place_divided_plots(text: str) -> str:
+    """``text`` with "two plots, side by side with a ditch between: ..." written "two
+    plots, side by side: ...", and "wheat and maize with a hedge between them" written
+    "wheat and maize": a ditch, hedge or track between two plots is scenery, not a
+    "between" that needs a field on each side (side by side only where it is said)."""
+    return _divided().sub(lambda m: "side by side" if m.group("side") else "", text)
+
+
+# "riesling in the middle w/ pinot noir on one side & cabernet on the other": the field
+# before "with" stands between the two (its "in the middle" said again)
+_ONE_SIDE_AND_OTHER = re.compile(
+    r"(?:\s+(?i:in the (?:middle|centre|center)))?\s*,?\s+(?:(?i:with)\s+)?"
+    r"(?P<a>[A-Za-z][^,;.:!?]*?)\s+(?i:on one side)\s*,?\s+(?i:and)\s+"
+    r"(?P<b>[A-Za-z][^,;.:!?]*?)\s+(?i:on the other)(?:\s+(?i:side|one))?\b"
+)
+# "imperator carots & danvers carots, danvers one east": one of two fields said to be on
+# a side is on that side of the other
+_ONE_ON_A_SIDE = re.compile(
+    # (not "plum ones to the west": the sides said with "to the" are read as placements)
+    r"\b(?P<name>[A-Za-z][\w'-]*) (?i:one|block|field|plot) (?:(?i:is) )?"
+    r"(?P<side>(?i:north|south|east|west))\b(?!\s+(?i:of|side|end|half|field|block|plot)\b)"
+)
+
+
+# "Dent corn on the 20 ha east field ..., flint corn on the 8 ha west field": fields named
+# by their side of the farm
+_SIDE_FIELD = re.compile(
+    r"\b(?i:on|in|at) (?i:the) (?P<size>\d[\d.,]*\s*(?i:ha|hectares?|acres?)\s+)?"
+    r"(?P<side>(?i:north|south|east|west))(?i:ern)? (?i:field|block|plot|paddock)\b"
+)
+
+
+def place_sides(text: str) -> str:
+    """``text`` with "X with A on one side and B on the other" written "X between A and
+    B", "..., danvers one east" written "..., danvers one east of the other", and "on the
+    20 ha east field ..., on the 8 ha west field" written "in the east, 20 ha ..., in the
+    west, 8 ha" (two or more sides, not all the same)."""
+    text = _ONE_SIDE_AND_OTHER.sub(lambda m: f" between {m.group('a')} and {m.group('b')}", text)
+    text = _ONE_ON_A_SIDE.sub(lambda m: f"{m.group(0)} of the other", text)
+    for side, other in (("left", "right"), ("right", "left")):
+        # "left of the yard there's a vineyard, on the right a strawberry field": the
+        # sides of the view, both said
+        if re.search(rf"\b(?i:on|to) (?i:the) (?i:{other})\b", text):
+            text = re.sub(
+                rf"\b(?:(?i:to the|on the) )?(?i:{side}) (?i:of) (?i:the) (?i:yard|house|farmhouse|"
+                r"barn|lane|track|road|gate|shed|farm shop)\b",
+                f"on the {side}",
+                text,
+            )
+    if len({m.group("side").lower() for m in _SIDE_FIELD.finditer(text)}) < 2:
+        return text
+    return _SIDE_FIELD.sub(
+        lambda m: (
+            f"in the {m.group('side').lower()}"
+            + (f", {m.group('size').strip()}" if m.group("size") else "")
+        ),
+        text,
+    )
