@@ -242,3 +242,41 @@ def test_sides_of_a_farm_and_of_a_view(
 ) -> None:
     assert named_relations(prompt) == expected
     assert len(recipe(prompt).fields) == len({n for r in expected for n in (r[1], *r[2])})
+
+
+def test_measures_said_for_each_or_both_or_also() -> None:
+    # "also on 1.2 m rows": the field named last, not the one named again before it
+    tomatoes, peppers = recipe(
+        "tomatos on rows 1.2 m apart, 33,333 plants/ha, and peppers east of the tomatoes, also "
+        "on 1.2 m rows"
+    ).fields
+    assert (tomatoes.crop, peppers.crop, peppers.agronomy.row_spacing_m) == (
+        "Tomato",
+        "Pepper",
+        1.2,
+    )
+    # "Both blocks:" and the measures after the colon
+    for block in recipe(
+        "Put a Cripps Pink block west of a Jonagored block. Both blocks: 15 rows of 80 m, rows "
+        "3.2 m apart, 0.8 m between trees."
+    ).fields:
+        assert (block.row_count, block.agronomy.row_spacing_m) == (15, 3.2)
+    # "Half a hectare each of A and B"
+    for field in recipe(
+        "Half a hectare each of Cos lettuce and Savoy cabbage, both still young."
+    ).fields:
+        assert field.geometry.area_m2 == pytest.approx(5000, rel=0.01)
+    # "each a 20 x 30 m plot": what each field is
+    fields = recipe("Three different vegetables, each a 20 x 30 m plot with 0.75 m rows.").fields
+    assert len(fields) == 3
+    assert {(f.category, f.geometry.size_m) for f in fields} == {("Vegetables", (20.0, 30.0))}
+
+
+def test_a_field_placed_again_by_its_cover(
+    named_relations: Callable[[str], NamedRelations],
+) -> None:
+    prompt = (
+        "Strawberry field under long plastic tunnels, Elsanta I think. Right next to the tunnels "
+        "is an open field of Lollo Rosso."
+    )
+    assert named_relations(prompt) == {("next_to", "Lollo Rosso", ("Elsanta",))}

@@ -68,7 +68,25 @@ def spread_value_lists(text: str) -> str:
         members = [f"{member} {value} {unit}" for value in values]
         return ", " + ", ".join(members[:-1]) + " and " + members[-1]
 
-    return _pattern().sub(spread, text)
+    text = _pattern().sub(spread, text)
+    # "Half a hectare each of Cos lettuce and Savoy cabbage": the size is each one's
+    text = _SIZE_EACH_OF.sub(lambda m: f"{m.group('list')}, {m.group('size')} each", text)
+    # "Three different vegetables, each a 20 x 30 m plot with 0.75 m rows": what each
+    # field is, not one more plot
+    return _EACH_A_PLOT.sub(lambda m: f"each {m.group('said')}", text)
+
+
+_EACH_A_PLOT = re.compile(
+    r"\b(?i:each)\s+(?i:a|an|one)\s+(?P<said>\d[^,.;:!?]*?)\s+"
+    r"(?i:plot|field|block|strip|bed|patch|paddock)\b"
+)
+
+
+_SIZE_EACH_OF = re.compile(
+    r"\b(?P<size>(?:(?i:half an?|an?|one|two|three|four|five)|\d[\d.,]*)\s*"
+    r"(?i:hectares?|ha|acres?|ac|m2|m²|square metres))\s+(?i:each)\s+(?i:of)\s+"
+    r"(?P<list>[A-Za-z][^,.;:!?]*?\s(?i:and|&)\s[^,.;:!?]+?)(?=\s*[,.;:!?]|$)"
+)
 
 
 @functools.cache

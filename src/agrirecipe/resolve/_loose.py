@@ -175,8 +175,10 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
             else:
                 targets = [member or refined.refinements[-1]]
         elif clause.link is not None and clause.link.norm == "also" and before:
-            # "a popping corn block, also 30 rows at 30 in": the same again, for it
-            targets = [before[-1]]
+            # "a popping corn block, also 30 rows at 30 in": the same again, for it (the
+            # field named last, not one named again: "peppers east of the tomatoes, also
+            # on 1.2 m rows" are the peppers')
+            targets = [_last_new(before)]
         elif _continues_a_description(clauses, position):
             # "the oranges colouring up, the bananas still small and just planted"
             targets = [clauses[position - 1].mentions[-1]]
@@ -455,3 +457,12 @@ def _apply_group_words(loose: Sequence[Item], group: Sequence[Mention]) -> None:
             if (mention.count or 1) > 1:
                 mention.distinct = True
                 mention.distinct_crops = not mention.has_crop
+
+
+def _last_new(mentions: Sequence[Mention]) -> Mention:
+    """Of mentions in prompt order (a field named again stands again), the one whose
+    first naming came last."""
+    first: dict[int, int] = {}
+    for index, mention in enumerate(mentions):
+        first.setdefault(id(mention), index)
+    return max(mentions, key=lambda m: first[id(m)])

@@ -128,7 +128,8 @@ def shared_by_all(clauses: Sequence[Clause], position: int) -> bool:
     index = position
     while index > 0:
         clause = clauses[index]
-        if clause.link is None or not listing(clause.link):
+        # ("Both blocks: 15 rows of 80 m, ...": a colon after "both" opens the run)
+        if clause.link is None or not (listing(clause.link) or clause.link.norm == ":"):
             return False
         previous = clauses[index - 1]
         if previous.mentions:

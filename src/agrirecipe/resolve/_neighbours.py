@@ -15,7 +15,12 @@ import re
 
 from agrirecipe.resolve._lexicon import scenery_words
 
-__all__ = ["place_divided_plots", "place_neighbouring_plots", "place_sides"]
+__all__ = [
+    "place_by_cover",
+    "place_divided_plots",
+    "place_neighbouring_plots",
+    "place_sides",
+]
 
 
 # "Savoy and January King in two neighbouring blocks": the plots of a list, side by side
@@ -98,6 +103,31 @@ _SIDE_FIELD = re.compile(
     r"\b(?i:on|in|at) (?i:the) (?P<size>\d[\d.,]*\s*(?i:ha|hectares?|acres?)\s+)?"
     r"(?P<side>(?i:north|south|east|west))(?i:ern)? (?i:field|block|plot|paddock)\b"
 )
+
+
+# "Strawberry field under long plastic tunnels, ... Right next to the tunnels is an open
+# field of Lollo Rosso": the field the cover was said of, placed again by its cover
+_UNDER_COVER = re.compile(
+    r"\b(?P<field>[A-Za-z][\w'-]*(?:\s+(?i:field|plot|beds?|crop|patch))?)\s+(?i:under)\s+"
+    r"(?:(?i:the|long|low|high|plastic|poly|clear|white|some|its)\s+)*"
+    r"(?P<cover>(?i:tunnels|polytunnels|poly tunnels|covers|fleece|netting|nets))\b"
+)
+_PLACED_BY = (
+    r"(?i:next to|beside|by|alongside|near|behind|in front of|north of|south of|east of|west of)"
+)
+
+
+def place_by_cover(text: str) -> str:
+    """``text`` with "next to the tunnels" written "next to the <field under them>" when
+    one field was said to be under those tunnels (covers, fleece, netting) before."""
+    covered = list(_UNDER_COVER.finditer(text))
+    if len({m.group("cover").lower() for m in covered}) != 1 or len(covered) != 1:
+        return text
+    found = covered[0]
+    later = re.compile(rf"(?P<by>\b{_PLACED_BY}\s+)(?i:the)\s+{re.escape(found.group('cover'))}\b")
+    return text[: found.end()] + later.sub(
+        lambda m: f"{m.group('by')}the {found.group('field')}", text[found.end() :]
+    )
 
 
 def place_sides(text: str) -> str:

@@ -110,6 +110,7 @@ from agrirecipe.resolve._measures import (
     share_each_measures,
 )
 from agrirecipe.resolve._neighbours import (
+    place_by_cover,
     place_divided_plots,
     place_neighbouring_plots,
     place_sides,
@@ -198,7 +199,7 @@ class PromptReader(FieldReading):
         text = place_compass_members(open_ordered_lists(text, tag), tag)
         text = place_trailing_directions(place_leading_directions(text))
         text = place_walked_orders(place_neighbouring_plots(place_divided_plots(text)))
-        text = place_sides(text)
+        text = place_by_cover(place_sides(text))
         text = hoist_counted_crops(text, tag)
         for note in labels:
             self.trace.append(TraceStep(stage="decompose", subject="label", detail=note))
