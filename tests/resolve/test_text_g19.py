@@ -280,3 +280,9 @@ def test_a_field_placed_again_by_its_cover(
         "is an open field of Lollo Rosso."
     )
     assert named_relations(prompt) == {("next_to", "Lollo Rosso", ("Elsanta",))}
+
+
+@pytest.mark.parametrize("prompt", ["a bed of Cos", "a few beds of Cos", "beds of Cos"])
+def test_what_the_only_plot_is_of_names_its_crop(prompt: str) -> None:
+    # (a weak variety name after "of": a field of a crop chosen at random before)
+    assert [(f.crop, f.variety) for f in recipe(prompt).fields] == [("Lettuce", "Romaine")]

@@ -149,6 +149,16 @@ def _promote_into_plot(clauses: Sequence[Clause], clause: Clause, supported: set
         named = {c for c2 in clauses[: clause.index] for m in c2.mentions for c in strong_crops(m)}
         named |= supported
         senses = [s for s in item.senses_of("variety") if s.crop in named]
+        crops = {s.crop for s in item.senses_of("variety")}
+        if (
+            not senses
+            and index > 0
+            and len(crops) == 1
+            and not any(strong_crops(m) for c2 in clauses for m in c2.mentions)
+        ):
+            # "a few beds of Cos": what the only plot of the prompt is "of" names its crop
+            # (not a field of a crop chosen at random)
+            senses = item.senses_of("variety")
         if senses:
             item.role = "head"
             item.data["promoted"] = True
