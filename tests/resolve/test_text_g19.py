@@ -286,3 +286,19 @@ def test_a_field_placed_again_by_its_cover(
 def test_what_the_only_plot_is_of_names_its_crop(prompt: str) -> None:
     # (a weak variety name after "of": a field of a crop chosen at random before)
     assert [(f.crop, f.variety) for f in recipe(prompt).fields] == [("Lettuce", "Romaine")]
+
+
+def test_a_crop_named_before_its_counted_plots() -> None:
+    # "Wheat micro-plots ...: two adjacent plots": the two plots are the wheat's (they were
+    # fields of a crop chosen at random, refused for rows narrower than a pepper plant)
+    ill, clean = recipe(
+        "Wheat micro-plots for a rust-detection drone: two adjacent plots, 1.5 m x 10 m each, "
+        "12 cm drill rows, one with yellow rust and one clean."
+    ).fields
+    assert (ill.crop, ill.health, clean.crop, clean.health) == ("Wheat", "Ill", "Wheat", "Healthy")
+    # an everyday word before plots whose crops are named after them names no crop
+    prompt = (
+        "Compact plot pair for the weeding robot's camera: strawberries on 1.5 m beds with 2 "
+        "rows per bed, south of a lettuce block with 30 cm in-row spacing."
+    )
+    assert [f.crop for f in recipe(prompt).fields] == ["Strawberry", "Lettuce"]

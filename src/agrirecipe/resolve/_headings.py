@@ -30,6 +30,7 @@ __all__ = [
     "drop_plural_headings",
     "drop_titles",
     "fill_counted_lists",
+    "name_counted_plots",
 ]
 
 
@@ -469,3 +470,38 @@ def fill_counted_lists(clauses: Sequence[Clause], mentions: list[Mention]) -> li
             heading.refinements.append(mention)
         return [m for m in mentions if all(m is not other for other in later)]
     return mentions
+
+
+def name_counted_plots(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
+    """'Wheat micro-plots for a rust-detection drone: two adjacent plots, 1.5 m x 10 m
+    each, ...': a first field of a crop, plural with no number, then in the same sentence
+    a counted plot of no crop, are one request: the counted plots of that crop. Return
+    the fields left."""
+    if len(mentions) < 2:
+        return mentions
+    heading, counted = mentions[0], mentions[1]
+    if (
+        not heading.implied_count
+        or not heading.has_crop
+        or heading.refinements
+        or counted.has_crop
+        or counted.category is not None
+        or counted.plot is None
+        or any(r.has_crop or r.category is not None for r in counted.refinements)
+        or (counted.count or 1) < 2
+        or any(
+            c.link is not None and c.link.norm in SENTENCE_MARKS
+            for c in clauses[heading.clause + 1 : counted.clause + 1]
+            if c.link.norm != ":"
+        )
+        or any(strong_crops(m) for m in mentions[2:])
+    ):
+        return mentions
+    counted.heads.extend(h for h in heading.heads if h.role == "head")
+    counted.items.extend(heading.items)
+    counted.interpretations = heading.interpretations
+    for member in counted.refinements:  # ("one with yellow rust and one clean")
+        member.interpretations = heading.interpretations
+    for clause in clauses:
+        clause.mentions = [m for m in clause.mentions if m is not heading]
+    return mentions[1:]

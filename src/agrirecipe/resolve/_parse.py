@@ -74,6 +74,7 @@ from agrirecipe.resolve._headings import (
     drop_plural_headings,
     drop_titles,
     fill_counted_lists,
+    name_counted_plots,
 )
 from agrirecipe.resolve._intent import (
     Hemisphere,
@@ -256,6 +257,7 @@ class PromptReader(FieldReading):
         mentions = fill_counted_lists(clauses, mentions)
         mentions = drop_titles(clauses, mentions)
         mentions = drop_plural_headings(clauses, mentions)
+        mentions = name_counted_plots(clauses, mentions)
         apply_each_side(clauses)
         for clause in clauses:
             # "... and there's a duck pond in the middle": the zone of scenery, not a field
@@ -443,8 +445,10 @@ class PromptReader(FieldReading):
                     # says its crops names no crop; real crops the hierarchy lacks were
                     # refused by name before)
                     everyday = word is not None and word.norm in everyday_words()
+                    # ("Compact plot pair ...: strawberries ..., a lettuce block": nor
+                    # before plots whose crops are named after them)
                     if word is not None and not (
-                        everyday and plots[0].data["value"].get("options")
+                        everyday and (plots[0].data["value"].get("options") or sub.refinements)
                     ):
                         self._unknown_crop(word.raw)
                 crops = [h for h in sub.heads if h.role == "head" and h.senses_of("crop")]
