@@ -489,10 +489,10 @@ def name_counted_plots(clauses: Sequence[Clause], mentions: list[Mention]) -> li
         or counted.plot is None
         or any(r.has_crop or r.category is not None for r in counted.refinements)
         or (counted.count or 1) < 2
+        # (in the heading's sentence: a colon may end the heading)
         or any(
-            c.link is not None and c.link.norm in SENTENCE_MARKS
+            c.link is not None and c.link.norm in SENTENCE_MARKS and c.link.norm != ":"
             for c in clauses[heading.clause + 1 : counted.clause + 1]
-            if c.link.norm != ":"
         )
         or any(strong_crops(m) for m in mentions[2:])
     ):
