@@ -132,8 +132,11 @@ def fill_gapped_counts(text: str) -> str:
         text,
     )
     pattern = _gapped_of()
-    while (match := pattern.search(text)) is not None:
-        # (one at a time: "20 acres of wheat, 15 of corn and 5 of potatoes" fills each)
+    position = 0
+    while (match := pattern.search(text, position)) is not None:
+        # (one at a time: "20 acres of wheat, 15 of corn and 5 of potatoes" fills each,
+        # the next search starting at the count just filled, not at the prompt's start)
         at = match.end("count")
         text = f"{text[:at]} {match.group('unit')}{text[at:]}"
+        position = match.start("count")
     return text
