@@ -4,20 +4,22 @@ The forms are data (``data/casual.yaml``). :func:`expand_casual` rewrites them
 once, in one pass of one regular expression (linear in the prompt's length),
 before the prompt is split into words, so "b4" never becomes a count of 4
 fields. The original prompt is kept for the recipe; the rewritten text is what
-is read.
+is read. :func:`count_said_after_crop` moves a count of fields said after their crop
+("mostly potatoes - four fields of them -") before it.
 """
 
 from __future__ import annotations
 
 import functools
 import re
+from collections.abc import Callable, Sequence
 from typing import Any
 
 import yaml
 
-from agrirecipe.resolve._lexicon import DATA_DIR
+from agrirecipe.resolve._lexicon import DATA_DIR, Item
 
-__all__ = ["expand_casual"]
+__all__ = ["count_said_after_crop", "expand_casual"]
 
 
 @functools.cache
@@ -91,8 +93,24 @@ def expand_casual(prompt: str) -> str:
     text = _UNIT_AND_A_HALF.sub(lambda m: f"1.5 {m.group('unit')}s", text)
     # "Corn plot pair", "a lettuce strip trio": a count said after the plot noun
     text = _PLOT_COUNT_AFTER.sub(_count_before_plots, text)
+    # "the Bing cherries ... are ripe for picking, and so are the strawberries ...": what
+    # is said of the first is said of the second
+    text = _SO_ARE.sub(
+        lambda m: (
+            f"{m.group('said')}{m.group('joint')}{m.group('subject')} "
+            f"{m.group('copula')} {m.group('look')}"
+        ),
+        text,
+    )
     # "1 of them 5 ha the other 3 ha": a measure ends one member, "the other" begins the next
     return _OTHER_AFTER_MEASURE.sub(r"\g<unit>, ", text)
+
+
+_SO_ARE = re.compile(
+    r"(?P<said>\b(?P<copula>(?i:is|are|was|were|looks?|looking))\s+(?P<look>[^,;.:!?]{2,60}?)"
+    r"(?P<joint>\s*,?\s+(?i:and|&)\s+))(?i:so)\s+(?i:is|are|was|were|do|does)\s+"
+    r"(?P<subject>(?i:the|our|my|those|these)\s+[^,;.:!?]{2,80}?)(?=\s*(?:[,;.:!?]|$))"
+)
 
 
 _COUNT_OF_THEM = re.compile(
@@ -195,3 +213,30 @@ _ONE_AFTER_ONE = re.compile(
     # (not the whole part of a decimal: "one vine every 1.2 m")
     r"\s+(?P<second>(?i:one|1)\b(?![.,]\d))"
 )
+
+
+_FIELDS_OF_THEM = re.compile(
+    r"(?P<words>(?:[A-Za-z][\w'-]*\s+){0,2}[A-Za-z][\w'-]*)\s*(?P<open>[-\u2013\u2014,(])\s*"
+    r"(?P<count>\d+|(?i:two|three|four|five|six|seven|eight|nine|ten|twelve))\s+"
+    r"(?P<plots>(?i:fields|plots|blocks|strips|beds|orchards|patches|paddocks|vineyards|groves))"
+    r"\s+(?i:of)\s+(?i:them|those|these|em|'em)\b\s*(?:[-\u2013\u2014)](?=\s)|(?=[,.;:!?]|$))"
+)
+
+
+def count_said_after_crop(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
+    """``text`` with "The farm is mostly potatoes - four fields of them - with ..." written
+    "... mostly four potatoes fields with ...": a count of plots "of them" said right after
+    the words that name their crop (only words that all name a crop or variety)."""
+
+    def rewrite(match: re.Match[str]) -> str:
+        words = match.group("words").split()
+        for start in range(len(words)):
+            crop = " ".join(words[start:])
+            items = [i for i in tag(crop) if i.role != "separator"]
+            if items and all(i.has("crop", "variety") for i in items):
+                lead = " ".join(words[:start])
+                count, plots = match.group("count"), match.group("plots")
+                return f"{lead}{' ' if lead else ''}{count} {crop} {plots} "
+        return match.group(0)
+
+    return _FIELDS_OF_THEM.sub(rewrite, text)

@@ -373,6 +373,12 @@ class MentionBuilder:
                 and item.norm in ("a", "an")
                 and any(later.norm in ("the", "its", "their") for later in items[index + 1 :])
             )
+            # "each carrying a double row of plants": the article is the row's
+            of_another = of_another or (
+                item.norm in ("a", "an")
+                and index + 1 < len(items)
+                and items[index + 1].role == "geometry"
+            )
             # The amount nearest the head wins: "a combine ... a few cereal fields".
             counted = before_head or counts or bool(item.data.get("counts_kinds"))
             if item.role == "number" and counted and not of_another:

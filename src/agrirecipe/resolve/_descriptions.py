@@ -13,12 +13,13 @@ import itertools
 from collections.abc import Sequence
 
 from agrirecipe.resolve._decompose import Clause, Mention
-from agrirecipe.resolve._lexicon import reader_words, vocabulary
+from agrirecipe.resolve._lexicon import Item, reader_words, vocabulary
 from agrirecipe.resolve._structure import (
     definite_before_head,
     definite_words,
     descriptive_words,
     names_a_variety,
+    plant_part_words,
     strong_crops,
 )
 
@@ -104,6 +105,9 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
         elif listed and _continues_with(clauses[position - 1], mention):
             # "apples with scab spots on the leaves and corky fruit": still the apples'
             listed, described = False, True
+        elif others_before and _after_a_look(clauses[position - 1], clause, mention):
+            # "Jonagored with scab, velvety olive spots on the leaves and split fruit"
+            listed, described = False, True
         vague = any(i.role == "quantity" for i in mention.items)  # "loads of", "lots of"
         # "the fruit ones": the fields of fruit named before, not their fruit
         # (not "the Beefsteak ones have big fruit": the "ones" of another mention)
@@ -117,7 +121,7 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
             or ones
             or (
                 mention.count is not None
-                and not (definite or fraction or one_described or predicate)
+                and not (definite or fraction or one_described or predicate or own_fruit)
                 and not _a_different(mention)
                 and not (vague and others_before and described)
             )
@@ -190,7 +194,7 @@ def _dissolve_held_produce(clauses: Sequence[Clause]) -> list[str]:
 def _fruit_of_named_crop(mention: Mention, before: Sequence[Clause]) -> bool:
     """ "full of orange fruit" after an orange block: a crop word before a word for the
     fruit, naming no variety, is the colour or fruit of a crop already named."""
-    parts = _plant_part_words()
+    parts = plant_part_words()
     if (
         mention.count is not None
         or not any(h.norm in parts for h in mention.heads)
@@ -209,7 +213,7 @@ def _part_of_named_crop(mention: Mention, before: Sequence[Clause]) -> bool:
         return False
     first = min(h.start for h in mention.heads)
     said = [i for i in mention.items if i.start < first]
-    if len(said) < 2 or said[-1].role != "of" or said[-2].norm not in _plant_part_words():
+    if len(said) < 2 or said[-1].role != "of" or said[-2].norm not in plant_part_words():
         return False
     crops = strong_crops(mention)
     named = {c for clause in before for m in clause.mentions for c in strong_crops(m)}
@@ -221,7 +225,7 @@ def _bare_part_after_with(clause: Clause, mention: Mention) -> bool:
     crop, no count) after "with" or "of", once a field is named, is that field's fruit."""
     if mention.count is not None or strong_crops(mention):
         return False
-    if not all(h.norm in _plant_part_words() for h in mention.heads):
+    if not all(h.norm in plant_part_words() for h in mention.heads):
         return False
     if any(i.role == "plot" for i in clause.items):
         return False  # "a plot full of fruit" asks for a field of fruit
@@ -240,11 +244,12 @@ def _bare_part_after_with(clause: Clause, mention: Mention) -> bool:
 
 def _crop_fruit_after_with(clause: Clause, mention: Mention, before: Sequence[Clause]) -> bool:
     """ "Padron on the other, still flowering with little green peppers": a bare plural of
-    a crop named before, after "with" (past plain adjectives), is that field's fruit."""
+    a crop named before, after "with" (past plain adjectives), is that field's fruit; so is
+    a loose few of them ("a Granny leaf ..., with a couple of apples behind it")."""
     crops = strong_crops(mention)
     if (
         not crops
-        or mention.count is not None
+        or (mention.count is not None and not _loose_few(mention))
         or names_a_variety(mention)
         or any(h.role == "plot" for h in mention.heads)
         or not any(strong_crops(m) & crops for c in before for m in c.mentions)
@@ -255,12 +260,29 @@ def _crop_fruit_after_with(clause: Clause, mention: Mention, before: Sequence[Cl
     # (not "w/ the lettuce in the middle": a field named again by "the")
     while (
         said
-        and said[-1].role in ("unknown", "filler", "cue")
+        and (said[-1].role in ("unknown", "filler", "cue") or said[-1] in _few_words(mention))
         and said[-1].norm != "with"
         and said[-1].norm not in definite_words()
     ):
         said.pop()
     return bool(said) and said[-1].norm == "with"
+
+
+def _few_words(mention: Mention) -> list[Item]:
+    """The count words ("a couple of", "a few") before the mention's head."""
+    head = min(h.start for h in mention.heads)
+    return [i for i in mention.items if i.end <= head and i.role == "number"]
+
+
+def _loose_few(mention: Mention) -> bool:
+    """ "a couple of apples", "a few cherries": a count that is a handful of fruit, not of
+    fields (no plot word, no variety)."""
+    numbers = [i for i in mention.items if i.role == "number"]
+    return (
+        bool(numbers)
+        and all(set(i.norm.split()) & reader_words("loose_few") for i in numbers)
+        and not any(i.role == "plot" for i in mention.items)
+    )
 
 
 def _held_by_scenery(clause: Clause, mention: Mention) -> bool:
@@ -278,7 +300,7 @@ def _held_by_scenery(clause: Clause, mention: Mention) -> bool:
 def _continues_with(previous: Clause, mention: Mention) -> bool:
     """Whether ``mention`` (only words for fruit) goes on a "with ..." list of the field
     named in the clause before it: "apples with scab on the leaves and corky fruit"."""
-    if not previous.mentions or not all(h.norm in _plant_part_words() for h in mention.heads):
+    if not previous.mentions or not all(h.norm in plant_part_words() for h in mention.heads):
         return False
     owner = previous.mentions[-1]
     last_head = max(h.start for h in owner.heads)
@@ -288,11 +310,6 @@ def _continues_with(previous: Clause, mention: Mention) -> bool:
         and after[0].role == "of"
         and all(i.role in ("of", "health", "cue", "stage", "filler", "unknown") for i in after)
     )
-
-
-@functools.lru_cache(maxsize=1)
-def _plant_part_words() -> frozenset[str]:
-    return frozenset(str(word) for word in vocabulary()["plant_part_words"])
 
 
 def _dissolve_described_after_of(clause: Clause, words: frozenset[str]) -> list[str]:
@@ -375,6 +392,20 @@ def _predicate(clause: Clause, mention: Mention) -> bool:
     head = max(h.end for h in mention.heads)
     verbs = _describing_verbs()
     return any(i.start >= head and i.norm in verbs for i in clause.items)
+
+
+def _after_a_look(previous: Clause, clause: Clause, mention: Mention) -> bool:
+    """Whether ``mention`` (only words for fruit, no count) is joined by "and" to a clause
+    that only says how the plants look ("velvety olive spots on the leaves")."""
+    return (
+        not previous.mentions
+        and clause.link is not None
+        and clause.link.role == "conjunction"
+        and mention.count is None
+        and all(h.norm in plant_part_words() for h in mention.heads)
+        and any(i.role in ("cue", "health") for i in previous.items)
+        and all(i.role in ("cue", "health", "filler", "unknown", "of") for i in previous.items)
+    )
 
 
 @functools.lru_cache(maxsize=1)

@@ -15,6 +15,7 @@ from agrirecipe.resolve._lexicon import Item, reader_words
 
 __all__ = [
     "colour_after_a_look",
+    "colour_lists",
     "colours_are_not_crops",
     "crops_of",
     "negated_looks",
@@ -97,6 +98,43 @@ def colours_are_not_crops(items: Sequence[Item], text: str) -> None:
             if crop.role in ("head", "other_crop") and colour.norm in reader_words("colours"):
                 crop.role = "filler"
                 crop.data["colour"] = True
+    for index, word in enumerate(items):
+        if (
+            word.role == "head"
+            and word.norm in reader_words("colours")
+            and _colours_a_part(items[index + 1 :])
+        ):
+            word.role = "filler"
+            word.data["colour"] = True
+
+
+def _colours_a_part(after: Sequence[Item]) -> bool:
+    """Whether the words after a colour crop word name a part of a plant, past other
+    colours joined to it ("their orange shoulders", "the orange and red kernels")."""
+    colours = reader_words("colours")
+    for item in after[:5]:
+        if item.norm in ("and", "&", "or", ",", "-") or (
+            item.norm in colours and not item.has("crop", "variety", "plot")
+        ):
+            continue
+        return item.norm in reader_words("coloured_parts") and not item.has("crop", "plot")
+    return False
+
+
+def colour_lists(items: Sequence[Item]) -> None:
+    """'white and purple blooms over the whole field': "and" between two colours of one
+    thing that is no crop or plot joins the colours, not two fields."""
+    colours = reader_words("colours")
+    for first, joiner, second, thing in zip(items, items[1:], items[2:], items[3:], strict=False):
+        if (
+            joiner.role == "conjunction"
+            and first.norm in colours
+            and second.norm in colours
+            and first.role in ("filler", "unknown")
+            and second.role in ("filler", "unknown")
+            and not thing.has("crop", "variety", "plot", "category")
+        ):
+            joiner.role = "filler"
 
 
 def colour_after_a_look(items: Sequence[Item]) -> None:

@@ -5,19 +5,23 @@ the farm or of a view they are on, are written the way the reader places fields:
 "in two neighbouring blocks" is "in two blocks side by side", "with a ditch between"
 is scenery, "riesling in the middle w/ pinot noir on one side & cabernet on the other"
 is "riesling between pinot noir and cabernet", "on the 20 ha east field" is "in the
-east, 20 ha", and "the polytunnel of cherry tomatoes" is a plot that can be placed.
+east, 20 ha", "the polytunnel of cherry tomatoes" is a plot that can be placed, and
+"flanked on both sides by wheat drilled at 12.5 cm" is "flanked by wheat on both sides
+drilled at 12.5 cm".
 """
 
 from __future__ import annotations
 
 import functools
 import re
+from collections.abc import Callable, Sequence
 
-from agrirecipe.resolve._lexicon import scenery_words
+from agrirecipe.resolve._lexicon import Item, scenery_words
 
 __all__ = [
     "place_by_cover",
     "place_divided_plots",
+    "place_flanks",
     "place_neighbouring_plots",
     "place_sides",
 ]
@@ -85,7 +89,7 @@ def place_divided_plots(text: str) -> str:
 # before "with" stands between the two (its "in the middle" said again)
 _ONE_SIDE_AND_OTHER = re.compile(
     r"(?:\s+(?i:in the (?:middle|centre|center)))?\s*,?\s+(?:(?i:with)\s+)?"
-    r"(?P<a>[A-Za-z][^,;.:!?]*?)\s+(?i:on one side)\s*,?\s+(?i:and)\s+"
+    r"(?P<a>[A-Za-z][^,;.:!?]*?)\s+(?i:on one side)\s*,?\s+(?P<and>(?i:and|&)\s+)?(?!(?i:of)\b)"
     r"(?P<b>[A-Za-z][^,;.:!?]*?)\s+(?i:on the other)(?:\s+(?i:side|one))?\b"
 )
 # "imperator carots & danvers carots, danvers one east": one of two fields said to be on
@@ -130,12 +134,24 @@ def place_by_cover(text: str) -> str:
     )
 
 
+def _between_sides(match: re.Match[str]) -> str:
+    """ " between A and B" for "with A on one side and B on the other"; only ", A and B"
+    (the fields' names) when the sentence has placed the field between them already
+    ("potatoes between 2 onion fields, sturon on one side red baron on the other")."""
+    sentence = re.split(r"[.;!?]", match.string[: match.start()])[-1]
+    if re.search(r"\b(?i:between)\b", sentence):
+        return f", {match.group('a')} and {match.group('b')}"
+    if not match.group("and"):
+        return match.group(0)  # ("Cherry tomatoes ... on one side, a bed of ... on the other")
+    return f" between {match.group('a')} and {match.group('b')}"
+
+
 def place_sides(text: str) -> str:
     """``text`` with "X with A on one side and B on the other" written "X between A and
     B", "..., danvers one east" written "..., danvers one east of the other", and "on the
     20 ha east field ..., on the 8 ha west field" written "in the east, 20 ha ..., in the
     west, 8 ha" (two or more sides, not all the same)."""
-    text = _ONE_SIDE_AND_OTHER.sub(lambda m: f" between {m.group('a')} and {m.group('b')}", text)
+    text = _ONE_SIDE_AND_OTHER.sub(_between_sides, text)
     text = _ONE_ON_A_SIDE.sub(lambda m: f"{m.group(0)} of the other", text)
     for side, other in (("left", "right"), ("right", "left")):
         # "left of the yard there's a vineyard, on the right a strawberry field": the
@@ -156,3 +172,31 @@ def place_sides(text: str) -> str:
         ),
         text,
     )
+
+
+# "flanked on both sides by wheat drilled at 12.5 cm": the sides said before what is on them
+_FLANKED_SIDES = re.compile(
+    r"\b(?P<verb>(?i:flanked|bordered|edged|hemmed in|lined))\s+"
+    r"(?P<sides>(?i:on\s+(?:both|either|each)\s+sides?|(?:both|either|each)\s+sides?))\s+"
+    r"(?i:by)\s+(?P<words>(?:[A-Za-z][\w'-]*\s*){1,4})"
+)
+
+
+def place_flanks(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
+    """``text`` with "flanked on both sides by wheat drilled at 12.5 cm" written "flanked
+    by wheat on both sides drilled at 12.5 cm", so the sides follow the field on them
+    (the longest run of the words after "by" that names a crop, variety or plot)."""
+
+    def rewrite(match: re.Match[str]) -> str:
+        words = match.group("words").split()
+        for end in range(len(words), 0, -1):
+            named = " ".join(words[:end])
+            items = [i for i in tag(named) if i.role != "separator"]
+            if items and all(i.has("crop", "variety", "plot", "category") for i in items):
+                rest = " ".join(words[end:])
+                tail = match.group("words")[len(match.group("words").rstrip()) :]
+                sides = match.group("sides")
+                return f"{match.group('verb')} by {named} {sides}{' ' + rest if rest else ''}{tail}"
+        return match.group(0)
+
+    return _FLANKED_SIDES.sub(rewrite, text)

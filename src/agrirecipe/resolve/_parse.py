@@ -50,7 +50,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Sequence
 
 from agrirecipe._errors import PromptError, UnknownCropError
-from agrirecipe.resolve._casual import expand_casual
+from agrirecipe.resolve._casual import count_said_after_crop, expand_casual
 from agrirecipe.resolve._coreference import merge_appositive_plots, merge_coreferences
 from agrirecipe.resolve._decompose import (
     Clause,
@@ -113,6 +113,7 @@ from agrirecipe.resolve._measures import (
 from agrirecipe.resolve._neighbours import (
     place_by_cover,
     place_divided_plots,
+    place_flanks,
     place_neighbouring_plots,
     place_sides,
 )
@@ -124,6 +125,7 @@ from agrirecipe.resolve._structure import (
     apply_each_side,
     apply_plural_counts,
     drop_alternatives,
+    drop_free_choices,
     drop_negated,
     raise_conflicts,
     share_count_over_a_list,
@@ -200,8 +202,8 @@ class PromptReader(FieldReading):
         text = place_compass_members(open_ordered_lists(text, tag), tag)
         text = place_trailing_directions(place_leading_directions(text))
         text = place_walked_orders(place_neighbouring_plots(place_divided_plots(text)))
-        text = place_by_cover(place_sides(text))
-        text = hoist_counted_crops(text, tag)
+        text = place_by_cover(place_sides(place_flanks(text, tag)))
+        text = hoist_counted_crops(count_said_after_crop(text, tag), tag)
         for note in labels:
             self.trace.append(TraceStep(stage="decompose", subject="label", detail=note))
         tokens = tokenize(text)
@@ -234,6 +236,7 @@ class PromptReader(FieldReading):
         builder = MentionBuilder(self.crop_categories)
         clauses = decompose(items, builder)
         promote_weak_varieties(clauses, builder)
+        self._note(drop_free_choices(clauses), "left to the reader's choice: no field of its own")
         apply_plural_counts(clauses, int(vocabulary()["plural_fields"]))
         take_the_lower_count(clauses)
         share_count_over_a_list(clauses)

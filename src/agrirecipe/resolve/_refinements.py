@@ -90,7 +90,7 @@ def apply_refinements(
             and clause.link.role in ("relation", "between")
             and len(clause.mentions) == 1
             and definite_before_head(clause, clause.mentions[0])
-            and any(strong_crops(clause.mentions[0]) & strong_crops(r) for r in parent.refinements)
+            and any(_named_again(clause.mentions[0], r) for r in parent.refinements)
             # (not "Block B, directly east of the Conference pears: Jonagored apples": the
             # field it places comes after)
             and not (
@@ -100,9 +100,7 @@ def apply_refinements(
             # "three fields: wheat up by the woods, potatoes right next to the wheat, and
             # ...": the member a relation places against, named again; the listing goes on
             again = clause.mentions[0]
-            clause.mentions = [
-                next(r for r in parent.refinements if strong_crops(again) & strong_crops(r))
-            ]
+            clause.mentions = [next(r for r in parent.refinements if _named_again(again, r))]
             clause.refined_parent = parent
             clause.refinement = previous.refinement
             continue
@@ -514,6 +512,19 @@ def _listed(clauses: Sequence[Clause], start: int, *, to_the_end: bool = False) 
             m for m in clause.mentions if m.has_crop and not definite_before_head(clause, m)
         )
     return named
+
+
+def _named_again(again: Mention, member: Mention) -> bool:
+    """Whether ``again`` ("the wheat") names ``member`` again: the same crop, and no other
+    variety ("between the Cos and the Bibb" after "Iceberg" names two more fields)."""
+    if not strong_crops(again) & strong_crops(member):
+        return False
+    said = {v for _, v, _ in again.interpretations or () if v}
+    return (
+        not said
+        or not names_a_variety(member)
+        or bool(said & {v for _, v, _ in member.interpretations or () if v})
+    )
 
 
 def _placed_by_scenery(clause: Clause) -> bool:

@@ -19,7 +19,7 @@ import itertools
 from collections.abc import Sequence
 
 from agrirecipe.resolve._decompose import Clause, Mention
-from agrirecipe.resolve._lexicon import Item, vocabulary
+from agrirecipe.resolve._lexicon import Item, reader_words, vocabulary
 from agrirecipe.resolve._links import link_norm, listing
 
 __all__ = [
@@ -257,11 +257,16 @@ def apply_corrections(clauses: Sequence[Clause]) -> list[str]:
 
 
 def _correction_before(clauses: Sequence[Clause], position: int) -> bool:
-    """A correction word alone in the clause right before ("no, I mean, ...")."""
+    """A correction word alone in the clause right before ("no, I mean, ..."), or ending
+    it after the field it takes back ("cabage patch kid lol jk, just a cabbage field")."""
     if position == 0:
         return False
     previous = clauses[position - 1]
-    return not previous.mentions and any(i.role == "correction" for i in previous.loose)
+    if not previous.mentions:
+        return any(i.role == "correction" for i in previous.loose)
+    last = previous.mentions[-1]
+    head = max(h.start for h in last.heads)
+    return any(i.role == "correction" and i.start > head for i in last.items)
 
 
 def first_word(mention: Mention) -> Item | None:
@@ -528,6 +533,47 @@ def drop_alternatives(clauses: Sequence[Clause]) -> list[str]:
     return dropped
 
 
+def drop_free_choices(clauses: Sequence[Clause]) -> list[str]:
+    """'some fruit fields pls, whatever fruit u like', '3 fields, any vegetables': a crop
+    or kind left to the reader's choice, after the fields it is for, is no field of its
+    own; a kind gives those fields their category when they name none. Returns the
+    texts dropped."""
+    dropped: list[str] = []
+    choices = reader_words("free_choice")
+    earlier: list[Mention] = []
+    for clause in clauses:
+        for mention in list(clause.mentions):
+            first = first_word(mention)
+            if (
+                earlier
+                and first is not None
+                and first.norm in choices
+                # ("wheat and any vegetable": a member of a list, a field)
+                and not (clause.link is not None and clause.link.role == "conjunction")
+                and clause.mentions[0] is mention
+                and mention.count is None
+                and not names_a_variety(mention)
+                and not any(h.role == "plot" for h in mention.heads)
+                # (the kind of the fields before, or what they leave open; "wheat, any
+                # vegetable" lists two)
+                and (
+                    (mention.category is None and not mention.has_crop)
+                    or (
+                        not earlier[-1].has_crop
+                        and earlier[-1].category in (None, mention.category)
+                    )
+                )
+            ):
+                owner = earlier[-1]
+                if owner.category is None:
+                    owner.category = mention.category
+                clause.mentions.remove(mention)
+                dropped.append(mention.text)
+                continue
+            earlier.append(mention)
+    return dropped
+
+
 def drop_negated(clauses: Sequence[Clause]) -> list[str]:
     """'no crops or anything', 'no apples, just pears': a negated mention asks for no field.
 
@@ -549,6 +595,12 @@ def drop_negated(clauses: Sequence[Clause]) -> list[str]:
 
 
 @functools.lru_cache(maxsize=1)
+@functools.lru_cache(maxsize=1)
+def plant_part_words() -> frozenset[str]:
+    """Words for the fruit of a crop ("fruit", "berries", "the first hands")."""
+    return frozenset(str(word) for word in vocabulary()["plant_part_words"])
+
+
 def descriptive_words() -> frozenset[str]:
     vocab = vocabulary()
     return frozenset(

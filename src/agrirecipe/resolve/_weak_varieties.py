@@ -15,9 +15,14 @@ from collections.abc import Sequence
 from typing import Any
 
 from agrirecipe.resolve._decompose import Clause, Mention, MentionBuilder
-from agrirecipe.resolve._lexicon import Item
+from agrirecipe.resolve._lexicon import Item, reader_words
 from agrirecipe.resolve._links import listing
-from agrirecipe.resolve._structure import descriptive_words, strong_crops
+from agrirecipe.resolve._structure import (
+    definite_before_head,
+    descriptive_words,
+    plant_part_words,
+    strong_crops,
+)
 
 __all__ = ["promote_weak_varieties"]
 
@@ -31,10 +36,18 @@ def promote_weak_varieties(clauses: Sequence[Clause], builder: MentionBuilder) -
     supported = _named_together(clauses)
     # ("The big pivot circle is Russet, 50 ha, ...": the only name of a crop in a prompt
     # that says how big or how grown its field is; not "Flint walls around the yard")
+    # ("Cos ready to cut, ..., the harvest rig working the far end of the field": the
+    # field named again by "the" is the one the prompt opened with)
     alone = (
-        not any(c.mentions for c in clauses)
+        all(_the_field(c, m) for c in clauses for m in c.mentions)
         and sum(1 for c in clauses for i in c.loose if i.role == "weak_variety") == 1
-        and any(i.role in ("size", "geometry", "stage") for c in clauses for i in c.items)
+        and (
+            (
+                not any(c.mentions for c in clauses)
+                and any(i.role in ("size", "geometry", "stage") for c in clauses for i in c.items)
+            )
+            or _opens_a_look(clauses)
+        )
     )
     for position, clause in enumerate(clauses):
         _fold_described_plants(clause)
@@ -85,6 +98,32 @@ def promote_weak_varieties(clauses: Sequence[Clause], builder: MentionBuilder) -
                 # "west to east: Lollo, then Imperator carrots": a capitalised name in a
                 # list of fields is its variety even when no field beside it is its crop
                 _promote(clause, weak[0], weak[0].senses_of("variety")[0])
+
+
+def _the_field(clause: Clause, mention: Mention) -> bool:
+    """A plot word named again by "the" that names no crop ("the far end of the field")."""
+    return (
+        not mention.has_crop
+        and mention.category is None
+        and mention.count is None
+        and all(h.role == "plot" for h in mention.heads)
+        and definite_before_head(clause, mention)
+    )
+
+
+def _opens_a_look(clauses: Sequence[Clause]) -> bool:
+    """ "Centenary on the tabletop gutters ..., berries deep red", "Lollo looking gorgeous,
+    frilly dark red heads": a prompt that opens with the name and goes on to say how the
+    plants' parts look is about that variety's field (not "Flint walls around the yard")."""
+    first = clauses[0].loose[:1] if clauses and clauses[0].loose else []
+    if not first or first[0].role != "weak_variety":
+        return False
+    parts = reader_words("coloured_parts") | reader_words("young_parts") | plant_part_words()
+    return any(
+        i.norm in parts or (i.role in ("stage", "cue") and not i.data.get("negated"))
+        for c in clauses
+        for i in c.items
+    )
 
 
 def _fold_described_plants(clause: Clause) -> None:

@@ -14,9 +14,11 @@ each decides what a word is in its place, where the lexicon alone cannot:
 1b  "twin" of no rows; a compound such as "Crop-row" or   "Citrus twin"
     "Pear-vs-apple"
 2   a crop word joined to a colour, or a colour crop      "olive-green patches",
-    word before scenery, is a colour; a crop word before  "an orange tractor",
-    a machine names its load                              "a grain trailer"
-2a  a colour crop word after "ripe and" is a colour       "hanging ripe and orange"
+    word before scenery or a part of a plant, is a        "an orange tractor",
+    colour; a crop word before a machine names its load   "their orange shoulders",
+                                                          "a grain trailer"
+2a  a colour crop word after "ripe and" is a colour;      "hanging ripe and orange",
+    "and" between two colours joins them                  "white and purple blooms"
 2b  "different" before a measure says nothing of crops;   "at different densities",
     kinds counted are different crops                     "3 kinds of fruit trees"
 2c  a colour change beside a ripeness cue is ripening;    "flopped over and yellowing",
@@ -51,6 +53,7 @@ from agrirecipe.resolve._geometry import geometry_nouns
 from agrirecipe.resolve._lexicon import Item, reader_words
 from agrirecipe.resolve._looks import (
     colour_after_a_look,
+    colour_lists,
     colours_are_not_crops,
     crops_of,
     negated_looks,
@@ -74,6 +77,7 @@ def read_words(items: Sequence[Item], text: str) -> None:
     _twins_and_compounds(items, text)
     colours_are_not_crops(items, text)
     colour_after_a_look(items)
+    colour_lists(items)
     _measured_differences(items)
     _counted_kinds(items)
     ripening_colours(items)

@@ -72,6 +72,11 @@ def _patterns() -> tuple[tuple[str, re.Pattern[str]], ...]:
         # ("the road running along the east side.": placed by a preposition, a relation)
         pattern = rf"(?<![a-z0-9])(?<!along )(?<!on )(?<!by )(?:{alternation})(?= [,.;:!?]| -|$)"
         patterns.append((str(zone), re.compile(pattern)))
+    for zone, words in data["leading_places"].items():
+        alternation = "|".join(re.escape(str(w)) for w in sorted(words, key=len, reverse=True))
+        opening = r"(?:^|(?<=[,.;:!?] )|(?<= and ))"
+        pattern = rf"{opening}(?:{alternation})(?= [a-z])(?! (?:of|wind|winds|breeze)\b)"
+        patterns.append((str(zone), re.compile(pattern)))
     nouns = sorted((*vocabulary()["plot_nouns"], "one", "ones"), key=len, reverse=True)
     plots = "|".join(re.escape(str(n)) for n in nouns)
     for zone, words in data["before_plots"].items():
