@@ -30,11 +30,12 @@ step  pass                                        module (data)
       colours and looks)                          ``reader_words``)
 8     scenery-only prompts, unknown crops         ``PromptReader._reject_*``
 9     clauses and mentions                        ``_decompose``
-10    weak variety names; counts, corrections,    ``_weak_varieties``,
-      shared attributes; the members a plural     ``_structure``,
-      lists; descriptions of plants named;        ``_refinements``,
-      back-references; list headings              ``_descriptions``,
-                                                  ``_coreference``, ``_headings``
+10    weak variety names; mentions taken back    ``_weak_varieties``,
+      (corrections, alternatives, choices left    ``_retractions``,
+      open, negations); counts, shared            ``_structure``,
+      attributes; the members a plural lists;     ``_refinements``,
+      descriptions of plants named;               ``_descriptions``,
+      back-references; list headings              ``_coreference``, ``_headings``
 11    head-less clauses' words to their fields    ``_loose``,
       (which fields a measure is said of)         ``_measures``
 12    fields of each mention, their attributes    ``_fields``
@@ -119,14 +120,16 @@ from agrirecipe.resolve._neighbours import (
 )
 from agrirecipe.resolve._refinements import apply_refinements
 from agrirecipe.resolve._relations import read_relations
-from agrirecipe.resolve._scan import assign_roles, read_heights, read_latitude, read_sizes
-from agrirecipe.resolve._structure import (
+from agrirecipe.resolve._retractions import (
     apply_corrections,
-    apply_each_side,
-    apply_plural_counts,
     drop_alternatives,
     drop_free_choices,
     drop_negated,
+)
+from agrirecipe.resolve._scan import assign_roles, read_heights, read_latitude, read_sizes
+from agrirecipe.resolve._structure import (
+    apply_each_side,
+    apply_plural_counts,
     raise_conflicts,
     share_count_over_a_list,
     share_counted_fields,
