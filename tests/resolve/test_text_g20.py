@@ -2,7 +2,9 @@
 variety name that opens a description, quarters named bare, a count of fields said after
 their crop, fields on both sides, named sides of plots already placed between, varieties
 named again beside a member, "and so are", véraison, a joke taken back, a crop left to
-the reader's choice, colours listed with "and", and an article that belongs to a row."""
+the reader's choice, colours listed with "and", and an article that belongs to a row; and
+development misses of the same kinds (a member on either side, a compass side opening a
+clause, sides of scenery)."""
 
 from __future__ import annotations
 
@@ -170,3 +172,28 @@ def test_a_choice_joined_by_and_is_a_field() -> None:
     assert (wheat.crop, other.category) == ("Wheat", "Vegetables")
     assert [f.crop for f in recipe("wheat, any vegetable").fields][:1] == ["Wheat"]
     assert len(recipe("wheat, any vegetable").fields) == 2
+
+
+# --- development-set misses of the same kinds (g13, g18) ---
+
+
+def test_a_member_on_either_side_fills_a_counted_list(
+    named_relations: Callable[[str], NamedRelations],
+) -> None:
+    prompt = "3 plots: carrots in the middle, onions either side of it"
+    assert [f.crop for f in recipe(prompt).fields] == ["Carrot", "Onion", "Onion"]
+    assert named_relations(prompt) == {("between", "Carrot", ("Onion", "Onion"))}
+
+
+def test_a_compass_side_opening_a_clause_names_its_plot(
+    named_relations: Callable[[str], NamedRelations],
+) -> None:
+    prompt = "East plot, 30 x 80 m, Bintje potatoes; west plot, 30 x 80 m, Sturon onions."
+    assert named_relations(prompt) == {("west_of", "Sturon", ("Bintje",))}
+
+
+def test_members_of_a_counted_list_placed_by_sides_of_scenery() -> None:
+    fields = recipe(
+        "We have two orchards, Gala on the east side of the barn and Conference on the west side."
+    ).fields
+    assert [f.variety for f in fields] == ["Gala", "Conference"]

@@ -143,6 +143,9 @@ def apply_refinements(
                         or _placed_by_scenery(clause)
                     )
                 )
+                # "two groves, Washington Navel on the north side of the packing shed and
+                # Valencia Late ...": a side of the scenery
+                or (clause.link.role == "trailer" and _placed_by_scenery(clause))
             )
         ):
             # "carrots (75 cm ridges, 2 rows per ridge), onions ...": the listed member's
@@ -533,7 +536,15 @@ def _placed_by_scenery(clause: Clause) -> bool:
     return (
         not clause.mentions
         and bool(clause.items)
-        and all(i.role in ("filler", "non_agricultural") for i in clause.items)
+        and (
+            all(i.role in ("filler", "non_agricultural") for i in clause.items)
+            # "of the packing shed": what scenery it is a side of
+            or (
+                clause.items[0].role == "of"
+                and all(i.role in ("of", "filler", "unknown") for i in clause.items)
+                and any("scenery" in i.data for i in clause.items)
+            )
+        )
         and not any(i.norm in PRONOUNS for i in clause.items)
     )
 

@@ -387,6 +387,21 @@ def apply_each_side(clauses: Sequence[Clause]) -> None:
         before = [m for c in clauses[:position] for m in c.mentions]
         if len(before) >= 2 and (before[-1].count or 1) == 1 and not before[-1].refinements:
             before[-1].count = 2
+        elif position:
+            # "3 fields: maize in the middle, potatoes either side of it": a member of a
+            # counted list with room left stands for two of its fields
+            heading = clauses[position - 1].refined_parent
+            member = clauses[position - 1].refinement
+            if (
+                heading is not None
+                and member is not None
+                and has_room(heading)
+                and (member.count or 1) == 1
+                and sum(1 for r in heading.refinements if r is member) == 1
+            ):
+                at = next(i for i, r in enumerate(heading.refinements) if r is member)
+                heading.refinements.insert(at, member)
+                member.count = 2
 
 
 def raise_conflicts(clauses: Sequence[Clause]) -> None:

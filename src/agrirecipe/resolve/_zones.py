@@ -83,6 +83,11 @@ def _patterns() -> tuple[tuple[str, re.Pattern[str]], ...]:
         alternation = "|".join(re.escape(str(w)) for w in words)
         pattern = rf"(?<![a-z0-9])(?:{alternation})(?= (?:{plots})(?![a-z0-9]))"
         patterns.append((str(zone), re.compile(pattern)))
+    for zone, words in data["opening_plots"].items():
+        alternation = "|".join(re.escape(str(w)) for w in words)
+        opening = r"(?:^|(?<=[,.;:!?] ))"
+        pattern = rf"{opening}(?:{alternation})(?= (?:{plots})(?![a-z0-9]))"
+        patterns.append((str(zone), re.compile(pattern)))
     return tuple(patterns)
 
 
