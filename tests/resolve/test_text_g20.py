@@ -197,3 +197,29 @@ def test_members_of_a_counted_list_placed_by_sides_of_scenery() -> None:
         "We have two orchards, Gala on the east side of the barn and Conference on the west side."
     ).fields
     assert [f.variety for f in fields] == ["Gala", "Conference"]
+
+
+def test_a_slip_of_between_still_places_between(
+    named_relations: Callable[[str], NamedRelations],
+) -> None:
+    prompt = (
+        "i want sturon onions betwen two carrot fields, nantes on one side chantenay on the other"
+    )
+    assert named_relations(prompt) == {("between", "Sturon", ("Nantes", "Chantenay"))}
+    assert len(recipe(prompt).fields) == 3
+
+
+def test_a_look_after_two_named_crops_with_a_placement_after_it() -> None:
+    # ("navel oranges" holds its heads in another order than its words)
+    first, second = recipe(
+        "hamlin & navel oranges both ripe, hamlins west of the navels, july"
+    ).fields
+    assert (first.stage, second.stage) == ("Maturation", "Maturation")
+
+
+def test_the_plural_of_the_crop_every_member_grows_describes_them_all() -> None:
+    first, second = recipe(
+        "two vineyard blocks: Pinot Nero on the west, Riesling on the east. Shot in early "
+        "July with the grapes ripening."
+    ).fields
+    assert (first.stage, second.stage) == ("Maturation", "Maturation")

@@ -324,6 +324,17 @@ def merge_coreferences(
                 # "two potato blocks, Bintje ... and Agria ... . Both blocks 36 rows":
                 # every member the list named
                 run = candidates
+            elif (
+                is_definite
+                and len(candidates) >= 2
+                and len(candidates) == len(members)
+                and not names_variety
+                and mention.count is None
+                and all(h.norm.endswith("s") for h in mention.heads if h.role == "head")
+            ):
+                # "two vineyard blocks: Pinot Nero on the west, Chardonnay on the east. ...
+                # with the grapes ripening": the plural of the crop every field grows
+                run = candidates
             elif is_definite or len(candidates) == 1:
                 run = candidates[:1]
             elif bare and len(candidates) == len(members) and not names_variety:

@@ -372,7 +372,8 @@ def attribute_of(item: Item) -> str:
 
 def _bare(clause: Clause, mention: Mention) -> bool:
     words = [i for i in clause.items if i.role != "filler" or i in mention.heads]
-    return bool(words) and words[0] is mention.heads[0] and mention.count is None
+    # (any head first: "navel oranges" holds the heads "oranges" and "navel")
+    return bool(words) and any(words[0] is h for h in mention.heads) and mention.count is None
 
 
 def apply_each_side(clauses: Sequence[Clause]) -> None:
