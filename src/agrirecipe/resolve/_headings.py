@@ -448,11 +448,13 @@ def fill_counted_lists(clauses: Sequence[Clause], mentions: list[Mention]) -> li
         members = list({id(r): r for r in heading.refinements}.values())
         if heading.has_crop or not members or (heading.count or 1) <= len(members):
             continue
+        # (a semicolon goes on with the list: "a 2-acre pear block, ...; and west of it a
+        # 1 acre apple block")
         ends = next(
             (
                 c.index
                 for c in clauses[heading.clause + 1 :]
-                if c.link is not None and c.link.norm in SENTENCE_MARKS
+                if c.link is not None and c.link.norm in SENTENCE_MARKS and c.link.norm != ";"
             ),
             len(clauses),
         )

@@ -112,10 +112,13 @@ def _gapped_of() -> re.Pattern[str]:
     # (areas only: "12 beds of Sturon and 12 of Red Baron" is read as the same beds)
     units = "|".join(re.escape(str(u)) for u in _data()["gapped_area_units"])
     name = r"(?!(?i:and|or|the|a|an|with|then|plus)\b)[A-Za-z][\w'-]*"
+    # ("two hectares of tomatoes and one of onions": numbers said in words too)
+    number = r"(?:\d[\d.,]*|one|two|three|four|five|six|seven|eight|nine|ten|twelve)\b"
     return re.compile(
-        rf"\b(?P<said>\d[\d.,]*)\s+(?P<unit>{units})\s+of\s+{name}(?:\s+{name}){{0,2}}"
+        rf"\b(?P<said>{number})\s+(?P<unit>{units})\s+of\s+{name}(?:\s+{name}){{0,2}}"
         rf"\s*(?:,|;|\band\b|\bwhile\b|\bplus\b)\s*(?:\band\s+)?"
-        rf"(?P<count>\d[\d.,]*)(?=\s+of\s+[A-Za-z])",
+        # (not "one of them": a member of the fields named)
+        rf"(?P<count>{number})(?=\s+of\s+(?!(?:them|these|those|it|which|the)\b)[A-Za-z])",
         re.IGNORECASE,
     )
 

@@ -354,7 +354,9 @@ def same_spacing(intent: FieldIntent, before: FieldIntent, words: Sequence[Item]
     its rows' bearing; '16 rows of the same length': its rows' length."""
     if before.rows is None:
         return intent
-    direction = any(w in i.norm for i in words for w in ("direction", "orientation"))
+    direction = any(
+        w in i.norm for i in words for w in ("direction", "orientation", "bearing", "heading")
+    )
     length = any(w in i.norm for i in words for w in ("length", "long"))
     # "6 beds of 200-ft rows, and the same layout of Sonata": the whole planting again
     layout = any(w in i.norm for i in words for w in ("layout", "spec", "setup", "set up"))

@@ -34,12 +34,21 @@ _NEIGHBOURING = re.compile(
 )
 
 
+# "..., plus an adjacent Agria potato plot": a field said to adjoin the one named before
+_AN_ADJACENT = re.compile(
+    r"(?P<lead>\b(?i:plus|and|with)|,)\s+(?P<article>(?i:an?|one))\s+"
+    r"(?i:adjacent|neighbouring|neighboring|adjoining)\s+(?=[A-Za-z])"
+)
+
+
 def place_neighbouring_plots(text: str) -> str:
     """``text`` with "in two neighbouring blocks" written "in two blocks side by side",
     "Two plots ..., one beside the other: onions ... and carrots" written "..., side by
-    side: ...", and "the polytunnel of cherry tomatoes" written "the plot of cherry
-    tomatoes"."""
+    side: ...", "the polytunnel of cherry tomatoes" written "the plot of cherry
+    tomatoes", and "..., plus an adjacent Agria plot" written "..., plus alongside an Agria
+    plot"."""
     text = _COVERED.sub(lambda m: f"{m.group('article')}plot{m.group('of')}", text)
+    text = _AN_ADJACENT.sub(lambda m: f"{m.group('lead')} alongside {m.group('article')} ", text)
     text = _ONE_BESIDE_THE_OTHER.sub("side by side:", text)
     return _NEIGHBOURING.sub(
         lambda m: f"{m.group('at')} {m.group('count')}{m.group('plots')} side by side", text

@@ -79,6 +79,8 @@ def read_relations(
     """
     relations: list[RelationIntent] = adjacent_rows(clauses, members, trace)
     placed = placements(clauses, members)
+    # the last relation said with a pronoun: (its word, subject, object, kind)
+    parallel: tuple[str, Mention, Mention, str] | None = None
     for position, subject, centre in placement_pairs(clauses, members, placed):
         link = clauses[position].link
         assert link is not None
@@ -324,6 +326,18 @@ def read_relations(
         kind, subject, objects = pairs
         if position in directed and kind == "next_to":
             kind = str(clauses[directed[position]].link.data["value"])  # type: ignore[union-attr]
+        if pronoun and not the_two and len(objects) == 1:
+            word = clause.items[0].norm
+            if (
+                parallel is not None
+                and parallel[0] == word
+                and parallel[1] is objects[0]
+                and _OPPOSITE.get(parallel[3]) == kind
+            ):
+                # "A vineyard with an apple orchard north of it and a pear orchard south of
+                # it": both "it"s are the vineyard (not the orchard named between)
+                objects = (parallel[2],)
+            parallel = (word, subject, objects[0], kind)
         relations.extend(field_relations(kind, subject, objects, members, link, trace))
         if (
             the_two
@@ -376,6 +390,15 @@ _EVERYTHING = frozenset(
 def _of_everything(clause: Clause) -> bool:
     """Whether a relation's clause names every other field ("south of everything")."""
     return not clause.mentions and " ".join(i.norm for i in clause.items) in _EVERYTHING
+
+
+#: The opposite of each compass relation.
+_OPPOSITE = {
+    "north_of": "south_of",
+    "south_of": "north_of",
+    "east_of": "west_of",
+    "west_of": "east_of",
+}
 
 
 def _relation_mentions(

@@ -1,0 +1,83 @@
+"""Text of blind set g21 (issue 8): a counted list going on past a semicolon, crops left
+to chance, areas in words after the first, rows named by a crop word, "it" said twice of
+one field, "the same bearing", slips of "running", ridges measured in inches, and a plot
+said to be adjacent."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import pytest
+
+from agrirecipe import generate
+from agrirecipe.recipe import SceneRecipe
+
+NamedRelations = set[tuple[str, str, tuple[str, ...]]]
+
+
+def recipe(prompt: str) -> SceneRecipe:
+    return generate(prompt, resolver="hybrid").recipe
+
+
+def test_a_counted_list_goes_on_past_a_semicolon() -> None:
+    fields = recipe(
+        "Scan of two orchards: a 2-acre Comice block, 3.5 m rows, with fire blight on a lot of "
+        "the trees; and east of it a 1 acre Gala block on 3.4 m rows."
+    ).fields
+    assert [f.crop for f in fields] == ["Pear", "Apple"]
+
+
+def test_crops_left_to_chance() -> None:
+    fields = recipe("my boss wants 4 random crops, idk").fields
+    assert len(fields) == 4
+
+
+def test_areas_in_words_after_the_first() -> None:
+    tomatoes, onions = recipe("three hectares of tomatoes and two of onions").fields
+    assert (tomatoes.geometry.area_m2, onions.geometry.area_m2) == pytest.approx(
+        (30000, 20000), rel=0.001
+    )
+    # ("one of them": a member of the fields named, no area)
+    (apples,) = recipe("two acres of apples and one of them is scabby").fields
+    assert apples.health == "Ill"
+
+
+def test_rows_named_by_a_crop_word_are_that_crops() -> None:
+    fields = recipe(
+        "strawberries in the middle, a vineyard to the west of them and an apple orchard to "
+        "the east; strawberry beds on 1.5 m centres, vine rows 2.4 m apart, apple rows 3.6 m "
+        "apart"
+    ).fields
+    spacing = {f.crop: f.agronomy.row_spacing_m for f in fields}
+    assert (spacing["Grape"], spacing["Apple"]) == (2.4, 3.6)
+
+
+def test_it_said_twice_is_one_field(named_relations: Callable[[str], NamedRelations]) -> None:
+    relations = named_relations(
+        "A cherry orchard with a pear orchard north of it and an apple orchard south of it"
+    )
+    assert ("north_of", "Pear", ("Cherry",)) in relations
+    assert ("south_of", "Apple", ("Cherry",)) in relations
+
+
+def test_rows_on_the_same_bearing() -> None:
+    maize, wheat = recipe(
+        "two plots next to each other: dent corn in 75 cm rows laid out at 30 degrees from "
+        "north, and spring wheat in 15 cm rows on the same bearing"
+    ).fields
+    assert (round(maize.row_bearing_deg), round(wheat.row_bearing_deg)) == (30, 30)
+
+
+def test_a_slip_of_running_and_ridges_in_inches() -> None:
+    (potatoes,) = recipe("spuds, 30 ridges 75cm apart, rows runing NW-SE").fields
+    assert round(potatoes.row_bearing_deg) == 135
+    (carrots,) = recipe("Nantes carrots on 30 in ridges with 2 rows per ridge").fields
+    assert (carrots.agronomy.row_spacing_m, carrots.agronomy.rows_per_bed) == (0.762, 2)
+
+
+def test_a_plot_said_to_be_adjacent(named_relations: Callable[[str], NamedRelations]) -> None:
+    assert named_relations("Sturon onions, half an acre, plus an adjacent Bintje plot") == {
+        ("next_to", "Sturon", ("Bintje",))
+    }
+    # (an adjacent hedge is scenery, no field)
+    assert len(recipe("a wheat field with an adjacent hedge").fields) == 1
