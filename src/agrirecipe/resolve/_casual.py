@@ -57,6 +57,13 @@ def expand_casual(prompt: str) -> str:
     text = _CAB.sub("cabernet", text)
     text = pattern.sub(replace, text)
     text = lower.sub(lambda match: lower_forms[match.group(0)], text)
+    # "Rows of Boston lettuce a foot apart": one unit, written as a number
+    text = _A_UNIT_APART.sub(r"1 \g<unit>", text)
+    # "near the city of Valencia in Spain": a place's name, not a variety
+    text = _NAMED_PLACE.sub(r"\g<lead>", text)
+    # "top: kordia cherries / middle: bintje / bottom: winter wheat": a slash between
+    # labelled members is a comma
+    text = _SLASH_BEFORE_LABEL.sub(", ", text)
     # "2 carrot fields, one nantes one chantenay": a list of members without commas
     text = _ONE_AFTER_ONE.sub(r"\g<first>, \g<second>", text)
     # "1) Roma tomatoes 2) San Marzano tomatoes": a numbered list's marks are its commas
@@ -122,6 +129,15 @@ _COUNT_OF_THEM = re.compile(
     r"(?P<count>\d+(?:\s+(?i:or|to|-)\s+\d+)?)\s+(?i:of)\s+(?i:them|em|'em)\b\s*"
     r"(?=[.!?;]|$)"
 )
+_A_UNIT_APART = re.compile(
+    r"\b(?i:a|an|one)\s+(?P<unit>(?i:foot|metre|meter|yard|inch))\b"
+    r"(?=\s+(?i:apart|between|wide|spacing|centres|centers|in the row|along the row)\b)"
+)
+_NAMED_PLACE = re.compile(
+    r"(?P<lead>\b(?i:city|town|village|region|province|port|valley) of)\s+[A-Z][\w'-]*"
+    r"(?:\s+[A-Z][\w'-]*)?"
+)
+_SLASH_BEFORE_LABEL = re.compile(r"\s+[/|]\s+(?=[A-Za-z][\w'-]*(?:\s+[A-Za-z][\w'-]*){0,2}\s*:)")
 _UNIT_AND_A_HALF = re.compile(r"\b(?i:an?|one)\s+(?P<unit>(?i:acre|hectare))\s+(?i:and a half)\b")
 _W_FOR_WITH = re.compile(r"(?<=[A-Za-z] )(?i:w)(?= (?:rows?|beds?|ridges?|a|an|the|some|\d)\b)")
 _SETTING_COUNT = re.compile(

@@ -71,6 +71,20 @@ def _placed_first(clauses: Sequence[Clause], clause: Clause) -> bool:
     )
 
 
+def _placed_against_another(clauses: Sequence[Clause], clause: Clause, mention: Mention) -> bool:
+    """Whether the mention is placed against a field of another crop named right after it
+    ("Two veg plots ..., lettuce directly north of the cabbage": one member each)."""
+    following = clauses[clause.index + 1] if clause.index + 1 < len(clauses) else None
+    if following is None or following.link is None or not following.mentions:
+        return False
+    other = strong_crops(following.mentions[0])
+    return (
+        following.link.role in ("relation", "between")
+        and bool(other)
+        and not other & strong_crops(mention)
+    )
+
+
 def _same_modifier(kept: Sequence[Mention], mention: Mention) -> Mention | None:
     """'Valencia in the lower grove and Moro in the upper grove; the upper grove has ...':
     the one field named before with the word that sets this plot apart ("upper")."""
@@ -248,7 +262,11 @@ def merge_coreferences(
             member = placed_again
         host = (
             _counted_host(builder, kept, mention)
-            if (is_definite or _placed_first(clauses, clause))
+            if (
+                is_definite
+                or _placed_first(clauses, clause)
+                or _placed_against_another(clauses, clause, mention)
+            )
             and not summary
             and (first is None or first.norm not in EACH)
             else None
@@ -711,6 +729,13 @@ def _where_it_grows(previous: Mention, mention: Mention) -> bool:
         and (
             (words[0] in ("in", "on") and words[1] in ("a", "an", "one"))
             or _plants_in_a_plot(mention)
+            # "standing in neat rows in a wet field": past words about how they stand
+            or any(
+                words[j] in ("in", "on")
+                and words[j + 1] in ("a", "an", "one")
+                and all(i.role in ("filler", "unknown") for i in mention.items[:j])
+                for j in range(1, min(len(words) - 1, 7))
+            )
         )
     )
 

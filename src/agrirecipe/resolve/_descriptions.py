@@ -96,6 +96,8 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
         )
         if any(i.role == "zone" for i in mention.items):
             continue  # "the vines are on the left and the orange grove on the right": placed
+        if _names_another_crop(clauses, position, mention, others_before):
+            continue  # "Bare vines pruned back ..., and the pear trees ... are bare too"
         if definite and _named_so_before(clauses[:position], mention):
             # "Half the farm is fruit and half is veg, ..., with the fruit on the east side":
             # the field named by that word before, named again
@@ -161,6 +163,19 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
         clause.mentions = []
         dissolved.append(mention.text)
     return dissolved
+
+
+def _names_another_crop(
+    clauses: Sequence[Clause], position: int, mention: Mention, others_before: bool
+) -> bool:
+    """Whether a word for plants that names a crop ("vines") opens the prompt before a
+    field of another crop: a field of its own ("Bare vines pruned back ..., and the pear
+    trees ... are bare too"; not "Russet potatoes, ... vines dying back", the haulm)."""
+    crops = strong_crops(mention)
+    if not crops or others_before:
+        return False
+    following = [strong_crops(m) for c in clauses[position + 1 :] for m in c.mentions][:1]
+    return bool(following) and bool(following[0]) and not crops & following[0]
 
 
 def _dissolve_held_produce(clauses: Sequence[Clause]) -> list[str]:

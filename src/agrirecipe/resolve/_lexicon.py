@@ -352,26 +352,33 @@ class Lexicon:
         # (one word only: "fruit fat" is no misspelt "fruit set")
         long_word = letters >= 9 or (letters == 8 and " " not in text)
         cutoff = 0.77 if long_word else 0.79  # (0.78, 0.8 themselves: float-safe)
-        match = process.extractOne(
+        # (the nearest few, best first: "grand nane" is nearest "grande naine", refused
+        # below for changing the word "grand", and next nearest "grand nain")
+        matches = process.extract(
             text,
             self.fuzzy_choices,
             scorer=DamerauLevenshtein.normalized_similarity,
             score_cutoff=cutoff,
+            limit=3,
         )
-        if match is None:
+        if not matches:
             return None
-        phrase, score = str(match[0]), 100.0 * float(match[1])
+        phrase, score = str(matches[0][0]), 100.0 * float(matches[0][1])
         if text.startswith(phrase) and text[len(phrase) :] in _DERIVING_ENDINGS:
             return None  # "blocky" fruit is a word made from "block", not a misspelt one
-        said, known = text.split(), phrase.split()
-        if len(said) == len(known) and any(
-            a != b and a in everyday_words() and not _doubled(a, b)
-            for a, b in zip(said, known, strict=True)
-        ):
-            # "fire blight on some shoots" is no misspelt "side shoots" ("Red Barron" is
-            # Red Baron: a letter doubled is a typo even of a word of its own)
-            return None
-        return phrase, score, self._fuzzy_senses[phrase]
+        said = text.split()
+        for match in matches:
+            phrase, score = str(match[0]), 100.0 * float(match[1])
+            known = phrase.split()
+            if len(said) == len(known) and any(
+                a != b and a in everyday_words() and not _doubled(a, b)
+                for a, b in zip(said, known, strict=True)
+            ):
+                # "fire blight on some shoots" is no misspelt "side shoots" ("Red Barron"
+                # is Red Baron: a letter doubled is a typo even of a word of its own)
+                continue
+            return phrase, score, self._fuzzy_senses[phrase]
+        return None
 
 
 _DOUBLE = re.compile(r"(.)\1+")

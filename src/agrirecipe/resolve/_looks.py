@@ -53,30 +53,45 @@ def _worn_scenery(items: Sequence[Item], first: Item) -> bool:
     return False
 
 
+def _maker_of(first: Item, second: Item) -> bool:
+    """'Shot on my old Fuji camera': a variety name right before a device names its
+    maker, not a field."""
+    return (
+        first.role == "head"
+        and bool(first.senses_of("variety"))
+        and not first.senses_of("crop")
+        and second.norm in reader_words("devices")
+    )
+
+
 def colours_are_not_crops(items: Sequence[Item], text: str) -> None:
     """'striped yellow-orange with rust', 'olive-green velvety patches': a crop word joined
     by a hyphen to a colour is a colour, not a field (nor an unknown crop). 'an orange
     tractor', 'orange crates': a crop word that is a colour, before scenery, is its colour."""
     for first, second in itertools.pairwise(items):
         if (
-            first.role in ("head", "other_crop", "category")
-            and second.has("scenery")
-            and not second.has("crop", "variety", "plot", "category")
-            and (
-                first.norm in reader_words("colours")
-                # "a grain trailer", "the potato harvester": what the machine carries
-                or any(sense.value == "machines" for sense in second.senses_of("scenery"))
-                # "Fruit research station": what a site or building is for
-                or (
-                    first.has("category")
-                    and not first.has("crop", "variety")
-                    and any(
-                        s.value in ("sites", "buildings", "robots", "purposes")
-                        for s in second.senses_of("scenery")
+            (
+                first.role in ("head", "other_crop", "category")
+                and second.has("scenery")
+                and not second.has("crop", "variety", "plot", "category")
+                and (
+                    first.norm in reader_words("colours")
+                    # "a grain trailer", "the potato harvester": what the machine carries
+                    or any(sense.value == "machines" for sense in second.senses_of("scenery"))
+                    # "Fruit research station": what a site or building is for
+                    or (
+                        first.has("category")
+                        and not first.has("crop", "variety")
+                        and any(
+                            s.value in ("sites", "buildings", "robots", "purposes")
+                            for s in second.senses_of("scenery")
+                        )
                     )
                 )
             )
-        ) or _worn_scenery(items, first):
+            or _worn_scenery(items, first)
+            or _maker_of(first, second)
+        ):
             first.role = "filler"
             first.data["colour"] = True
             continue

@@ -169,9 +169,18 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
             # The member the clause before named ("carrots (75 cm ridges), onions ..."),
             # or all of them ("..., 8 rows each at 76 cm").
             member = clauses[position - 1].refinement
+            members = list({id(m): m for m in refined.refinements}.values())
             if clause.refined_parent is refined and clause.refinement is None:
-                targets = list({id(m): m for m in refined.refinements}.values())
+                targets = members
                 shared_by_list = True
+            elif (
+                any(i.role == "all" for i in refined.items)
+                and member is members[-1]
+                and len(members) >= (refined.count or 2)
+            ):
+                # "Both our fields, the tomatoes and the capsicum, have some disease": the
+                # heading said "both" of the members listed after it
+                targets = members
             else:
                 targets = [member or refined.refinements[-1]]
         elif clause.link is not None and clause.link.norm == "also" and before:

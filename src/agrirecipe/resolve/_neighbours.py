@@ -34,6 +34,12 @@ _NEIGHBOURING = re.compile(
 )
 
 
+# "Padrón peppers on one bed and Jalapeños on the next": two plots side by side
+_ONE_AND_THE_NEXT = re.compile(
+    r"\s+(?i:on|in) (?i:one) (?P<noun>(?i:bed|row|ridge|strip|plot|block|bench|bay))\s+"
+    r"(?i:and|&)\s+(?P<b>[A-Za-z][^,;.:!?]*?)\s+(?i:on|in) (?i:the) (?i:next|other)"
+    r"(?:\s+(?i:one|(?P=noun)))?\b"
+)
 # "..., plus an adjacent Agria potato plot": a field said to adjoin the one named before
 _AN_ADJACENT = re.compile(
     r"(?P<lead>\b(?i:plus|and|with)|,)\s+(?P<article>(?i:an?|one))\s+"
@@ -46,8 +52,10 @@ def place_neighbouring_plots(text: str) -> str:
     "Two plots ..., one beside the other: onions ... and carrots" written "..., side by
     side: ...", "the polytunnel of cherry tomatoes" written "the plot of cherry
     tomatoes", and "..., plus an adjacent Agria plot" written "..., plus alongside an Agria
-    plot"."""
+    plot"; "Padrón on one bed and Jalapeños on the next" is "Padrón and Jalapeños side
+    by side"."""
     text = _COVERED.sub(lambda m: f"{m.group('article')}plot{m.group('of')}", text)
+    text = _ONE_AND_THE_NEXT.sub(r" and \g<b> side by side", text)
     text = _AN_ADJACENT.sub(lambda m: f"{m.group('lead')} alongside {m.group('article')} ", text)
     text = _ONE_BESIDE_THE_OTHER.sub("side by side:", text)
     return _NEIGHBOURING.sub(

@@ -81,6 +81,9 @@ def read_relations(
     placed = placements(clauses, members)
     # the last relation said with a pronoun: (its word, subject, object, kind)
     parallel: tuple[str, Mention, Mention, str] | None = None
+    # relations read between mentions, and those said "on the other side of" a field
+    read: list[tuple[str, Mention, tuple[Mention, ...]]] = []
+    beyond: list[tuple[Mention, Mention, Item]] = []
     for position, subject, centre in placement_pairs(clauses, members, placed):
         link = clauses[position].link
         assert link is not None
@@ -339,6 +342,9 @@ def read_relations(
                 objects = (parallel[2],)
             parallel = (word, subject, objects[0], kind)
         relations.extend(field_relations(kind, subject, objects, members, link, trace))
+        read.append((kind, subject, objects))
+        if kind == "next_to" and len(objects) == 1 and link.norm in _OTHER_SIDE:
+            beyond.append((subject, objects[0], link))
         if (
             the_two
             and kind != "between"
@@ -348,6 +354,7 @@ def read_relations(
         ):
             # "Padron on the west side, Cayenne on the east side, and corn south of both"
             relations.extend(field_relations(kind, subject, (before[-3],), members, link, trace))
+    relations += _on_the_other_side(beyond, read, members, trace)
     relations += across_landmarks(landmarks, members, trace)
     related = {frozenset((r.subject, *r.objects)) for r in relations if len(r.objects) == 1}
     relations += then_chain(clauses, members, related, trace)
@@ -390,6 +397,33 @@ _EVERYTHING = frozenset(
 def _of_everything(clause: Clause) -> bool:
     """Whether a relation's clause names every other field ("south of everything")."""
     return not clause.mentions and " ".join(i.norm for i in clause.items) in _EVERYTHING
+
+
+#: Words that put a field on the far side of another from a third.
+_OTHER_SIDE = frozenset(
+    {"on the other side of", "the other side of", "on the far side of", "the far side of"}
+)
+
+
+def _on_the_other_side(
+    beyond: Sequence[tuple[Mention, Mention, Item]],
+    said: Sequence[tuple[str, Mention, tuple[Mention, ...]]],
+    members: dict[int, list[int]],
+    trace: list[TraceStep],
+) -> list[RelationIntent]:
+    """'a strip of dinkel beside it (the potatoes), and on the other side of the dinkel a
+    cabbage plot': the dinkel lies between the potatoes and the cabbages."""
+    relations: list[RelationIntent] = []
+    for far, middle, link in beyond:
+        for kind, subject, objects in said:
+            pair = (subject, *objects)
+            if kind != "next_to" or len(pair) != 2 or far in pair:
+                continue
+            if middle is subject or middle is objects[0]:
+                near = objects[0] if middle is subject else subject
+                relations += field_relations("between", middle, (near, far), members, link, trace)
+                break
+    return relations
 
 
 #: The opposite of each compass relation.

@@ -30,6 +30,8 @@ each decides what a word is in its place, where the lexicon alone cannot:
 4   a stage word or cue after a negation says nothing     "not in ear yet"
 4a  a look of weather on the plants is no disease         "dusted with snow"
 5   "all" before a plain word stresses it                 "all green and even"
+5a  "each" after a count of rows, before a length, is     "30 rows at 75 cm, each
+    each row                                              200 m long"
 5b  "every field" says something of every field           "each plot gets a headland"
 6   plots a list of crops is grown in are its own fields  "A and B in 2 plots"
 7   a plot word inside an unknown phrase is no field      "compare planting systems"
@@ -87,6 +89,7 @@ def read_words(items: Sequence[Item], text: str) -> None:
     negated_looks(items)
     weather_on_plants(items)
     _all_as_intensifier(items)
+    _each_row(items)
     _every_plot(items)
     _plots_of_a_list(items)
     _plot_words_of_other_things(items)
@@ -468,6 +471,22 @@ def _all_as_intensifier(items: Sequence[Item]) -> None:
             item.role = "filler"
 
 
+def _each_row(items: Sequence[Item]) -> None:
+    """'30 rows at 75 cm, each 200 m long': "each" right after a count of rows, before a
+    measure, is each of those rows, not each field."""
+    for before, comma, each, after in zip(items, items[1:], items[2:], items[3:], strict=False):
+        if (
+            each.role == "all"
+            and each.norm == "each"
+            and comma.norm == ","
+            and before.role == "geometry"
+            and any(m.key in ("rows", "beds") for m in before.data["geometry"])
+            and after.role == "geometry"
+            and all(m.key == "row_length_m" for m in after.data["geometry"])
+        ):
+            each.role = "filler"
+
+
 def _every_plot(items: Sequence[Item]) -> None:
     """'Blight has hit every field - the potatoes, ...', 'each plot gets a 4 m headland',
     'all the strips are 50 m': "every"/"each" before one plot word, or "all (the)" before
@@ -501,11 +520,15 @@ def _every_plot(items: Sequence[Item]) -> None:
 
 
 def _plot_numbers_are_names(items: Sequence[Item]) -> None:
-    """'in plot 2', 'Field 4 is ...': a number right after one plot names it, it does
-    not count fields (a count comes before its noun)."""
+    """'in plot 2', 'Field 4 is ...', 'row 6 of the Lapins': a number right after one
+    plot (or row) names it, it does not count fields (a count comes before its noun)."""
     for index, (item, number) in enumerate(itertools.pairwise(items)):
         spec = item.data.get("value") if item.role == "plot" else None
-        structure = item.norm in ("tunnel", "polytunnel", "greenhouse", "glasshouse", "house")
+        # ("row 6 of the Sweetheart": one row, named)
+        structure = item.norm in (
+            *("tunnel", "polytunnel", "greenhouse", "glasshouse", "house"),
+            *("row", "bed", "ridge", "bay", "span"),
+        )
         if (
             not (isinstance(spec, dict) or structure)
             or (isinstance(spec, dict) and spec.get("plural"))
@@ -592,7 +615,28 @@ def _plot_words_of_other_things(items: Sequence[Item]) -> None:
             item.role = "filler"
             if earlier is not None and earlier.role == "unknown":
                 earlier.role = "filler"
+        elif (
+            named
+            and item.role == "plot"
+            and item.norm in ("patch", "patches")
+            and _where(items[index + 1 : index + 6])
+        ):
+            # "a carrot field ..., but there's a patch in the middle where the leaves have
+            # gone brown": a part of the field, said by what shows there
+            item.role = "filler"
+            if earlier is not None and earlier.role == "number":
+                earlier.role = "filler"
         named = named or item.role in ("head", "plot", "category")
+
+
+def _where(after: Sequence[Item]) -> bool:
+    """Whether "where" follows within a few words that name no field."""
+    for item in after:
+        if item.norm == "where":
+            return True
+        if item.role in ("head", "plot", "category", "separator"):
+            return False
+    return False
 
 
 def _plots_of_a_list(items: Sequence[Item]) -> None:
