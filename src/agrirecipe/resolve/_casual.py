@@ -57,6 +57,11 @@ def expand_casual(prompt: str) -> str:
     text = _CAB.sub("cabernet", text)
     text = pattern.sub(replace, text)
     text = lower.sub(lambda match: lower_forms[match.group(0)], text)
+    # "strawbery beds pls, 6 of them": a "please" before a mark says nothing ("beds, 6 of
+    # them" counts the beds)
+    text = _PLEASE_BEFORE_MARK.sub("", text)
+    # "corn and wheat and potatoes so 3 fields": the count of the list, after "so"
+    text = _SO_COUNT.sub(", so ", text)
     # "Rows of Boston lettuce a foot apart": one unit, written as a number
     text = _A_UNIT_APART.sub(r"1 \g<unit>", text)
     # "near the city of Valencia in Spain": a place's name, not a variety
@@ -128,6 +133,11 @@ _COUNT_OF_THEM = re.compile(
     # (ending the sentence: "the plots, 3 of them, wheat, maize and potatoes" is a list)
     r"(?P<count>\d+(?:\s+(?i:or|to|-)\s+\d+)?)\s+(?i:of)\s+(?i:them|em|'em)\b\s*"
     r"(?=[.!?;]|$)"
+)
+_PLEASE_BEFORE_MARK = re.compile(r"\s+(?i:please|pls|plz|plss|thx|thanks)(?=\s*[,;:])")
+_SO_COUNT = re.compile(
+    r"(?<![,;:.])\s+(?i:so)\s+(?=(?:\d+|(?i:two|three|four|five|six|seven|eight|nine|ten))\s+"
+    r"(?i:fields|plots|blocks|strips|crops|paddocks)\b)"
 )
 _A_UNIT_APART = re.compile(
     r"\b(?i:a|an|one)\s+(?P<unit>(?i:foot|metre|meter|yard|inch))\b"
