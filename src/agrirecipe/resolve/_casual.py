@@ -62,6 +62,9 @@ def expand_casual(prompt: str) -> str:
     text = _PLEASE_BEFORE_MARK.sub("", text)
     # "corn and wheat and potatoes so 3 fields": the count of the list, after "so"
     text = _SO_COUNT.sub(", so ", text)
+    # "forty acres of wheat": a measure in words of tens, written in digits (not "the
+    # back forty", a field's name)
+    text = _TENS_BEFORE_A_UNIT.sub(_tens_in_digits, text)
     # "Rows of Boston lettuce a foot apart": one unit, written as a number
     text = _A_UNIT_APART.sub(r"1 \g<unit>", text)
     # "near the city of Valencia in Spain": a place's name, not a variety
@@ -134,6 +137,41 @@ _COUNT_OF_THEM = re.compile(
     r"(?P<count>\d+(?:\s+(?i:or|to|-)\s+\d+)?)\s+(?i:of)\s+(?i:them|em|'em)\b\s*"
     r"(?=[.!?;]|$)"
 )
+_TENS = {
+    "twenty": 20,
+    "thirty": 30,
+    "forty": 40,
+    "fifty": 50,
+    "sixty": 60,
+    "seventy": 70,
+    "eighty": 80,
+    "ninety": 90,
+}
+_UNITS = {
+    "one": 1,
+    "two": 2,
+    "three": 3,
+    "four": 4,
+    "five": 5,
+    "six": 6,
+    "seven": 7,
+    "eight": 8,
+    "nine": 9,
+}
+_TENS_BEFORE_A_UNIT = re.compile(
+    r"\b(?P<tens>(?i:twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety))"
+    r"(?:[\s-]+(?P<units>(?i:one|two|three|four|five|six|seven|eight|nine)))?\s+"
+    r"(?=(?i:acres?|hectares?|ha|metres?|meters?|m|feet|foot|ft|yards?|yds?|cm|inches|in|rows?|"
+    r"trees|vines|plants|beds|ridges)\b)"
+)
+
+
+def _tens_in_digits(match: re.Match[str]) -> str:
+    units = match.group("units")
+    value = _TENS[match.group("tens").lower()] + (_UNITS[units.lower()] if units else 0)
+    return f"{value} "
+
+
 _PLEASE_BEFORE_MARK = re.compile(r"\s+(?i:please|pls|plz|plss|thx|thanks)(?=\s*[,;:])")
 _SO_COUNT = re.compile(
     r"(?<![,;:.])\s+(?i:so)\s+(?=(?:\d+|(?i:two|three|four|five|six|seven|eight|nine|ten))\s+"

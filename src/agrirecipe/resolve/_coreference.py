@@ -534,7 +534,11 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
                 or (i.role == "head" and i.norm in descriptive_words())
                 for i in clause.items
             )
-            and any(i.role == "size" for i in clause.items)
+            # ("Regina cherries, one block up on the hill, ...": a plot where it grows)
+            and (
+                any(i.role == "size" for i in clause.items)
+                or any(i.role == "filler" and i.scenery for i in clause.items)
+            )
         ):
             previous.items.extend(i for i in mention.items if i.role == "size")
             if previous.plot is None:

@@ -6,9 +6,9 @@ each decides what a word is in its place, where the lexicon alone cannot:
 ==  ====================================================  ===========================
 #   pass                                                  example
 ==  ====================================================  ===========================
-1   a number with a length unit, a rootstock's name, one  "3.5 m in the pears",
-    plant every so far, a count of scenery or of fruit:   "one carrot every 2 cm",
-    not a count of fields                                 "lots of fruit"
+1   a number with a length unit, a rootstock's name, a    "3.5 m in the pears",
+    year, one plant every so far, a count of scenery or   "one carrot every 2 cm",
+    of fruit: not a count of fields                       "plan for 2027"
 1a  "one" after "this" or "that" counts nothing, and      "Two fields in this one",
     an article before a farm is the farm's                "A mixed farm with ..."
 1b  "twin" of no rows; a compound such as "Crop-row" or   "Citrus twin"
@@ -99,6 +99,10 @@ def read_words(items: Sequence[Item], text: str) -> None:
     _respective_sizes(items)
 
 
+#: Words before and after a number that make it a year ("plan for 2027", "2026 season").
+_BEFORE_A_YEAR = frozenset({"in", "for", "since", "from", "until", "plan", "year"})
+_AFTER_A_YEAR = frozenset({"season", "seasons", "crop", "harvest", "plan", "plans", "growing"})
+
 #: Scenery groups whose words name what a request is for ("a blight detection dataset").
 _PURPOSES = frozenset({"robots", "purposes"})
 
@@ -121,6 +125,19 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
             and (after is None or after.role not in ("plot", "head", "weak_variety", "category"))
         ):
             item.role = "filler"  # "on Gisela 6": a rootstock's or machine's name
+    # "Carrot plan for 2027", "the 2026 season": a year, no count of fields
+    for index, item in enumerate(items):
+        word_before = items[index - 1].norm if index else ""
+        word_after = items[index + 1].norm if index + 1 < len(items) else ""
+        if (
+            item.role == "number"
+            and item.raw.isdigit()
+            and len(item.raw) == 4
+            and 1900 <= int(item.raw) <= 2100
+            and (word_before in _BEFORE_A_YEAR or word_after in _AFTER_A_YEAR)
+        ):
+            item.role = "filler"
+            item.data["year"] = True
     # "just a couple of leaves per plant": leaves on each plant, no count of fields
     for index, item in enumerate(items):
         if item.role == "plot" and index and items[index - 1].norm in ("per", "each", "a"):
