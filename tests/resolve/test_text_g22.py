@@ -1,13 +1,18 @@
 """Text of blind set g22 (issue 8): a "please" before a count of the beds just named,
 yards written "yds", the count of a list said after "so", sizes in words of tens, years,
-and a plot said after its crop with where it is."""
+a plot said after its crop with where it is, inches before a placement, hyperspectral
+cameras, and open-field plots."""
 
 from __future__ import annotations
+
+from collections.abc import Callable
 
 import pytest
 
 from agrirecipe import generate
 from agrirecipe.recipe import SceneRecipe
+
+NamedRelations = set[tuple[str, str, tuple[str, ...]]]
 
 
 def recipe(prompt: str) -> SceneRecipe:
@@ -46,3 +51,19 @@ def test_a_year_is_no_count() -> None:
 def test_a_plot_said_after_its_crop_with_where_it_is() -> None:
     (cherries,) = recipe("Kordia cherries, one block up on the hill, the trees in blossom.").fields
     assert cherries.crop == "Cherry"
+
+
+def test_engineering_words_of_g22(named_relations: Callable[[str], NamedRelations]) -> None:
+    # "12 rows at 30 in" before a placement: inches, not 30 fields
+    _cabbage, corn = recipe(
+        "a cabbage plot, 20 rows at 30 in, and a corn block of 12 rows at 30 in just west of "
+        "the cabbage"
+    ).fields
+    assert (corn.row_count, corn.agronomy.row_spacing_m) == (12, 0.762)
+    # a hyperspectral camera is scenery
+    assert len(recipe("two 20 x 20 m lettuce plots for hyperspectral camera tests").fields) == 2
+    # "open-field plots" are plots grown outdoors, not another field
+    relations = named_relations(
+        "Roma and San Marzano tomatoes in two open-field plots, the Roma south of the San Marzano"
+    )
+    assert relations == {("south_of", "Roma", ("San Marzano",))}

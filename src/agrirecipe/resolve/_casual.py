@@ -62,6 +62,8 @@ def expand_casual(prompt: str) -> str:
     text = _PLEASE_BEFORE_MARK.sub("", text)
     # "corn and wheat and potatoes so 3 fields": the count of the list, after "so"
     text = _SO_COUNT.sub(", so ", text)
+    # "in two open-field plots": how the plots are grown, not a field of its own
+    text = _OPEN_FIELD_PLOTS.sub("outdoor ", text)
     # "forty acres of wheat": a measure in words of tens, written in digits (not "the
     # back forty", a field's name)
     text = _TENS_BEFORE_A_UNIT.sub(_tens_in_digits, text)
@@ -136,6 +138,9 @@ _COUNT_OF_THEM = re.compile(
     # (ending the sentence: "the plots, 3 of them, wheat, maize and potatoes" is a list)
     r"(?P<count>\d+(?:\s+(?i:or|to|-)\s+\d+)?)\s+(?i:of)\s+(?i:them|em|'em)\b\s*"
     r"(?=[.!?;]|$)"
+)
+_OPEN_FIELD_PLOTS = re.compile(
+    r"\b(?i:open)[\s-]+(?i:field)\s+(?=(?i:plots?|blocks?|strips?|beds?|trials?)\b)"
 )
 _TENS = {
     "twenty": 20,
