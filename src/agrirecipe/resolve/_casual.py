@@ -17,6 +17,7 @@ from typing import Any
 
 import yaml
 
+from agrirecipe.resolve._geometry import number_words
 from agrirecipe.resolve._lexicon import DATA_DIR, Item
 
 __all__ = ["count_said_after_crop", "expand_casual"]
@@ -142,27 +143,6 @@ _COUNT_OF_THEM = re.compile(
 _OPEN_FIELD_PLOTS = re.compile(
     r"\b(?i:open)[\s-]+(?i:field)\s+(?=(?i:plots?|blocks?|strips?|beds?|trials?)\b)"
 )
-_TENS = {
-    "twenty": 20,
-    "thirty": 30,
-    "forty": 40,
-    "fifty": 50,
-    "sixty": 60,
-    "seventy": 70,
-    "eighty": 80,
-    "ninety": 90,
-}
-_UNITS = {
-    "one": 1,
-    "two": 2,
-    "three": 3,
-    "four": 4,
-    "five": 5,
-    "six": 6,
-    "seven": 7,
-    "eight": 8,
-    "nine": 9,
-}
 _TENS_BEFORE_A_UNIT = re.compile(
     r"\b(?P<tens>(?i:twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety))"
     r"(?:[\s-]+(?P<units>(?i:one|two|three|four|five|six|seven|eight|nine)))?\s+"
@@ -172,9 +152,11 @@ _TENS_BEFORE_A_UNIT = re.compile(
 
 
 def _tens_in_digits(match: re.Match[str]) -> str:
+    """ "forty" -> "40 ", "thirty-five" -> "35 " (the words' values from geometry.yaml)."""
+    words = number_words()
     units = match.group("units")
-    value = _TENS[match.group("tens").lower()] + (_UNITS[units.lower()] if units else 0)
-    return f"{value} "
+    value = words[match.group("tens").lower()] + (words[units.lower()] if units else 0)
+    return f"{value:g} "
 
 
 _PLEASE_BEFORE_MARK = re.compile(r"\s+(?i:please|pls|plz|plss|thx|thanks)(?=\s*[,;:])")

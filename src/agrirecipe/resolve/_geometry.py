@@ -108,6 +108,11 @@ class _Tables:
     unused: tuple[re.Pattern[str], ...] = ()
 
 
+def number_words() -> dict[str, float]:
+    """Numbers said in words ("twelve", "forty"), from geometry.yaml."""
+    return _tables().number_words
+
+
 @functools.lru_cache(maxsize=1)
 def _tables() -> _Tables:
     data = _file()
