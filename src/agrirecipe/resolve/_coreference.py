@@ -14,6 +14,7 @@ import itertools
 from collections.abc import Sequence
 
 from agrirecipe.resolve._decompose import Clause, Mention, MentionBuilder
+from agrirecipe.resolve._descriptions import said_with_a_verb
 from agrirecipe.resolve._lexicon import reader_words
 from agrirecipe.resolve._links import ARTICLES, coordinated
 from agrirecipe.resolve._structure import (
@@ -177,6 +178,15 @@ def merge_coreferences(
             # "; cabbage and potato rows 75 cm apart": a list of fields named again
             # ("apples to the north and pears to the south": past the placement)
             or (clause.link.role == "conjunction" and _last_named(clauses, clause) in merged)
+            # "the Royal Gala block ... and some apples have brown corky patches": the
+            # crop of a field named before, said with a verb that describes it
+            or (
+                clause.link.role == "conjunction"
+                and mention.count is None
+                and mention.plot is None
+                and not names_a_variety(mention)
+                and said_with_a_verb(clause, mention)
+            )
         )
         summary = _is_summary(mention) or (
             # "the peppers between the two tomato strips": fields of a crop named before
@@ -733,12 +743,17 @@ def _where_it_grows(previous: Mention, mention: Mention) -> bool:
         and (
             (words[0] in ("in", "on") and words[1] in ("a", "an", "one"))
             or _plants_in_a_plot(mention)
-            # "standing in neat rows in a wet field": past words about how they stand
+            # "standing in neat rows in a wet field": past words about how they stand;
+            # "It's for a robot navigation test in a plantation": past what it is for
             or any(
                 words[j] in ("in", "on")
                 and words[j + 1] in ("a", "an", "one")
-                and all(i.role in ("filler", "unknown") for i in mention.items[:j])
-                for j in range(1, min(len(words) - 1, 7))
+                and all(
+                    i.role in ("filler", "unknown")
+                    or (i.role in ("of", "non_agricultural") and i.norm != "of")
+                    for i in mention.items[:j]
+                )
+                for j in range(1, min(len(words) - 1, 9))
             )
         )
     )

@@ -23,7 +23,7 @@ from agrirecipe.resolve._structure import (
     strong_crops,
 )
 
-__all__ = ["dissolve_plant_parts"]
+__all__ = ["dissolve_plant_parts", "said_with_a_verb"]
 
 
 def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
@@ -74,7 +74,7 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
             for i in mention.items
         )
         # "a few plants have fallen over": a verb says what the plants do or look like
-        predicate = _predicate(clause, mention)
+        predicate = said_with_a_verb(clause, mention)
         # "one plant has wilted leaves": one plant described, not a field of one;
         # "a ladder leaning against one tree": one plant of the fields named
         one_described = mention.count == 1 and (
@@ -98,6 +98,8 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
             continue  # "the vines are on the left and the orange grove on the right": placed
         if _names_another_crop(clauses, position, mention, others_before):
             continue  # "Bare vines pruned back ..., and the pear trees ... are bare too"
+        if definite and not predicate and _placed_crop_of_its_own(clauses, position, mention):
+            continue  # "pear trees beyond them and the vines on the hill": the grapes
         if definite and _named_so_before(clauses[:position], mention):
             # "Half the farm is fruit and half is veg, ..., with the fruit on the east side":
             # the field named by that word before, named again
@@ -176,6 +178,29 @@ def _names_another_crop(
         return False
     following = [strong_crops(m) for c in clauses[position + 1 :] for m in c.mentions][:1]
     return bool(following) and bool(following[0]) and not crops & following[0]
+
+
+#: Words that open a place after a word for plants ("the vines on the hill").
+_PLACING = frozenset({"on", "in", "at", "along", "up", "down", "across", "over", "by", "beyond"})
+
+
+def _placed_crop_of_its_own(clauses: Sequence[Clause], position: int, mention: Mention) -> bool:
+    """Whether "and the vines on the hill" (a word for plants that names a crop, joined by
+    "and" and put in a place of its own) follows fields that all name other crops: a field
+    of that crop ("apple trees nearest, pear trees beyond them and the vines on the hill";
+    not "the Riesling ..., and the vines are bare", nor "tomatoes and the vines heavy")."""
+    clause = clauses[position]
+    crops = strong_crops(mention)
+    earlier = [strong_crops(m) for c in clauses[:position] for m in c.mentions]
+    head = max(h.end for h in mention.heads)
+    return (
+        clause.link is not None
+        and clause.link.role == "conjunction"
+        and bool(crops)
+        and bool(earlier)
+        and all(e and not e & crops for e in earlier)
+        and any(i.start >= head and i.norm in _PLACING for i in mention.items)
+    )
 
 
 def _dissolve_held_produce(clauses: Sequence[Clause]) -> list[str]:
@@ -402,7 +427,7 @@ def _ends_with_of(owner: Mention) -> bool:
     )
 
 
-def _predicate(clause: Clause, mention: Mention) -> bool:
+def said_with_a_verb(clause: Clause, mention: Mention) -> bool:
     """Whether a describing verb follows the mention's head in its clause."""
     head = max(h.end for h in mention.heads)
     verbs = _describing_verbs()

@@ -212,22 +212,32 @@ def _heads_counted_plots(clauses: Sequence[Clause], mention: Mention) -> bool:
     )
 
 
-def drop_joint_headings(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
+def drop_joint_headings(
+    clauses: Sequence[Clause], mentions: list[Mention], crop_categories: dict[str, str]
+) -> list[Mention]:
     """'Carrot variety strips plus a lettuce strip ..., north to south: Imperator, then
     Danvers, then Bibb lettuce': two or more crops named before a colon, each as many
     times as the list after it names fields of that crop, head that list together; they
-    are dropped before the members are read as those crops named again. Return the
-    fields left."""
-    headings = _joint_headings(clauses, mentions)
+    are dropped before the members are read as those crops named again. So do kinds
+    ("fruit and veg plots: an apple plot and a carrot plot", "grain and veg test strips -
+    a corn strip ... and a spud strip"). Return the fields left."""
+    headings = _joint_headings(clauses, mentions, crop_categories)
     for heading in headings:
         clause = clauses[heading.clause]
         clause.mentions = [m for m in clause.mentions if m is not heading]
     return [m for m in mentions if not any(m is h for h in headings)]
 
 
-def _joint_headings(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list[Mention]:
+def _joint_headings(
+    clauses: Sequence[Clause], mentions: Sequence[Mention], crop_categories: dict[str, str]
+) -> list[Mention]:
+    def kinds(mention: Mention) -> set[str]:
+        if mention.category is not None and not mention.has_crop:
+            return {c for c, k in crop_categories.items() if k == mention.category}
+        return strong_crops(mention)
+
     for colon in clauses:
-        if colon.link is None or colon.link.norm != ":":
+        if colon.link is None or colon.link.norm not in (":", "-", "–", "—"):
             continue
         start = colon.index
         while start > 0 and not _ends_sentence(clauses[start]):
@@ -238,9 +248,11 @@ def _joint_headings(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> l
         before = [m for m in mentions if start <= m.clause < colon.index]
         after = [m for m in mentions if colon.index <= m.clause < end]
         if len(before) < 2 or not all(
-            strong_crops(m) and not names_a_variety(m) and not m.refinements for m in before
+            kinds(m) and not names_a_variety(m) and not m.refinements for m in before
         ):
             continue
+        if colon.link.norm != ":" and any(m.category is None for m in before):
+            continue  # (a dash heads a list of kinds only)
         owners: dict[int, int] = {}
         seen: list[Mention] = []
         for member in after:
@@ -249,7 +261,7 @@ def _joint_headings(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> l
             if any(same_variety(earlier, member) for earlier in seen):
                 continue
             seen.append(member)
-            fitting = [h for h in before if strong_crops(member) <= strong_crops(h)]
+            fitting = [h for h in before if strong_crops(member) <= kinds(h)]
             if len(fitting) != 1 or not strong_crops(member):
                 break
             owners[id(fitting[0])] = owners.get(id(fitting[0]), 0) + (member.count or 1)
@@ -257,6 +269,8 @@ def _joint_headings(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> l
             if all(
                 owners.get(id(h), 0) == (h.count or 1)
                 or (h.implied_count and owners.get(id(h), 0) >= 1)
+                # ("fruit and veg plots: ...": a kind heads as many fields as it lists)
+                or (h.category is not None and h.count is None and owners.get(id(h), 0) >= 1)
                 for h in before
             ):
                 return list(before)
@@ -308,8 +322,8 @@ def drop_titles(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Ment
     """'Bananas from my trip to Tenerife! A plantation of banana plants behind an old
     stone wall, ...': a crop named alone, with no plot or count, in a first sentence of
     its own (or before a colon: "salad dataset: two lettuce plots, ..."), then one field of
-    that crop in the next, is that field's title. Its words go to the field. Return the
-    fields left."""
+    that crop in the next (or one plot listing fields of only that crop), is that field's
+    title. Its words go to the field. Return the fields left."""
     if len(mentions) < 2:
         return mentions
     title, field = mentions[0], mentions[1]
@@ -320,7 +334,7 @@ def drop_titles(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Ment
         or title.count is not None
         or title.refinements
         or names_a_variety(title)
-        or strong_crops(field) != crops
+        or not (strong_crops(field) == crops or _lists_only(field, crops))
         or any(strong_crops(m) & crops for m in mentions[2:])
     ):
         return mentions
@@ -352,6 +366,16 @@ def drop_titles(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Ment
     for clause in clauses:
         clause.mentions = [field if m is title else m for m in clause.mentions]
     return mentions[1:]
+
+
+def _lists_only(heading: Mention, crops: set[str]) -> bool:
+    """Whether ``heading`` is a plot of no crop listing fields of only ``crops`` ("Potato
+    variety trial for the robot. Four plots ...: Bintje, Fontane, Agria, ...")."""
+    return (
+        not heading.has_crop
+        and len(heading.refinements) >= 2
+        and all(strong_crops(r) and strong_crops(r) <= crops for r in heading.refinements)
+    )
 
 
 #: Attributes a summary said before its fields gives each of them.

@@ -284,8 +284,15 @@ def following_list(
     clause), then each joined to it by a comma, "and" or "then", up to a full stop or
     any other link."""
     group: list[Mention] = list(first)
+    bracket = False
     for index in range(position + 1, len(clauses)):
         clause = clauses[index]
+        link = clause.link.norm if clause.link is not None else None
+        if group and not clause.mentions and (bracket or link in ("(", ")")):
+            # "a tomato strip (6 rows, 1.5 m apart), then ...": what a bracket says of
+            # the member before it
+            bracket = link != ")"
+            continue
         if group and not listing(clause.link):
             if not clause.mentions and all(i.role == "filler" for i in clause.items):
                 continue  # "potatoes closest to me, then the wheat": placed by the viewer
@@ -293,7 +300,8 @@ def following_list(
         if (
             not group
             and clause.link is not None
-            and clause.link.norm not in (":", ",")
+            # ("heading north you cross a hedge, then the strawberry beds, then ...")
+            and clause.link.norm not in (":", ",", "then")
             and (clause.mentions or clause.link.role not in ("separator", "conjunction"))
         ):
             break

@@ -68,7 +68,8 @@ def colours_are_not_crops(items: Sequence[Item], text: str) -> None:
     """'striped yellow-orange with rust', 'olive-green velvety patches': a crop word joined
     by a hyphen to a colour is a colour, not a field (nor an unknown crop). 'an orange
     tractor', 'orange crates': a crop word that is a colour, before scenery, is its colour."""
-    for first, second in itertools.pairwise(items):
+    for index, (first, second) in enumerate(itertools.pairwise(items)):
+        third = items[index + 2] if index + 2 < len(items) else None
         if (
             (
                 first.role in ("head", "other_crop", "category")
@@ -85,6 +86,13 @@ def colours_are_not_crops(items: Sequence[Item], text: str) -> None:
                         and any(
                             s.value in ("sites", "buildings", "robots", "purposes")
                             for s in second.senses_of("scenery")
+                        )
+                        # (not "grain and veg test strips": plots of the kinds listed)
+                        and not (
+                            third is not None
+                            and third.role == "plot"
+                            and index > 0
+                            and items[index - 1].role == "conjunction"
                         )
                     )
                 )

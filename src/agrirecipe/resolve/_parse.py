@@ -255,7 +255,9 @@ class PromptReader(FieldReading):
         share_trailing_attributes(clauses)
         mentions = apply_refinements(clauses, self.crop_categories, builder)
         mentions = share_counted_fields(mentions)
-        mentions = drop_forward_summaries(clauses, drop_joint_headings(clauses, mentions))
+        mentions = drop_forward_summaries(
+            clauses, drop_joint_headings(clauses, mentions, self.crop_categories)
+        )
         mentions = merge_coreferences(clauses, mentions, builder)
         mentions = merge_appositive_plots(clauses, mentions)
         mentions = drop_list_headings(clauses, mentions)

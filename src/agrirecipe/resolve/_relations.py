@@ -28,6 +28,7 @@ from agrirecipe.resolve._links import (
     THE_TWO,
     coordinated,
     field_relations,
+    following_list,
     last_named,
     listed_after,
     own_mentions,
@@ -148,6 +149,13 @@ def read_relations(
             and _not_placed(clauses[position - 1])
             # (not "in two polytunnels next to each other: tunnel 1 is Elsanta, ...")
             and not (link.role == "trailer" and len(listed_after(clauses, position)) >= 2)
+            # (nor "From the road heading north you cross a hedge, then the strawberry
+            # beds, then the apple orchard": the fields in a row, from the road)
+            and not (
+                link.role == "trailer"
+                and str(link.data.get("value")) in TOWARDS
+                and len(following_list(clauses, position)) >= 2
+            )
         ):
             # "..., with the village road running along the east side", "Rain covers
             # rolled up above both": the scenery is placed, not a field

@@ -103,6 +103,15 @@ def read_words(items: Sequence[Item], text: str) -> None:
 _BEFORE_A_YEAR = frozenset({"in", "for", "since", "from", "until", "plan", "year"})
 _AFTER_A_YEAR = frozenset({"season", "seasons", "crop", "harvest", "plan", "plans", "growing"})
 
+#: Units of time after a number that make it an age or a time ("planted ten days ago").
+_UNITS_OF_TIME = frozenset(
+    {"day", "days", "week", "weeks", "wks", "month", "months", "year", "years", "yr", "yrs"}
+    | {"hour", "hours", "hrs", "minute", "minutes", "mins", "fortnight", "fortnights"}
+)
+
+#: Words before "to" that make the plot word after it a verb ("ready to strip").
+_BEFORE_A_VERB = frozenset({"ready", "about", "due", "time", "going", "set", "starting", "want"})
+
 #: Scenery groups whose words name what a request is for ("a blight detection dataset").
 _PURPOSES = frozenset({"robots", "purposes"})
 
@@ -138,6 +147,10 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
         ):
             item.role = "filler"
             item.data["year"] = True
+        # "planted ten days ago", "10 year old trees": an age or a time, no count of fields
+        if item.role == "number" and word_after in _UNITS_OF_TIME:
+            item.role = "filler"
+            item.data["time"] = True
     # "just a couple of leaves per plant": leaves on each plant, no count of fields
     for index, item in enumerate(items):
         if item.role == "plot" and index and items[index - 1].norm in ("per", "each", "a"):
@@ -602,6 +615,9 @@ def _plot_words_of_other_things(items: Sequence[Item]) -> None:
     for before, item, after in zip(items, items[1:], items[2:], strict=False):
         if item.role == "plot" and before.role == after.role == "unknown":
             item.role = "filler"
+    for first, to, item in zip(items, items[1:], items[2:], strict=False):
+        if item.role == "plot" and to.norm == "to" and first.norm in _BEFORE_A_VERB:
+            item.role = "filler"  # "golden and ready to strip": a verb, no strip of a field
     named = False
     for index, item in enumerate(items):
         earlier = items[index - 1] if index else None
@@ -696,7 +712,9 @@ def _plots_of_a_list(items: Sequence[Item]) -> None:
             continue
         crops, comma, joined = 0, False, False
         for before in reversed(items[:index]):
-            if before.role == "separator" and before.norm in SENTENCE_MARKS:
+            # ("Strawberry comparison: Elsanta, Sonata and Albion in three plots": the
+            # list after its heading)
+            if before.role == "separator" and (before.norm in SENTENCE_MARKS or before.norm == ":"):
                 break
             comma = comma or (before.role == "separator" and crops == 0)
             # ("Jonagold and Conference in two orchards": a capitalised weak variety too)
