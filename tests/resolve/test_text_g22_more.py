@@ -140,3 +140,47 @@ def test_a_plantation_after_what_a_test_is_for() -> None:
         "banana plants in the classic double-row system: pairs of rows 1 m apart, plants "
         "2.25 m apart along the row. It's for a robot navigation test in a plantation."
     ) == ["Banana"]
+
+
+def test_livestock_in_a_paddock_is_no_field() -> None:
+    from agrirecipe import PromptError
+
+    with pytest.raises(PromptError):
+        recipe(
+            "The farm in winter: frosted hedgerows, a frozen pond, sheep in the paddock and "
+            "smoke from the farmhouse chimney."
+        )
+    # (sheep grazing an orchard leave the orchard a field of trees)
+    assert crops("sheep grazing in the orchard of Gala") == ["Apple"]
+
+
+def test_brown_silks_are_ripe_sweetcorn() -> None:
+    (corn,) = recipe("Sweetcorn the day before we picked it - cobs fat, silks gone brown").fields
+    assert corn.stage == "Maturation"
+
+
+def test_a_capitalised_weak_name_before_a_variety_of_its_crop() -> None:
+    fields = recipe(
+        "Big Mike in the first block, Ladyfinger in the second and Dwarf Cavendish in the third"
+    ).fields
+    assert [f.variety for f in fields] == ["Gros Michel", "Lady Finger", "Cavendish"]
+
+
+def test_a_month_to_come_is_not_the_scenes() -> None:
+    fields = recipe(
+        "the Gala being picked, and the Pink Lady that won't be ready until November. "
+        "Taken late August."
+    ).fields
+    assert {f.season for f in fields} == {"Summer"}
+
+
+def test_a_crop_then_the_same() -> None:
+    _stuttgarter, walla = recipe(
+        "Stuttgarter at 30 cm rows and 8 cm in-row, Walla Walla the same, and nothing else"
+    ).fields
+    assert (walla.agronomy.row_spacing_m, walla.agronomy.in_row_spacing_m) == (0.3, 0.08)
+
+
+def test_bare_quarters_before_and(named_relations: Callable[[str], NamedRelations]) -> None:
+    relations = named_relations("apples NW, vines NE, wheat SW and carrots SE.")
+    assert {("west_of", "Wheat", ("Carrot",)), ("north_of", "Apple", ("Wheat",))} <= relations

@@ -25,9 +25,10 @@ step  pass                                        module (data)
       scenery and purpose words                   cues.yaml, scenery.yaml, ...)
 6     typos and unseen names                      the strategy's reader
 7     each phrase's role; latitudes; sizes        ``_scan``
-7b    what single words are in their place        ``_words``, ``_looks``
-      (counts that are not, labels, negations,    (vocabulary.yaml
-      colours and looks)                          ``reader_words``)
+7b    what single words are in their place        ``_words``, ``_looks``,
+      (counts that are not, labels, negations,    ``_plot_words``
+      colours and looks, plot words of no field)  (vocabulary.yaml
+                                                  ``reader_words``)
 8     scenery-only prompts, unknown crops         ``PromptReader._reject_*``
 9     clauses and mentions                        ``_decompose``
 10    weak variety names; mentions taken back    ``_weak_varieties``,

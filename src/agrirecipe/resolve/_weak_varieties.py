@@ -187,6 +187,13 @@ def _promote_into_plot(clauses: Sequence[Clause], clause: Clause, supported: set
             continue
         named = {c for c2 in clauses[: clause.index] for m in c2.mentions for c in strong_crops(m)}
         named |= supported
+        if opens:
+            # "Big Mike in the first block, Ladyfinger in the second": a capitalised name
+            # beside a variety of its crop later in the sentence
+            for later in clauses[clause.index + 1 :]:
+                if later.link is not None and later.link.norm in (".", "!", "?", ";"):
+                    break
+                named |= {c for m in later.mentions[:1] for c in strong_crops(m)}
         senses = [s for s in item.senses_of("variety") if s.crop in named]
         crops = {s.crop for s in item.senses_of("variety")}
         if (

@@ -34,7 +34,9 @@ each decides what a word is in its place, where the lexicon alone cannot:
     each row                                              200 m long"
 5b  "every field" says something of every field           "each plot gets a headland"
 6   plots a list of crops is grown in are its own fields  "A and B in 2 plots"
-7   a plot word inside an unknown phrase is no field      "compare planting systems"
+7   a plot word inside an unknown phrase, a verb, a       "compare planting systems",
+    pasture or a part where something shows is no field   "ready to strip", "sheep in
+    (``_plot_words``)                                     the paddock"
 8   a sentence about the rows or beds of every field      "Ridges and beds all 80 m"
 9   a number after one plot or tunnel names it            "in plot 2", "tunnel two has"
 10  a size followed by "in total" is the farm's           "40 ha in total"
@@ -63,6 +65,7 @@ from agrirecipe.resolve._looks import (
     ripening_colours,
     weather_on_plants,
 )
+from agrirecipe.resolve._plot_words import plot_words_of_other_things
 from agrirecipe.resolve._structure import descriptive_words
 
 __all__ = ["SENTENCE_MARKS", "purpose_diseases", "read_words", "reader_words"]
@@ -92,7 +95,7 @@ def read_words(items: Sequence[Item], text: str) -> None:
     _each_row(items)
     _every_plot(items)
     _plots_of_a_list(items)
-    _plot_words_of_other_things(items)
+    plot_words_of_other_things(items)
     _row_words_of_every_field(items)
     _plot_numbers_are_names(items)
     _totals_are_not_sizes(items)
@@ -103,14 +106,14 @@ def read_words(items: Sequence[Item], text: str) -> None:
 _BEFORE_A_YEAR = frozenset({"in", "for", "since", "from", "until", "plan", "year"})
 _AFTER_A_YEAR = frozenset({"season", "seasons", "crop", "harvest", "plan", "plans", "growing"})
 
+#: Words before a month that make it a time to come ("not ready until November").
+_BEFORE_A_TIME_TO_COME = frozenset({"until", "till", "til", "by", "before"})
+
 #: Units of time after a number that make it an age or a time ("planted ten days ago").
 _UNITS_OF_TIME = frozenset(
     {"day", "days", "week", "weeks", "wks", "month", "months", "year", "years", "yr", "yrs"}
     | {"hour", "hours", "hrs", "minute", "minutes", "mins", "fortnight", "fortnights"}
 )
-
-#: Words before "to" that make the plot word after it a verb ("ready to strip").
-_BEFORE_A_VERB = frozenset({"ready", "about", "due", "time", "going", "set", "starting", "want"})
 
 #: Scenery groups whose words name what a request is for ("a blight detection dataset").
 _PURPOSES = frozenset({"robots", "purposes"})
@@ -147,6 +150,11 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
         ):
             item.role = "filler"
             item.data["year"] = True
+        # "won't be ready until November", "picked by October": a time to come, not when
+        # the scene is
+        if item.role == "month" and word_before in _BEFORE_A_TIME_TO_COME:
+            item.role = "filler"
+            item.data["time"] = True
         # "planted ten days ago", "10 year old trees": an age or a time, no count of fields
         if item.role == "number" and word_after in _UNITS_OF_TIME:
             item.role = "filler"
@@ -606,70 +614,6 @@ def _row_words_of_every_field(items: Sequence[Item]) -> None:
             for noun in items[index:end]:
                 if noun.role != "conjunction":
                     noun.role = "filler"
-
-
-def _plot_words_of_other_things(items: Sequence[Item]) -> None:
-    """'to compare planting systems': a plot word between two words the reader does not
-    know is part of their phrase, not a field; 'brown corky scab patches': patches right
-    after a disease or a look are the damage, not plots."""
-    for before, item, after in zip(items, items[1:], items[2:], strict=False):
-        if item.role == "plot" and before.role == after.role == "unknown":
-            item.role = "filler"
-    for first, to, item in zip(items, items[1:], items[2:], strict=False):
-        if item.role == "plot" and to.norm == "to" and first.norm in _BEFORE_A_VERB:
-            item.role = "filler"  # "golden and ready to strip": a verb, no strip of a field
-    named = False
-    for index, item in enumerate(items):
-        earlier = items[index - 1] if index else None
-        later = items[index + 1] if index + 1 < len(items) else None
-        if (
-            item.role == "plot"
-            and item.norm in ("patches", "patch")
-            and earlier is not None
-            and (earlier.role == "health" or "cue" in earlier.data)
-        ):
-            item.role = "filler"
-        # "whole patches collapsing", "lapwings on the bare patches": once a field is
-        # named, patches said with a look are parts of it
-        elif (
-            named
-            and item.role == "plot"
-            and item.norm == "patches"
-            and (
-                (earlier is not None and earlier.norm in reader_words("patch_looks"))
-                or (
-                    later is not None
-                    and (
-                        later.role in ("health", "cue") or later.norm in reader_words("patch_looks")
-                    )
-                )
-            )
-        ):
-            item.role = "filler"
-            if earlier is not None and earlier.role == "unknown":
-                earlier.role = "filler"
-        elif (
-            named
-            and item.role == "plot"
-            and item.norm in ("patch", "patches")
-            and _where(items[index + 1 : index + 6])
-        ):
-            # "a carrot field ..., but there's a patch in the middle where the leaves have
-            # gone brown": a part of the field, said by what shows there
-            item.role = "filler"
-            if earlier is not None and earlier.role == "number":
-                earlier.role = "filler"
-        named = named or item.role in ("head", "plot", "category")
-
-
-def _where(after: Sequence[Item]) -> bool:
-    """Whether "where" follows within a few words that name no field."""
-    for item in after:
-        if item.norm == "where":
-            return True
-        if item.role in ("head", "plot", "category", "separator"):
-            return False
-    return False
 
 
 def _plots_of_a_list(items: Sequence[Item]) -> None:

@@ -70,7 +70,10 @@ def _patterns() -> tuple[tuple[str, re.Pattern[str]], ...]:
     for zone, words in data["bare_places"].items():
         alternation = "|".join(re.escape(str(w)) for w in sorted(words, key=len, reverse=True))
         # ("the road running along the east side.": placed by a preposition, a relation)
-        pattern = rf"(?<![a-z0-9])(?<!along )(?<!on )(?<!by )(?:{alternation})(?= [,.;:!?]| -|$)"
+        # ("cereals SW and veg SE": or before "and" and the next member)
+        pattern = (
+            rf"(?<![a-z0-9])(?<!along )(?<!on )(?<!by )(?:{alternation})(?= [,.;:!?]| -| and |$)"
+        )
         patterns.append((str(zone), re.compile(pattern)))
     for zone, words in data["leading_places"].items():
         alternation = "|".join(re.escape(str(w)) for w in sorted(words, key=len, reverse=True))

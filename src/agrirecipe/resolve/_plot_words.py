@@ -1,0 +1,137 @@
+"""Plot words that ask for no field (pass 7 of ``_words``'s reading passes).
+
+"to compare planting systems" (inside a phrase of unknown words), "golden and ready to
+strip" (a verb), "sheep in the paddock" (pasture), "brown corky scab patches" (damage),
+"a patch in the middle where the leaves have gone brown" (a part of a field), and "the
+same" said right after a crop ("Walla Walla the same": planted as the field before).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from agrirecipe.resolve._lexicon import Item, reader_words
+
+__all__ = ["plot_words_of_other_things"]
+
+#: Words before "to" that make the plot word after it a verb ("ready to strip").
+_BEFORE_A_VERB = frozenset({"ready", "about", "due", "time", "going", "set", "starting", "want"})
+
+
+def plot_words_of_other_things(items: Sequence[Item]) -> None:
+    """Run this module's passes over a prompt's items, in order."""
+    _inside_unknown_phrases(items)
+    _verbs(items)
+    _the_same(items)
+    _pastures(items)
+    _damage_and_parts(items)
+
+
+def _inside_unknown_phrases(items: Sequence[Item]) -> None:
+    """'to compare planting systems': a plot word between two words the reader does not
+    know is part of their phrase, not a field."""
+    for before, item, after in zip(items, items[1:], items[2:], strict=False):
+        if item.role == "plot" and before.role == after.role == "unknown":
+            item.role = "filler"
+
+
+def _verbs(items: Sequence[Item]) -> None:
+    """'golden and ready to strip': a plot word after "ready to" is a verb."""
+    for first, to, item in zip(items, items[1:], items[2:], strict=False):
+        if item.role == "plot" and to.norm == "to" and first.norm in _BEFORE_A_VERB:
+            item.role = "filler"
+
+
+def _the_same(items: Sequence[Item]) -> None:
+    """'Stuttgarter at 30 cm rows ..., Walla Walla the same, and ...': a crop named, then
+    "the same" alone, is planted as the field before it."""
+    for index in range(1, len(items) - 1):
+        said, rest = items[index : index + 2], items[index + 2 : index + 3]
+        if (
+            items[index - 1].role == "head"
+            and [i.norm for i in said] == ["the", "same"]
+            and all(i.role == "filler" for i in said)
+            and (not rest or rest[0].role in ("separator", "conjunction"))
+        ):
+            said[1].role = "same_spacing"
+
+
+def _pastures(items: Sequence[Item]) -> None:
+    """'sheep in the paddock', 'a field of cows': pasture, no field of any crop (not "sheep
+    grazing in the orchard": the orchard still grows trees)."""
+    livestock = reader_words("livestock")
+    for index, item in enumerate(items):
+        spec = item.data.get("value") if item.role == "plot" else None
+        if not isinstance(spec, dict) or spec.get("options") or spec.get("category"):
+            continue
+        words_before = [i.norm for i in items[max(0, index - 3) : index]]
+        words_after = [i.norm for i in items[index + 1 : index + 3]]
+        if (
+            len(words_before) == 3
+            and words_before[0] in livestock
+            and words_before[1] in ("in", "on")
+        ) or (
+            len(words_after) == 2
+            and words_after[0] in ("of", "with", "full of")
+            and words_after[1] in livestock
+        ):
+            item.role = "filler"
+            item.data["scenery"] = "living"
+
+
+def _damage_and_parts(items: Sequence[Item]) -> None:
+    """'brown corky scab patches': patches right after a disease or a look are the damage,
+    not plots; 'a patch in the middle where the leaves have gone brown': a part of a field
+    named before."""
+    named = False
+    for index, item in enumerate(items):
+        earlier = items[index - 1] if index else None
+        later = items[index + 1] if index + 1 < len(items) else None
+        if (
+            item.role == "plot"
+            and item.norm in ("patches", "patch")
+            and earlier is not None
+            and (earlier.role == "health" or "cue" in earlier.data)
+        ):
+            item.role = "filler"
+        # "whole patches collapsing", "lapwings on the bare patches": once a field is
+        # named, patches said with a look are parts of it
+        elif (
+            named
+            and item.role == "plot"
+            and item.norm == "patches"
+            and (
+                (earlier is not None and earlier.norm in reader_words("patch_looks"))
+                or (
+                    later is not None
+                    and (
+                        later.role in ("health", "cue") or later.norm in reader_words("patch_looks")
+                    )
+                )
+            )
+        ):
+            item.role = "filler"
+            if earlier is not None and earlier.role == "unknown":
+                earlier.role = "filler"
+        elif (
+            named
+            and item.role == "plot"
+            and item.norm in ("patch", "patches")
+            and _where(items[index + 1 : index + 6])
+        ):
+            # "a carrot field ..., but there's a patch in the middle where the leaves have
+            # gone brown": a part of the field, said by what shows there
+            item.role = "filler"
+            if earlier is not None and earlier.role == "number":
+                earlier.role = "filler"
+        named = named or item.role in ("head", "plot", "category")
+
+
+def _where(after: Sequence[Item]) -> bool:
+    """Whether "where" follows within a few words that name no field."""
+    for item in after:
+        if item.norm == "where":
+            return True
+        if item.role in ("head", "plot", "category", "separator"):
+            return False
+    return False
