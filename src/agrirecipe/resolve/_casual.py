@@ -104,9 +104,12 @@ def expand_casual(prompt: str) -> str:
     text = _SETTING_COUNT.sub(r"\g<n> \g<key>", text)
     text = _SETTING_CROP.sub("", text)
     # "fruit & veg fields, like 4 or 5 of em": the fields' count said after them
-    text = _COUNT_OF_THEM.sub(
-        lambda m: f"{m.group('lead')}{m.group('count')} {m.group('words')}{m.group('plots')}", text
-    )
+    # ("some fruit & veg fields, like 3 or 4, dont mind which": said roughly, alone)
+    for pattern in (_COUNT_OF_THEM, _COUNT_SAID_ROUGHLY):
+        text = pattern.sub(
+            lambda m: f"{m.group('lead')}{m.group('count')} {m.group('words')}{m.group('plots')}",
+            text,
+        )
     # "An acre and a half of chillies": one and a half acres
     text = _UNIT_AND_A_HALF.sub(lambda m: f"1.5 {m.group('unit')}s", text)
     # "Corn plot pair", "a lettuce strip trio": a count said after the plot noun
@@ -131,6 +134,13 @@ _SO_ARE = re.compile(
 )
 
 
+_COUNT_SAID_ROUGHLY = re.compile(
+    r"(?P<lead>(?:^|(?<=[.;:!?])\s*)(?:(?i:the|our|my|some)\s+)?)"
+    r"(?P<words>(?:[A-Za-z][\w'&-]*\s+){0,4}?)"
+    r"(?P<plots>(?i:fields|plots|blocks|strips|beds|orchards|patches|paddocks))\s*,\s*"
+    r"(?i:like|about|around|maybe|roughly|approx|say)\s+"
+    r"(?P<count>\d+(?:\s+(?i:or|to|-)\s+\d+)?)(?=\s*(?:[,.!?;]|$))"
+)
 _COUNT_OF_THEM = re.compile(
     r"(?P<lead>(?:^|(?<=[.;:!?])\s*)(?:(?i:the|our|my|some)\s+)?)"
     r"(?P<words>(?:[A-Za-z][\w'&-]*\s+){0,4}?)"

@@ -246,6 +246,8 @@ def merge_coreferences(
             and not another_field(clauses, clause, mention)
             # ("North plot, ..., Fontane potatoes; south plot, ...": another side, another plot)
             and not (kept and _other_side(kept[-1], mention))
+            # ("Top left wheat, top right maize, bottom left maize": another quarter)
+            and not _in_another_zone(kept, mention)
         )
         if not anaphoric:
             if first is not None and first.norm == "both" and mention.count is None:
@@ -289,6 +291,7 @@ def merge_coreferences(
                 r
                 for r in host.refinements
                 if (same_variety(r, mention) if strong_crops(host) else strong_crops(r) & own)
+                and not _in_another_zone([r], mention)
             ]
             if same:
                 member = same[-1]
@@ -519,14 +522,16 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
         if (
             clause is not None
             and previous is not None
-            and previous.has_crop
+            # ("Any cereal will do: one plot drilled at 12.5 cm row spacing, 10 m x 50 m")
+            and (previous.has_crop or (previous.category is not None and previous.plot is None))
             and (previous.count or 1) == 1
             and not mention.has_crop
             and mention.plot is not None
             and (mention.count or 1) == 1
             and not mention.refinements
             and clause.link is not None
-            and clause.link.norm == ","
+            # ("we only grow sweet peppers now - one outdoor field, roughly 60 by 120 m")
+            and clause.link.norm in (",", ":", "-", "–", "—")
             # ("Lady Finger bananas: 3 m x 3 m grid, 1,111 plants/ha, a 90 x 60 m block")
             and all(
                 not c.mentions
@@ -540,7 +545,10 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
             # ("onions now, one field of about 6 acres"; "Navel oranges, a 2 ha block with
             # the fruit still small": the crop's own fruit)
             and all(
-                i.role in ("number", "size", "plot", "filler", "of", "cue", "stage", "health")
+                i.role
+                in ("number", "size", "plot", "filler", "of", "cue", "stage", "health", "geometry")
+                # ("one plot drilled at 12.5 cm row spacing": how it is sown)
+                or (i.role == "unknown" and any(j.role == "geometry" for j in clause.items))
                 or (i.role == "head" and i.norm in descriptive_words())
                 for i in clause.items
             )
@@ -548,9 +556,10 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
             and (
                 any(i.role == "size" for i in clause.items)
                 or any(i.role == "filler" and i.scenery for i in clause.items)
+                or _size_said_next(clauses, mention.clause)
             )
         ):
-            previous.items.extend(i for i in mention.items if i.role == "size")
+            previous.items.extend(i for i in mention.items if i.role in ("size", "geometry"))
             if previous.plot is None:
                 previous.plot = mention.plot
             clause.mentions = [m for m in clause.mentions if m is not mention]
@@ -563,6 +572,11 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
             for each in clauses:
                 each.mentions = [mention if m is previous else m for m in each.mentions]
             clause.mentions = [m for m in clause.mentions if m is mention]
+            if previous.has_crop:
+                # ("The apple block east of it is Jonagored": the block stands where it was
+                # named, so "east of it" places it against the field before)
+                clause.mentions = []
+                mention.clause = previous.clause
             continue
         if clause is not None and (listed := _listed_again(clauses, clause, mention)):
             # "butterhead + lollo rosso + romaine, 3 lettuce plots": the list counted
@@ -662,12 +676,35 @@ def _other_side(earlier: Mention, mention: Mention) -> bool:
     return bool(said) and bool(before) and not said & before
 
 
+def _in_another_zone(kept: Sequence[Mention], mention: Mention) -> bool:
+    """Whether ``mention`` names a crop again in a zone of its own, when every earlier
+    field of that crop lies in another zone ("top right maize, bottom left maize")."""
+    own = _zones_of(mention)
+    crops = strong_crops(mention)
+    same = [m for k in kept for m in (k.refinements or [k]) if strong_crops(m) & crops]
+    return bool(own) and bool(same) and all(_zones_of(m) and not _zones_of(m) & own for m in same)
+
+
+def _zones_of(mention: Mention) -> set[str]:
+    return {str(s.value) for i in mention.items if i.role == "zone" for s in i.senses_of("zone")}
+
+
 def _is_its_crop(clause: Clause, previous: Mention, mention: Mention) -> bool:
     """Whether ``mention`` says what a plot of no crop just named grows: "The vineyard on
     the south slope is Pinot Noir" (a copula opens its clause, after a placement)."""
     words = [i.norm for i in sorted(clause.items, key=lambda i: i.start)]
+    # "The apple block east of it is Jonagored": a plot of a crop, then one of its varieties
+    # after the placement's pronoun
+    pronoun = words[:1] in (["it"], ["them"]) and words[1:2] in (["is"], ["are"], ["s"])
+    of_its_crop = (
+        pronoun
+        and previous.has_crop
+        and not names_a_variety(previous)
+        and names_a_variety(mention)
+        and strong_crops(mention) <= strong_crops(previous)
+    )
     return (
-        not previous.has_crop
+        (of_its_crop or (not previous.has_crop and words[:1] in (["is"], ["are"], ["was"])))
         and previous.category is None
         and previous.plot is not None
         and (previous.count or 1) == 1
@@ -678,16 +715,16 @@ def _is_its_crop(clause: Clause, previous: Mention, mention: Mention) -> bool:
         and previous.clause == clause.index - 1
         and clause.link is not None
         and clause.link.role in ("trailer", "relation")
-        and words[:1] in (["is"], ["are"], ["was"])
     )
 
 
 def _listed_again(clauses: Sequence[Clause], clause: Clause, mention: Mention) -> list[Mention]:
     """The list just before ``clause`` that ``mention`` counts again ("A, B and C, 3
-    lettuce plots": three members, each of the mention's crop), or []."""
+    lettuce plots", "Comice vs Durondeau: two adjacent pear blocks": as many members as
+    it counts, each of the mention's crop), or []."""
     if (
         clause.link is None
-        or clause.link.norm != ","
+        or clause.link.norm not in (",", ":")
         or mention.count is None
         or mention.count < 2
         or mention.plot is None
@@ -705,6 +742,17 @@ def _listed_again(clauses: Sequence[Clause], clause: Clause, mention: Mention) -
     ):
         return []
     return group
+
+
+def _size_said_next(clauses: Sequence[Clause], position: int) -> bool:
+    """Whether the clause after ``position`` names no field and gives a size ("one
+    outdoor field, roughly 60 by 120 m")."""
+    following = clauses[position + 1] if position + 1 < len(clauses) else None
+    return (
+        following is not None
+        and not following.mentions
+        and any(i.role == "size" for i in following.items)
+    )
 
 
 def _a_part_where(clauses: Sequence[Clause], previous: Mention, mention: Mention) -> bool:

@@ -186,20 +186,30 @@ _PLACING = frozenset({"on", "in", "at", "along", "up", "down", "across", "over",
 
 def _placed_crop_of_its_own(clauses: Sequence[Clause], position: int, mention: Mention) -> bool:
     """Whether "and the vines on the hill" (a word for plants that names a crop, joined by
-    "and" and put in a place of its own) follows fields that all name other crops: a field
+    "and" and put in a place of its own, or placed against a field: "and the vines south
+    of the veg garden") follows fields that all name other crops: a field
     of that crop ("apple trees nearest, pear trees beyond them and the vines on the hill";
     not "the Riesling ..., and the vines are bare", nor "tomatoes and the vines heavy")."""
     clause = clauses[position]
     crops = strong_crops(mention)
     earlier = [strong_crops(m) for c in clauses[:position] for m in c.mentions]
     head = max(h.end for h in mention.heads)
+    following = clauses[position + 1] if position + 1 < len(clauses) else None
     return (
         clause.link is not None
         and clause.link.role == "conjunction"
         and bool(crops)
         and bool(earlier)
         and all(e and not e & crops for e in earlier)
-        and any(i.start >= head and i.norm in _PLACING for i in mention.items)
+        and (
+            any(i.start >= head and i.norm in _PLACING for i in mention.items)
+            # "orchard north of the veg garden, and the vines south of the veg garden"
+            or (
+                following is not None
+                and following.link is not None
+                and following.link.role in ("relation", "between")
+            )
+        )
     )
 
 
@@ -444,7 +454,11 @@ def _after_a_look(previous: Clause, clause: Clause, mention: Mention) -> bool:
         and mention.count is None
         and all(h.norm in plant_part_words() for h in mention.heads)
         and any(i.role in ("cue", "health") for i in previous.items)
-        and all(i.role in ("cue", "health", "filler", "unknown", "of") for i in previous.items)
+        # ("a lot of the trees have blotchy mottled leaves and small lopsided fruit")
+        and all(
+            i.role in ("cue", "health", "filler", "unknown", "of", "quantity")
+            for i in previous.items
+        )
     )
 
 

@@ -293,7 +293,10 @@ def following_list(
             # the member before it
             bracket = link != ")"
             continue
-        if group and not listing(clause.link):
+        # ("Going from west to east the plots are: Chantenay carrots, ...": the list after
+        # the colon of the heading's own clause)
+        colon = index == position + 1 and link == ":"
+        if group and not listing(clause.link) and not colon:
             if not clause.mentions and all(i.role == "filler" for i in clause.items):
                 continue  # "potatoes closest to me, then the wheat": placed by the viewer
             break

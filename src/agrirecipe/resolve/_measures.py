@@ -257,11 +257,7 @@ def share_each_measures(clauses: Sequence[Clause]) -> None:
                         other.items.extend(sizes)
             # "150 trees each at 7 m x 4 m": the whole measure, said for every one
             measures = [i for i in mention.items if i.role == "geometry"]
-            said_each = [
-                i
-                for i in measures
-                if not per_bed(i) and any(t.norm in ("each", "both") for t in i.tokens)
-            ]
+            said_each = [i for i in measures if not per_bed(i) and _said_of_each(i)]
             if not said_each or _of_each_row(measures, said_each):
                 # "Fontane, Agria and Bintje in three 9-row strips": each plot's rows
                 measures = [i for i in measures if i.data.get("of_each_plot")]
@@ -271,6 +267,19 @@ def share_each_measures(clauses: Sequence[Clause]) -> None:
                 if other is not mention:
                     said = _measure_keys(other.items)
                     other.items.extend(i for i in measures if not _measure_keys([i]) & said)
+
+
+#: Plot words after "per" that say a measure of every field ("150 trees per block").
+_PER_PLOT = frozenset({"block", "plot", "field", "orchard", "vineyard", "strip", "grove"})
+
+
+def _said_of_each(item: Item) -> bool:
+    """Whether a measure is said with "each" or "both", or "per block" ("one block each
+    of apples, pears and cherries, 150 trees per block")."""
+    words = [t.norm for t in item.tokens]
+    return any(w in ("each", "both") for w in words) or any(
+        a == "per" and b in _PER_PLOT for a, b in itertools.pairwise(words)
+    )
 
 
 def _of_each_row(measures: Sequence[Item], said_each: Sequence[Item]) -> bool:

@@ -1,9 +1,10 @@
 """Plot words that ask for no field (pass 7 of ``_words``'s reading passes).
 
-"to compare planting systems" (inside a phrase of unknown words), "golden and ready to
-strip" (a verb), "sheep in the paddock" (pasture), "brown corky scab patches" (damage),
-"a patch in the middle where the leaves have gone brown" (a part of a field), and "the
-same" said right after a crop ("Walla Walla the same": planted as the field before).
+"to compare planting systems" (inside a phrase of unknown words), "in the near field"
+(which plot, no placement), "golden and ready to strip" (a verb), "sheep in the paddock"
+(pasture), "brown corky scab patches" (damage), "a patch in the middle where the leaves
+have gone brown" (a part of a field), and "the same" said right after a crop ("Walla
+Walla the same": planted as the field before).
 """
 
 from __future__ import annotations
@@ -21,6 +22,7 @@ _BEFORE_A_VERB = frozenset({"ready", "about", "due", "time", "going", "set", "st
 def plot_words_of_other_things(items: Sequence[Item]) -> None:
     """Run this module's passes over a prompt's items, in order."""
     _inside_unknown_phrases(items)
+    _near_and_far(items)
     _verbs(items)
     _the_same(items)
     _pastures(items)
@@ -32,6 +34,14 @@ def _inside_unknown_phrases(items: Sequence[Item]) -> None:
     know is part of their phrase, not a field."""
     for before, item, after in zip(items, items[1:], items[2:], strict=False):
         if item.role == "plot" and before.role == after.role == "unknown":
+            item.role = "filler"
+
+
+def _near_and_far(items: Sequence[Item]) -> None:
+    """'Bibb lettuce in the near field and ... cabbage beyond it': "near" or "far" between
+    "the" and a plot word says which plot, no placement."""
+    for the, item, plot in zip(items, items[1:], items[2:], strict=False):
+        if the.norm == "the" and item.norm in ("near", "far") and plot.role == "plot":
             item.role = "filler"
 
 

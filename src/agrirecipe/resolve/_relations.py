@@ -351,6 +351,9 @@ def read_relations(
             parallel = (word, subject, objects[0], kind)
         relations.extend(field_relations(kind, subject, objects, members, link, trace))
         read.append((kind, subject, objects))
+        if _both_said(clauses, position) and len(before) >= 2 and subject is before[-1]:
+            # "a corn field and a wheat field, both north of an orchard": each of the two
+            relations.extend(field_relations(kind, before[-2], objects, members, link, trace))
         if kind == "next_to" and len(objects) == 1 and link.norm in _OTHER_SIDE:
             beyond.append((subject, objects[0], link))
         if (
@@ -514,3 +517,21 @@ def _relation_mentions(
         # "... with an onion field to the north of them": the object was named before.
         return kind, before[-1], (before[-2],)
     return None
+
+
+def _both_said(clauses: Sequence[Clause], position: int) -> bool:
+    """Whether "both" (or "both of them") alone stands right before the relation at
+    ``position``, after two fields joined by "and"."""
+    if position < 2:
+        return False
+    previous = clauses[position - 1]
+    words = [i.norm for i in previous.items]
+    joined = clauses[position - 2]
+    return (
+        not previous.mentions
+        and words[:1] == ["both"]
+        and all(w in ("both", "of", "them") for w in words)
+        and bool(joined.mentions)
+        and joined.link is not None
+        and joined.link.role == "conjunction"
+    )

@@ -4,11 +4,12 @@
   patch kid lol jk, just a cabbage field" keeps the field.
 - *Alternatives*: "a field of wheat or maize" is one field, of the first named.
 - *Choices left open*: "some fruit fields pls, whatever fruit u like" is no more fields.
-- *Negations*: "no apples, just pears" asks for no apples.
+- *Negations*: "no apples, just pears" asks for no apples; "the kitchen garden's gone"
+  for no garden.
 
 Each pass removes the mentions it reads from their clauses and returns their texts,
 which the reader lists in its trace. The words are data (``corrections``,
-``negations`` and ``reader_words.free_choice`` in vocabulary.yaml).
+``negations`` and ``reader_words.free_choice`` and ``gone`` in vocabulary.yaml).
 """
 
 from __future__ import annotations
@@ -160,7 +161,27 @@ def drop_negated(clauses: Sequence[Clause]) -> list[str]:
             before = [i for i in clause.items if i.end <= head.start]
             while before and before[-1].norm in _ANY:
                 before.pop()
-            if before and before[-1].role == "negation":
+            if (before and before[-1].role == "negation") or _gone(clause, mention):
                 clause.mentions.remove(mention)
                 dropped.append(mention.text)
     return dropped
+
+
+#: Words between a field and "gone" that say it is no more ("the kitchen garden's gone").
+_BE = frozenset({"s", "is", "are", "has", "have", "was", "were", "been", "now", "all"})
+
+
+def _gone(clause: Clause, mention: Mention) -> bool:
+    """Whether a field named of no variety is said to be gone, ending its clause: "The
+    kitchen garden's gone, the whole place is one field of Jalapeños now" (not "leaves
+    gone brown")."""
+    head = max(h.end for h in mention.heads)
+    after = [i.norm for i in clause.items if i.start >= head]
+    while after and after[0] in _BE:
+        after.pop(0)
+    return (
+        not names_a_variety(mention)
+        and len(after) >= 1
+        and " ".join(after) in reader_words("gone")
+        and len(clause.mentions) == 1
+    )

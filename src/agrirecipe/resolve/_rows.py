@@ -229,14 +229,24 @@ def adjacent_rows(
     """'three adjacent fields': the fields of a mention described as adjacent, in a row."""
     rows: list[RelationIntent] = []
     seen: set[int] = set()
+    # ("Comice vs Durondeau: two adjacent pear blocks": one word said of the fields of a
+    # list counted again)
+    shared: dict[int, tuple[Item, Mention, list[int]]] = {}
     for clause in clauses:
         for mention in clause.mentions:
             fields = members.get(id(mention), [])
             adjacent = [i for i in mention.items if i.data.get("adjacent")]
-            if len(fields) < 2 or not adjacent or id(mention) in seen:
+            if not adjacent or id(mention) in seen:
                 continue
             seen.add(id(mention))
-            rows += in_a_row(fields, mention, adjacent[0], trace, ordered=False)
+            if len(fields) >= 2:
+                rows += in_a_row(fields, mention, adjacent[0], trace, ordered=False)
+            elif len(fields) == 1:
+                word = adjacent[0]
+                shared.setdefault(id(word), (word, mention, []))[2].extend(fields)
+    for word, first, fields in shared.values():
+        if len(fields) >= 2:
+            rows += in_a_row(fields, first, word, trace, ordered=False)
     return rows
 
 

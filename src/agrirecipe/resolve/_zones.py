@@ -45,7 +45,8 @@ _PLACES: dict[str, dict[str, int]] = {
     "near": {"depth": 0},
     "far": {"depth": 2},
 }
-_ZONES = (*_PLACES, "middle")
+# (the quarters first: "top left" is the north-west, not the north)
+_ZONES = (*sorted(_PLACES, key=lambda zone: -len(_PLACES[zone])), "middle")
 
 
 @dataclass(frozen=True, slots=True)
