@@ -145,3 +145,11 @@ def test_a_count_per_block() -> None:
         "per block, laid out west to east in that order."
     ).fields
     assert [f.nominal_plant_count for f in fields] == [150, 150, 150]
+
+
+def test_a_variety_after_a_placement_of_plants_named_without_a_plot() -> None:
+    fields = recipe(
+        "The Golden Delicious trees run along the west side, and the cabbages east of them are "
+        "Golden Acre."
+    ).fields
+    assert [f.variety for f in fields] == ["Golden Delicious", "Golden Acre"]

@@ -693,8 +693,8 @@ def _is_its_crop(clause: Clause, previous: Mention, mention: Mention) -> bool:
     """Whether ``mention`` says what a plot of no crop just named grows: "The vineyard on
     the south slope is Pinot Noir" (a copula opens its clause, after a placement)."""
     words = [i.norm for i in sorted(clause.items, key=lambda i: i.start)]
-    # "The apple block east of it is Jonagored": a plot of a crop, then one of its varieties
-    # after the placement's pronoun
+    # "The apple block east of it is Jonagored", "the cabbages east of them are Golden
+    # Acre": a field of a crop, then one of its varieties after the placement's pronoun
     pronoun = words[:1] in (["it"], ["them"]) and words[1:2] in (["is"], ["are"], ["s"])
     of_its_crop = (
         pronoun
@@ -706,7 +706,8 @@ def _is_its_crop(clause: Clause, previous: Mention, mention: Mention) -> bool:
     return (
         (of_its_crop or (not previous.has_crop and words[:1] in (["is"], ["are"], ["was"])))
         and previous.category is None
-        and previous.plot is not None
+        # ("the cabbages east of them are Golden Acre": the crop's plants, named with no plot)
+        and (previous.plot is not None or of_its_crop)
         and (previous.count or 1) == 1
         and not previous.refinements
         and mention.has_crop

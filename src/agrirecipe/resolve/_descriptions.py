@@ -187,9 +187,9 @@ _PLACING = frozenset({"on", "in", "at", "along", "up", "down", "across", "over",
 def _placed_crop_of_its_own(clauses: Sequence[Clause], position: int, mention: Mention) -> bool:
     """Whether "and the vines on the hill" (a word for plants that names a crop, joined by
     "and" and put in a place of its own, or placed against a field: "and the vines south
-    of the veg garden") follows fields that all name other crops: a field
-    of that crop ("apple trees nearest, pear trees beyond them and the vines on the hill";
-    not "the Riesling ..., and the vines are bare", nor "tomatoes and the vines heavy")."""
+    of the carrots") follows fields that all name other crops: a field of that crop
+    ("apple trees nearest, pear trees beyond them and the vines on the hill"; not "the
+    Riesling ..., and the vines are bare", nor "tomatoes and the vines heavy")."""
     clause = clauses[position]
     crops = strong_crops(mention)
     earlier = [strong_crops(m) for c in clauses[:position] for m in c.mentions]
@@ -203,7 +203,7 @@ def _placed_crop_of_its_own(clauses: Sequence[Clause], position: int, mention: M
         and all(e and not e & crops for e in earlier)
         and (
             any(i.start >= head and i.norm in _PLACING for i in mention.items)
-            # "orchard north of the veg garden, and the vines south of the veg garden"
+            # "apple trees north of the carrots, and the vines south of the carrots"
             or (
                 following is not None
                 and following.link is not None
