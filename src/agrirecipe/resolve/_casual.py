@@ -77,6 +77,8 @@ def expand_casual(prompt: str) -> str:
     text = _SLASH_BEFORE_LABEL.sub(", ", text)
     # "2 carrot fields, one nantes one chantenay": a list of members without commas
     text = _ONE_AFTER_ONE.sub(r"\g<first>, \g<second>", text)
+    # "2 pepper fields, 1 jalapeno, 1 padron": a member counted "1" is "one" of the list
+    text = _ONE_IN_A_LIST.sub("one", text)
     # "1) Roma tomatoes 2) San Marzano tomatoes": a numbered list's marks are its commas
     # (the first item after a colon or at the start needs no comma: "plots are: 1) ...")
     text = _NUMBERED_ITEM.sub(
@@ -114,6 +116,8 @@ def expand_casual(prompt: str) -> str:
     text = _UNIT_AND_A_HALF.sub(lambda m: f"1.5 {m.group('unit')}s", text)
     # "Corn plot pair", "a lettuce strip trio": a count said after the plot noun
     text = _PLOT_COUNT_AFTER.sub(_count_before_plots, text)
+    # "strawbery beds x6": a count written as a multiplier after the plural noun
+    text = _TIMES_AFTER_PLURAL.sub(r"\g<count> \g<noun>", text)
     # "the Bing cherries ... are ripe for picking, and so are the strawberries ...": what
     # is said of the first is said of the second
     text = _SO_ARE.sub(
@@ -199,6 +203,16 @@ _PLOT_COUNT_AFTER = re.compile(
     r"(?P<words>(?:[A-Za-z][\w'-]*\s+){0,3}?)"
     r"(?P<noun>(?i:plot|block|field|strip|bed|orchard|vineyard|grove|tunnel|greenhouse|paddock))s?"
     r"\s+(?P<count>(?i:pair|duo|trio|quartet))\b(?!\s+of\b)"
+)
+_ONE_IN_A_LIST = re.compile(
+    r"(?<=[,;:] )1(?= [A-Za-z])"
+    r"(?! (?i:m|ha|acres?|ac|cm|mm|ft|in|x|by|rows?|beds?|ridges?|of|more|or|to|and|either|"
+    r"each|on|per|side)\b)"
+)
+_TIMES_AFTER_PLURAL = re.compile(
+    r"\b(?P<noun>(?i:beds|rows|ridges|plots|blocks|fields|strips))\s*[x×]\s*(?P<count>\d+)\b"
+    # (ending its phrase: not "rows x 30 m", "5 rows x 30 trees")
+    r"(?![.,]\d)(?=\s*(?:[,;:!?)]|\.(?!\d)|$))"
 )
 _COUNT_WORDS = {"pair": "two", "duo": "two", "trio": "three", "quartet": "four"}
 

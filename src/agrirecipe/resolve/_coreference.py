@@ -32,6 +32,7 @@ from agrirecipe.resolve._structure import (
     same_variety,
     strong_crops,
 )
+from agrirecipe.resolve._words import SENTENCE_MARKS
 
 __all__ = ["merge_appositive_plots", "merge_coreferences"]
 
@@ -351,6 +352,12 @@ def merge_coreferences(
             # after a comma is the one earlier field it can be (if only one can).
             members = [r for m in reversed(kept) for r in (m.refinements[::-1] or [m])]
             candidates = [m for m in members if _compatible(builder, m, mention)]
+            named = [m for m in candidates if strong_crops(m) & own]
+            if own and len(named) == 1 and len(candidates) > 1:
+                # "Field robotics course layout: a ... onion plot south of a ... carrot plot.
+                # Onion rows 30 cm apart": the one field that names the crop, not a
+                # heading's plot word of no crop
+                candidates = named
             if first is not None and first.norm in EACH and len(candidates) > 1:
                 # "two potato blocks, Bintje ... and Agria ... . Both blocks 36 rows":
                 # every member the list named
@@ -564,6 +571,13 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
                 previous.plot = mention.plot
             clause.mentions = [m for m in clause.mentions if m is not mention]
             continue
+        if previous is not None and _where_it_stands(clauses, previous, mention):
+            # "In the field beyond the stone wall there's an old Comice pear orchard": the
+            # plot named first is where the field of the crop stands
+            kept[-1] = mention
+            home = clauses[previous.clause]
+            home.mentions = [m for m in home.mentions if m is not previous]
+            continue
         if clause is not None and previous is not None and _is_its_crop(clause, previous, mention):
             # "The vineyard on the south slope is Pinot Noir": the plot named, then its crop
             mention.items.extend(previous.items)
@@ -743,6 +757,30 @@ def _listed_again(clauses: Sequence[Clause], clause: Clause, mention: Mention) -
     ):
         return []
     return group
+
+
+def _where_it_stands(clauses: Sequence[Clause], previous: Mention, mention: Mention) -> bool:
+    """Whether ``previous``, a plot of no crop opening the prompt with "in" or "on" ("In
+    the field beyond the stone wall"), is where the field ``mention`` names stands, said
+    with "there's" in the same sentence."""
+    words = [i.norm for i in sorted(previous.items, key=lambda i: i.start)]
+    said = [i.norm for i in mention.items if i.start < min(h.start for h in mention.heads)]
+    return (
+        previous.clause == 0
+        and not previous.has_crop
+        and previous.category is None
+        and previous.plot is not None
+        and previous.count is None
+        and not previous.refinements
+        and words[:1] in (["in"], ["on"])
+        and mention.has_crop
+        and (mention.count or 1) == 1
+        and "there" in said
+        and not any(
+            c.link is not None and c.link.norm in SENTENCE_MARKS
+            for c in clauses[previous.clause + 1 : mention.clause + 1]
+        )
+    )
 
 
 def _size_said_next(clauses: Sequence[Clause], position: int) -> bool:

@@ -118,6 +118,11 @@ _ONE_ON_A_SIDE = re.compile(
 )
 
 
+_ARE_A_SIDE = re.compile(
+    r"\b(?P<verb>(?i:are|is))\s+(?P<side>(?i:north|south|east|west))(?=\s*(?:[,.;:!?]|$))"
+)
+
+
 # "Dent corn on the 20 ha east field ..., flint corn on the 8 ha west field": fields named
 # by their side of the farm
 _SIDE_FIELD = re.compile(
@@ -165,11 +170,14 @@ def _between_sides(match: re.Match[str]) -> str:
 
 def place_sides(text: str) -> str:
     """``text`` with "X with A on one side and B on the other" written "X between A and
-    B", "..., danvers one east" written "..., danvers one east of the other", and "on the
+    B", "..., danvers one east" written "..., danvers one east of the other", "the
+    cherries are east" written "the cherries are to the east", and "on the
     20 ha east field ..., on the 8 ha west field" written "in the east, 20 ha ..., in the
     west, 8 ha" (two or more sides, not all the same)."""
     text = _ONE_SIDE_AND_OTHER.sub(_between_sides, text)
     text = _ONE_ON_A_SIDE.sub(lambda m: f"{m.group(0)} of the other", text)
+    # "durondeau pears and bing cherries, the cherries r east": a side said bare after "are"
+    text = _ARE_A_SIDE.sub(lambda m: f"{m.group('verb')} to the {m.group('side')}", text)
     for side, other in (("left", "right"), ("right", "left")):
         # "left of the yard there's a vineyard, on the right a strawberry field": the
         # sides of the view, both said

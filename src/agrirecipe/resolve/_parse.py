@@ -411,6 +411,17 @@ class PromptReader(FieldReading):
                 item.role = "filler"
                 item.data["scenery"] = "vegetation"
                 continue
+            if (
+                before is not None
+                and following is not None
+                and (before.norm, following.norm) == ("(", ")")
+                and index >= 2
+                and items[index - 2].role == "head"
+            ):
+                # "roma (plum) tomatos": a kind said in brackets of the crop just named
+                item.role = "filler"
+                item.data["short_for"] = True
+                continue
             if any(
                 earlier.role == "head" and earlier.tokens[0].norm == item.norm
                 for earlier in items[:index]

@@ -329,7 +329,7 @@ def read_relations(
         else:
             # "pears on the north block, bananas ...": a trailer right after a field
             # places that field ("..., and to the north, pears" places the one after).
-            attached = position > 0 and bool(clauses[position - 1].named)
+            attached = _attached(clauses, position)
             pairs = _relation_mentions(link, before, after, pronoun=pronoun, attached=attached)
         if pairs is None:
             warnings.append(f"ignored {link.raw!r}: it needs a field on each side")
@@ -535,3 +535,27 @@ def _both_said(clauses: Sequence[Clause], position: int) -> bool:
         and joined.link is not None
         and joined.link.role == "conjunction"
     )
+
+
+#: Roles of the words that describe the field just named ("Navel oranges, ripe and being
+#: picked, on the north side").
+_DESCRIBING = frozenset({"cue", "stage", "health", "filler", "unknown", "season", "month"})
+
+
+def _attached(clauses: Sequence[Clause], position: int) -> bool:
+    """Whether the relation at ``position`` right follows a field, or follows it past
+    clauses that only describe it ("Navel oranges, ripe and being picked, on the north
+    side; Valencia Late on the south side")."""
+    index, described = position - 1, False
+    while index > 0 and not clauses[index].named:
+        clause = clauses[index]
+        if (
+            clause.link is None
+            or clause.link.norm not in (",", "and")
+            or any(i.role not in _DESCRIBING for i in clause.items)
+        ):
+            return False
+        described = described or any(i.role in ("cue", "stage", "health") for i in clause.items)
+        index -= 1
+    # (not "apples, and to the north, pears": nothing said of the apples in between)
+    return index >= 0 and bool(clauses[index].named) and (index == position - 1 or described)

@@ -84,7 +84,8 @@ def assign_roles(items: Sequence[Item]) -> None:
             )
         )
         item.role = _role(item, previous, cues, alone=alone)
-        if item.role == "relation" and _attributive(item, previous, following):
+        after = items[index + 2] if index + 2 < len(items) else None
+        if item.role == "relation" and _attributive(item, previous, following, after):
             item.role = "filler"  # "three adjacent fields": the fields in a row
             item.data["adjacent"] = True
         if (
@@ -237,15 +238,27 @@ def _placement_plot(item: Item, following: Item | None) -> bool:
     )
 
 
-def _attributive(item: Item, previous: Item | None, following: Item | None) -> bool:
-    """'three adjacent fields', 'two neighbouring orchards': "next to" used as an adjective."""
+def _attributive(
+    item: Item, previous: Item | None, following: Item | None, after: Item | None
+) -> bool:
+    """'three adjacent fields', 'two neighbouring orchards', 'three adjacent test strips':
+    "next to" used as an adjective."""
     return (
         item.data.get("value") == "next_to"
         and len(item.tokens) == 1
         and previous is not None
         and previous.role in ("number", "quantity", "distinct")
         and following is not None
-        and following.has("plot", "crop", "category", "variety")
+        and (
+            following.has("plot", "crop", "category", "variety")
+            # ("three adjacent test strips": one word of what the plots are for between)
+            or (
+                all(sense.kind in ("filler", "scenery") for sense in following.senses)
+                and after is not None
+                and after.has("plot")
+                and not after.has("crop", "variety")
+            )
+        )
     )
 
 

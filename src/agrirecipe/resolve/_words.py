@@ -155,6 +155,15 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
         if item.role == "month" and word_before in _BEFORE_A_TIME_TO_COME:
             item.role = "filler"
             item.data["time"] = True
+        # "2 wheat fields w/ a combine in 1 of em": one of the fields named, no count
+        word_after_next = items[index + 2].norm if index + 2 < len(items) else ""
+        if (
+            item.role == "number"
+            and word_before in ("in", "on", "at", "across")
+            and word_after == "of"
+            and word_after_next in ("them", "em", "those", "these")
+        ):
+            item.role = "filler"
         # "planted ten days ago", "10 year old trees": an age or a time, no count of fields
         if item.role == "number" and word_after in _UNITS_OF_TIME:
             item.role = "filler"
