@@ -80,3 +80,21 @@ def test_three_adjacent_test_strips(named_relations: Callable[[str], NamedRelati
     )
     assert [f.crop for f in recipe(prompt).fields] == ["Maize", "Wheat", "Potato"]
     assert ("between", "Spring Wheat", ("Sweet Corn", "Agria")) in named_relations(prompt)
+
+
+def test_words_of_g24_photos() -> None:
+    wheat, _potatoes = recipe(
+        "Took this in May: Winter Wheat coming into ear next to a field of Agria potatoes"
+    ).fields
+    assert wheat.stage == "Reproductive"
+    # "stone fruit trees": the trees of the stone fruit named first (cherries), not any
+    (stone,) = recipe("stone fruit trees along the north edge of the farm").fields
+    assert stone.crop == "Cherry"
+
+
+def test_the_rows_spacing_first_in_a_bracket_of_spacings() -> None:
+    _bing, lapins = recipe(
+        "two cherry blocks in full bloom: Bing (rows 5 m apart, trees 3 m) and Sweetheart "
+        "Lapins (rows 4.5 m, trees 2.5 m). Lapins block east of Bing."
+    ).fields
+    assert (lapins.agronomy.row_spacing_m, lapins.agronomy.in_row_spacing_m) == (4.5, 2.5)

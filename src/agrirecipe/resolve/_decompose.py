@@ -277,6 +277,9 @@ class MentionBuilder:
             spec = item.data["value"]
             if spec["individual"] and mention.has_crop and _plot_excludes(spec, mention):
                 return  # "tomato vines" are tomato plants, not a vineyard
+            held = mention.plot["options"] if mention.plot is not None else ()
+            if held and set(held) <= set(spec["options"]):
+                return  # "stone fruit trees": the trees of the narrower group named first
             if mention.plot is None or spec["narrows"]:
                 mention.plot = spec
             return
