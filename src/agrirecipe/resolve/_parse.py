@@ -36,7 +36,8 @@ step  pass                                        module (data)
       open, negations); counts, shared            ``_structure``,
       attributes; the members a plural lists;     ``_refinements``,
       descriptions of plants named;               ``_descriptions``,
-      back-references; list headings              ``_coreference``, ``_headings``
+      back-references; plots said with a field;   ``_coreference``,
+      list headings                               ``_appositives``, ``_headings``
 11    head-less clauses' words to their fields    ``_loose``,
       (which fields a measure is said of)         ``_measures``
 12    fields of each mention, their attributes    ``_fields``
@@ -52,8 +53,9 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Sequence
 
 from agrirecipe._errors import PromptError, UnknownCropError
+from agrirecipe.resolve._appositives import merge_appositive_plots
 from agrirecipe.resolve._casual import count_said_after_crop, expand_casual
-from agrirecipe.resolve._coreference import merge_appositive_plots, merge_coreferences
+from agrirecipe.resolve._coreference import merge_coreferences
 from agrirecipe.resolve._decompose import (
     Clause,
     Mention,
