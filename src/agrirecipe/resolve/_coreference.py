@@ -30,6 +30,7 @@ from agrirecipe.resolve._structure import (
     same_variety,
     strong_crops,
 )
+from agrirecipe.resolve._zones import zone_of
 
 __all__ = ["merge_coreferences"]
 
@@ -513,11 +514,7 @@ def _other_side(earlier: Mention, mention: Mention) -> bool:
 def _in_another_zone(kept: Sequence[Mention], mention: Mention) -> bool:
     """Whether ``mention`` names a crop again in a zone of its own, when every earlier
     field of that crop lies in another zone ("top right maize, bottom left maize")."""
-    own = _zones_of(mention)
+    own = zone_of(mention.items)
     crops = strong_crops(mention)
     same = [m for k in kept for m in (k.refinements or [k]) if strong_crops(m) & crops]
-    return bool(own) and bool(same) and all(_zones_of(m) and not _zones_of(m) & own for m in same)
-
-
-def _zones_of(mention: Mention) -> set[str]:
-    return {str(s.value) for i in mention.items if i.role == "zone" for s in i.senses_of("zone")}
+    return own is not None and bool(same) and all(zone_of(m.items) not in (None, own) for m in same)

@@ -27,6 +27,7 @@ __all__ = [
     "complete_orders",
     "drop_placed_neighbours",
     "find_zones",
+    "zone_of",
     "zone_owners",
     "zone_relations",
 ]
@@ -218,7 +219,7 @@ def _as_seen(found: Sequence[ZoneMatch], tokens: Sequence[Token]) -> list[ZoneMa
     return seen
 
 
-def _zone_of(items: Sequence[Item]) -> str | None:
+def zone_of(items: Sequence[Item]) -> str | None:
     """A field's zone: a compass one before a photo's depth ("closest to me at the south
     end" is south)."""
     zones = [str(i.data["zone"]) for i in items if i.role == "zone"]
@@ -229,7 +230,7 @@ def zone_relations(fields: Sequence[Sequence[Item]]) -> list[RelationIntent]:
     """Relations between the fields of neighbouring zones (by field index)."""
     zones: dict[int, str] = {}
     for index, items in enumerate(fields):
-        zone = _zone_of(items)
+        zone = zone_of(items)
         if zone is not None:
             zones[index] = zone
     if len(set(zones.values())) < 2:
@@ -376,7 +377,7 @@ def complete_orders(
         edges["ns" if relation.kind in ("north_of", "south_of") else "ew"].add(pair)
     zones: dict[int, str] = {}
     for index, items in enumerate(fields):
-        zone = _zone_of(items)
+        zone = zone_of(items)
         if zone is not None:
             zones[index] = zone
     added: list[tuple[str, int, int]] = []
