@@ -166,6 +166,9 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
             if previous.plot is None:
                 previous.plot = mention.plot
             clause.mentions = [m for m in clause.mentions if m is not mention]
+            # ("... side by side on a terrace in the Algarve in March": the time said with
+            # the plot stays in its clause, for the fields it is said of)
+            clause.loose.extend(i for i in mention.items if i.role in ("month", "season"))
             continue
         kept.append(mention)
     return kept

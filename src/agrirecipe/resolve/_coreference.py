@@ -247,6 +247,13 @@ def merge_coreferences(
             and not (kept and _other_side(kept[-1], mention))
             # ("Top left wheat, top right maize, bottom left maize": another quarter)
             and not _in_another_zone(kept, mention)
+            # ("Grain maize on the big field and, beside it, sweetcorn": a kind named
+            # bare, placed against it)
+            and not (
+                not is_definite
+                and names_a_variety(mention)
+                and _placed_past_a_pronoun(clauses, clause)
+            )
         )
         if not anaphoric:
             if first is not None and first.norm == "both" and mention.count is None:
@@ -478,6 +485,25 @@ def _related_to(clauses: Sequence[Clause], clause: Clause, earlier: Mention) -> 
         return False
     before = [m for c in clauses[: clause.index] for m in c.mentions]
     return bool(before) and before[-1] is earlier
+
+
+def _placed_past_a_pronoun(clauses: Sequence[Clause], clause: Clause) -> bool:
+    """Whether the clause before ``clause`` places it against a field by a pronoun
+    ("..., beside it, sweetcorn"; "and north of them, pears")."""
+    if clause.index == 0 or clause.link is None or clause.link.norm != ",":
+        return False
+    previous = clauses[clause.index - 1]
+    link = previous.link
+    return (
+        link is not None
+        and link.role in ("relation", "between")
+        and not previous.mentions
+        and [i.norm for i in previous.items] in (["it"], ["them"], ["that"], ["those"])
+        # (not "a sweetcorn plot next to them, sweetcorn 4 rows ...": the placement of the
+        # field right before it)
+        and clause.index >= 2
+        and not clauses[clause.index - 2].mentions
+    )
 
 
 def _last_named(clauses: Sequence[Clause], clause: Clause) -> int:

@@ -590,6 +590,34 @@ _COUNTED_CROP_ROWS = re.compile(
     r"north|south|east|west)\s|\d|\())))\b"
 )
 
+_PLANT_UNITS = frozenset({"trees", "tree", "vines", "vine", "plants", "plant", "bushes", "palms"})
+#: "40 Regina cherry trees and 60 Bing": a count of plants, then one said without its noun.
+_ELLIPTIC_PLANTS = re.compile(
+    r"(?<![\w.,])\d+\s+(?:[A-Za-z][\w'’-]*\s+){1,3}"
+    r"(?P<unit>trees|vines|plants|bushes|palms)\b"
+    r"\s*(?:,|(?i:and|&|\+|plus)|,\s*(?i:and))\s+"
+    r"\d+\s+(?P<words>[A-Za-z][\w'’-]*(?:\s+[A-Za-z][\w'’-]*)?)\b"
+    r"(?!\s+(?:trees|tree|plants|plant|vines|vine|bushes|bush|palms|rows|beds|ridges|m|ha|acres?)\b)"
+)
+#: "30 in (76.2 cm) rows": a measure with the same in other units in brackets after it.
+_CONVERTED = re.compile(
+    r"(?P<measure>\b\d+(?:\.\d+)?\s*(?:in|inch|inches|ft|feet|foot|\"|cm|m|mm)\.?)\s*"
+    r"\(\s*(?:=\s*|~\s*|(?i:approx|about|ca|c)\.?\s*)?\d+(?:\.\d+)?\s*"
+    r"(?:cm|m|mm|in|inch|inches|ft|feet)\.?\s*\)"
+)
+#: "Kordia with 8 rows, Regina with 6": a count said with its noun, then one without.
+_ELLIPTIC_WITH = re.compile(
+    r"\b(?i:with)\s+\d+\s+(?P<unit>rows|beds|ridges|trees|vines|plants)\b[^.;:]*?,\s*"
+    r"(?:(?i:and)\s+)?(?P<words>[A-Za-z][\w'’-]*(?:\s+[A-Za-z][\w'’-]*)?)\s+(?i:with)\s+"
+    r"\d+\b(?!\s*(?:[A-Za-z%]|\.\d))"
+)
+#: "a single tomato row 20 m long", "one lettuce bed": one row (or bed) of the crop.
+_SINGLE_CROP_ROW = re.compile(
+    r"(?<![\w.,])(?P<one>(?i:a single|one single|a lone|just one|only one))\s+"
+    r"(?P<words>[A-Za-z][\w'’-]*(?:\s+[A-Za-z][\w'’-]*)?)\s+"
+    r"(?P<noun>(?i:row|ridge|drill|bed))\b(?!\s+(?i:of)\b)"
+)
+
 
 def hoist_counted_crops(text: str, tag: Callable[[str], Sequence[Any]]) -> str:
     """``text`` with counts said of a crop's rows or plants written so that the number
@@ -631,17 +659,52 @@ def hoist_counted_crops(text: str, tag: Callable[[str], Sequence[Any]]) -> str:
         if names_a_crop(words):
             return f"{match.group('n')} {words} plants"
         first, _, rest = words.partition(" ")
+        if first.lower() in _PLANT_UNITS and rest.lower() in ("per", "each", "for"):
+            return match.group(0)  # "500 vines per block": the plants of each plot
         plot = any(i.has("plot") for i in tag(rest))  # "100 apple orchards": fields
         if rest and names_a_crop(first) and not plot:  # "1,200 Valencia in one block"
             return f"{match.group('n')} {first} plants {rest}"
         return match.group(0)
 
+    def single_row(match: re.Match[str]) -> str:
+        # "a single tomato row 20 m long": the crop in one row
+        if not names_a_crop(match.group("words")):
+            return match.group(0)
+        return f"{match.group('words')} in {match.group('one')} {match.group('noun')}"
+
+    def same_plants(match: re.Match[str]) -> str:
+        # "40 Regina cherry trees and 60 Bing": the second count is of trees too
+        words = match.group("words")
+        if words.split()[0].lower() in _PLANT_UNITS:
+            return match.group(0)  # ("..., 500 vines per block": said with its noun)
+        for said in (words, words.split()[0]):  # ("60 Bing in the next block")
+            if names_a_crop(said):
+                end = match.start("words") + len(said)
+                return (
+                    f"{match.string[match.start() : end]} {match.group('unit')}"
+                    + (match.string[end : match.end()])
+                )
+        return match.group(0)
+
+    def same_unit_with(match: re.Match[str]) -> str:
+        # "Kordia with 8 rows, Regina with 6": the second count is of rows too
+        if not names_a_crop(match.group("words")):
+            return match.group(0)
+        return f"{match.group(0)} {match.group('unit')}"
+
+    text = _CONVERTED.sub(r"\g<measure>", text)
+    text = _ELLIPTIC_WITH.sub(same_unit_with, text)
+    for _ in range(8):  # ("120 Gala trees, 80 Fuji and 60 Jonagold": each in turn)
+        text, before = _ELLIPTIC_PLANTS.sub(same_plants, text), text
+        if text == before:
+            break
     text = _ROW_TRIPLE.sub(r"\g<n> \g<rows> at \g<spacing>, rows \g<length> long", text)
     text = _PLOT_OF_MANY.sub(plot_of_many, text)
     text = _SPACING_KEY.sub("", text)
     text = _MANY_OF_A_CROP.sub(many_plants, text)
     text = _ELLIPTIC_COUNT.sub(r"\g<head> and \g<n> \g<noun> of", text)
     text = _ROWS_OF_CROP_AT.sub(crop_rows(" {tail}"), text)
+    text = _SINGLE_CROP_ROW.sub(single_row, text)
     return _COUNTED_CROP_ROWS.sub(crop_rows(""), text)
 
 

@@ -29,6 +29,7 @@ __all__ = [
     "drop_list_headings",
     "drop_plural_headings",
     "drop_titles",
+    "drop_trailing_summaries",
     "fill_counted_lists",
     "name_counted_plots",
 ]
@@ -460,6 +461,66 @@ def drop_plural_headings(clauses: Sequence[Clause], mentions: list[Mention]) -> 
         return mentions  # ("test plots next to a wheat field and a maize field": placed)
     _lend_and_drop(clauses, heading, later)
     return later
+
+
+def drop_trailing_summaries(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
+    """'Navel oranges at 7 x 4 m and Moro blood oranges at 6 x 3 m, adjacent blocks of 150
+    trees each': a plural plot of no crop, closing the sentence of two or more fields of
+    named crops (uncounted, or counted as many), is the plots they are in: not more
+    fields. Its stage, health, cues, season, size and measures go to each field that
+    states none of its own. Return the fields left."""
+    for position, summary in enumerate(mentions):
+        if (
+            position < 2
+            or summary.has_crop
+            or summary.category is not None
+            or summary.plot is None
+            or not summary.plot["plural"]
+            or summary.refinements
+            or not (summary.implied_count or summary.count == position)
+        ):
+            continue
+        start, end = _sentence_of(clauses, summary.clause)
+        fields = mentions[:position]
+        if (
+            any(m.clause < start for m in fields)
+            or any(m.clause < end for m in mentions[position + 1 :])
+            or not all(
+                strong_crops(m) and (m.count or 1) == 1 and not m.refinements for m in fields
+            )
+        ):
+            continue
+        lent = [i for i in summary.items if i.role in (*_SUMMARY_ROLES, "size", "geometry")]
+        for field in fields:
+            own = {i.role for i in field.items}
+            keys = {g.key for i in field.items if i.role == "geometry" for g in i.data["geometry"]}
+            field.items.extend(
+                i
+                for i in lent
+                if (i.role != "geometry" and i.role not in own)
+                # (measures by what they measure: "150 trees each" beside "at 7 x 4 m")
+                or (i.role == "geometry" and not keys & {g.key for g in i.data["geometry"]})
+            )
+        for clause in clauses:
+            clause.mentions = [m for m in clause.mentions if m is not summary]
+        return [m for m in mentions if m is not summary]
+    return mentions
+
+
+def _sentence_of(clauses: Sequence[Clause], index: int) -> tuple[int, int]:
+    """The first clause of the sentence clause ``index`` is in, and the first after it."""
+    start = index
+    while start > 0 and link_norm(clauses[start]) not in SENTENCE_MARKS:
+        start -= 1
+    end = next(
+        (
+            c.index
+            for c in clauses[index + 1 :]
+            if c.link is not None and c.link.norm in SENTENCE_MARKS
+        ),
+        len(clauses),
+    )
+    return start, end
 
 
 def fill_counted_lists(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:

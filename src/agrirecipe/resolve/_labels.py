@@ -86,7 +86,7 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
     label ("Block A = Jonagored apples"). Text with fewer than two labels that name
     crops is returned unchanged.
     """
-    text = _PLURAL_LABELS.sub(_one_noun_each, _valued_members(_numbered_members(text)))
+    text = _PLURAL_LABELS.sub(_one_noun_each, _valued_members(_numbered_members(text, tag)))
     definitions = sorted(
         [
             *(m for m in _DEFINITION.finditer(text) if not _REFERRED.search(text[: m.start()])),
@@ -239,15 +239,23 @@ def drop_list_numbers(text: str) -> str:
 
 # "plot 1 at 70,000 plants/ha, plot 2 at 100,000": two members told apart by number
 _MEMBER_LABEL = re.compile(
-    r"\b(?P<noun>(?i:plot|block|field|strip|bed|parcel))\s+(?P<label>[12]|[AB])\b(?!\s*[:=])"
+    r"\b(?P<noun>(?i:plot|block|field|strip|bed|parcel))\s+(?P<label>[12]|[AB])\b(?P<colon>\s*[:=])?"
+)
+# "Field B, east of A": a letter label referred to without its noun
+_BARE_MEMBER = re.compile(
+    rf"\b(?i:{_BEFORE_REFERENCE})\s+(?P<at>(?:(?i:the)\s+)?)(?P<label>[AB])\b(?!\s*[:=])"
 )
 
 
-def _numbered_members(text: str) -> str:
+def _numbered_members(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
     """``text`` with the two members of "two maize plots" called "plot 1" and "plot 2"
     written "one" and "the other" where first named, "the first" and "the second" after
-    ("plot 1: Gala", with a colon or an equals sign, is left to :func:`resolve_labels`)."""
+    ("plot 1: Gala", a label that names a crop, is left to :func:`resolve_labels`;
+    "Field A: 200 x 150 m, rows N-S. Field B, east of A: 0.8 ha" names none, so A and
+    B are the two members)."""
     matches = list(_MEMBER_LABEL.finditer(text))
+    if any(m.group("colon") and _crop_phrase(text[m.end() :], tag) for m in matches):
+        return text
     labels = [m.group("label").upper() for m in matches]
     if not matches or set(labels) not in ({"1", "2"}, {"A", "B"}) or labels[0] not in "1A":
         return text
@@ -257,6 +265,11 @@ def _numbered_members(text: str) -> str:
     counted = re.search(rf"\b(?i:two|2)\s+(?:[\w-]+\s+){{0,2}}(?i:{noun}s)\b", text)
     if counted is None or counted.end() > matches[0].start():
         return text
+    if labels[0] == "A":
+        matches = sorted(
+            [*matches, *(m for m in _BARE_MEMBER.finditer(text) if m.start() > matches[0].end())],
+            key=lambda m: m.start(),
+        )
     out = text
     for match in reversed(matches):
         label = match.group("label").upper()
@@ -267,7 +280,8 @@ def _numbered_members(text: str) -> str:
             word = "one" if label in "1A" else "the other"
         else:
             word = "the first" if label in "1A" else "the second"
-        out = out[: match.start()] + word + out[match.end() :]
+        start = match.start("at") if "at" in match.groupdict() else match.start()
+        out = out[:start] + word + out[match.end("label") :]
     return out
 
 

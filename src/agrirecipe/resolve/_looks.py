@@ -125,10 +125,33 @@ def colours_are_not_crops(items: Sequence[Item], text: str) -> None:
         if (
             word.role == "head"
             and word.norm in reader_words("colours")
-            and _colours_a_part(items[index + 1 :])
+            and (_colours_a_part(items[index + 1 :]) or _colours_the_fruit(items, index))
         ):
             word.role = "filler"
             word.data["colour"] = True
+
+
+def _colours_the_fruit(items: Sequence[Item], index: int) -> bool:
+    """'sweet peppers, red, yellow and orange fruit', 'peppers with orange fruit': a crop
+    word that is a colour, before "fruit", after another colour or after another crop
+    named in its sentence, is the colour of that crop's fruit."""
+    if index + 1 >= len(items) or items[index + 1].norm not in ("fruit", "fruits"):
+        return False
+    colour = items[index]
+    colours = reader_words("colours")
+    listed = (
+        index >= 2
+        and items[index - 1].norm in ("and", "&", "or", ",")
+        and (items[index - 2].norm in colours)
+    )
+    named = False
+    for item in reversed(items[:index]):
+        if item.role == "separator" and item.norm in (".", "!", "?", ";"):
+            break
+        if item.role == "head" and crops_of(item) - crops_of(colour):
+            named = True
+            break
+    return listed or named
 
 
 def _colours_a_part(after: Sequence[Item]) -> bool:

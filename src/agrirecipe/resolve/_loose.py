@@ -183,6 +183,10 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
                 targets = members
             else:
                 targets = [member or refined.refinements[-1]]
+        elif (opened := _member_opening(clauses, position)) is not None:
+            # "Two maize fields. The other, east of the first, is 0.8 ha, rows east-west":
+            # the sentence a member opens goes on about that member
+            targets = [opened]
         elif clause.link is not None and clause.link.norm == "also" and before:
             # "a popping corn block, also 30 rows at 30 in": the same again, for it (the
             # field named last, not one named again: "peppers east of the tomatoes, also
@@ -292,6 +296,26 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
 
 
 _ALL_PLANTS = frozenset({"plants", "trees", "vines", "crops", "bushes"})
+_OPENINGS = frozenset({".", "!", ";", ":"})
+
+
+def _member_opening(clauses: Sequence[Clause], position: int) -> Mention | None:
+    """The member of a counted plural that opens the sentence clause ``position`` is in
+    ("The other, east of the first, is 0.8 ha, ..."), when no field is named between."""
+    for index in range(position - 1, -1, -1):
+        clause = clauses[index]
+        if clause.mentions:
+            return None
+        if clause.refinement is not None:
+            member = clause.refinement
+            while index > 0 and clauses[index - 1].refinement is member:
+                index -= 1  # (the member's first clause: "The other, ...")
+            link = clauses[index].link
+            opens = link is not None and link.norm in _OPENINGS
+            return member if opens and clause.refined_parent is not None else None
+        if clause.link is not None and clause.link.norm in (".", "!", ";"):
+            return None  # (a colon goes on: "One: 200 x 150 m, rows N-S")
+    return None
 
 
 def _continues_a_description(clauses: Sequence[Clause], position: int) -> bool:

@@ -132,7 +132,9 @@ def shared_by_all(clauses: Sequence[Clause], position: int) -> bool:
         if clause.link is None or not (listing(clause.link) or clause.link.norm == ":"):
             return False
         previous = clauses[index - 1]
-        if previous.mentions:
+        # ("Two maize fields, both with 12 m headlands: one 200 x 150 m, rows N-S": a
+        # member named after "both" ends the run; its measures are its own)
+        if previous.mentions or previous.refinement is not None:
             return False
         # ("Each block is 40 rows x 150 m, rows 2.5 m apart": the "each" clause lent its
         # words to every field, and the measures after it go with them)
@@ -369,8 +371,17 @@ def same_spacing(intent: FieldIntent, before: FieldIntent, words: Sequence[Item]
     length = any(w in i.norm for i in words for w in ("length", "long"))
     # "6 beds of 200-ft rows, and the same layout of Sonata": the whole planting again
     layout = any(w in i.norm for i in words for w in ("layout", "spec", "setup", "set up"))
+    # "same row count and spacing": how many rows, with or without their spacing
+    count = any("count" in i.norm or "number of rows" in i.norm for i in words)
+    spaced = any("spacing" in i.norm for i in words)
+    # "10 beds of the same width", "the same bed width": the beds' width alone
+    width = any("width" in i.norm for i in words)
     keys = (
-        ("row_bearing_deg",)
+        ("rows", *(_SPACINGS if spaced else ()))
+        if count
+        else ("bed_width_m",)
+        if width
+        else ("row_bearing_deg",)
         if direction
         else ("row_length_m",)
         if length

@@ -30,6 +30,8 @@ __all__ = [
 # "Savoy and January King in two neighbouring blocks": the plots of a list, side by side
 _NEIGHBOURING = re.compile(
     r"\b(?P<at>(?i:in|on))\s+(?P<count>(?:\w+\s+)?)(?i:neighbouring|neighboring|adjacent)\s+"
+    # ("in adjacent 24-ridge plots")
+    r"(?P<size>\d+[- ](?i:ridge|row|bed|tree)\s+)?"
     r"(?P<plots>(?i:blocks|plots|fields|strips|beds|patches|paddocks))\b"
 )
 
@@ -55,14 +57,38 @@ def place_neighbouring_plots(text: str) -> str:
     plot"; "Padrón on one bed and Jalapeños on the next" is "Padrón and Jalapeños side
     by side"."""
     text = _COVERED.sub(lambda m: f"{m.group('article')}plot{m.group('of')}", text)
+    text = _BETWEEN_THE_TWO.sub(r"\g<between> them", text)
+    text = _SEPARATES.sub(lambda m: f": {m.group('a')} next to ", text)
+    text = _MEET_AT.sub("side by side", text)
     text = _ONE_AND_THE_NEXT.sub(r" and \g<b> side by side", text)
     text = _AN_ADJACENT.sub(lambda m: f"{m.group('lead')} alongside {m.group('article')} ", text)
     text = _ONE_BESIDE_THE_OTHER.sub("side by side:", text)
     return _NEIGHBOURING.sub(
-        lambda m: f"{m.group('at')} {m.group('count')}{m.group('plots')} side by side", text
+        lambda m: (
+            f"{m.group('at')} {m.group('count')}{m.group('size') or ''}{m.group('plots')} "
+            "side by side"
+        ),
+        text,
     )
 
 
+# "an orchard ..., a vineyard ..., and between the two a strip of strawberries": the two
+# fields just named (not "between the two tomato strips", which names them)
+_BETWEEN_THE_TWO = re.compile(
+    r"\b(?P<between>(?i:between|in between))\s+(?i:the two|the pair|both)"
+    r"(?=\s+(?i:a|an|the|some|is|are|there|sits|lies|runs|we|you|i)\b)"
+)
+# "A hazel hedge separates our Golden Delicious apples, ..., from a field of January King
+# cabbages": the two fields it divides touch it, side by side
+_SEPARATES = re.compile(
+    r"\s+(?i:separates|divides|splits|separating|dividing)\s+(?P<a>[^.;:!?]*?)\s+(?i:from)\s+"
+    r"(?=(?i:a|an|the|our|my|their|some)\b)"
+)
+# "Two onion fields meet at the hedge": they touch along it
+_MEET_AT = re.compile(
+    r"\b(?i:meet|meeting|join|joining)\s+(?i:at|along|by|on)\s+(?i:the|a)\s+[\w-]+(?:\s+[\w-]+)?"
+    r"(?=\s*(?:[,.;:!?]|$))"
+)
 # "Two plots for the weeding robot, one beside the other: onions ... and carrots ...": the
 # plots named after the colon stand side by side (before it, "one next to the other"
 # relates the two named first, in order)
@@ -156,11 +182,21 @@ def place_by_cover(text: str) -> str:
     )
 
 
+# "vineyard", "a big field": a plot named alone, no crop, opening its sentence
+_A_PLOT_ALONE = re.compile(
+    r"^\s*(?:(?i:a|an|the|my|our|one|big|small|little|new|old|single)\s+)*"
+    r"(?i:vineyard|orchard|field|plot|block|garden|grove|plantation|patch|bed)\s*$"
+)
+
+
 def _between_sides(match: re.Match[str]) -> str:
     """ " between A and B" for "with A on one side and B on the other"; only ", A and B"
     (the fields' names) when the sentence has placed the field between them already
     ("potatoes between 2 onion fields, sturon on one side red baron on the other")."""
     sentence = re.split(r"[.;!?]", match.string[: match.start()])[-1]
+    if _A_PLOT_ALONE.search(sentence) and match.group("and"):
+        # "vineyard w chardonay on one side & pinot noire on the other": its two halves
+        return f" with {match.group('a')} and {match.group('b')}"
     if re.search(r"\b(?i:between)\b", sentence):
         return f", {match.group('a')} and {match.group('b')}"
     if not match.group("and"):

@@ -77,6 +77,7 @@ from agrirecipe.resolve._headings import (
     drop_list_headings,
     drop_plural_headings,
     drop_titles,
+    drop_trailing_summaries,
     fill_counted_lists,
     name_counted_plots,
 )
@@ -133,6 +134,7 @@ from agrirecipe.resolve._scan import assign_roles, read_heights, read_latitude, 
 from agrirecipe.resolve._structure import (
     apply_each_side,
     apply_plural_counts,
+    count_a_list_after_it,
     raise_conflicts,
     share_count_over_a_list,
     share_counted_fields,
@@ -246,6 +248,7 @@ class PromptReader(FieldReading):
         apply_plural_counts(clauses, int(vocabulary()["plural_fields"]))
         take_the_lower_count(clauses)
         share_count_over_a_list(clauses)
+        count_a_list_after_it(clauses)
         self._note(apply_corrections(clauses), "replaced by a correction")
         self._note(
             drop_alternatives(clauses),
@@ -267,7 +270,7 @@ class PromptReader(FieldReading):
         mentions = drop_counted_summaries(clauses, mentions)
         mentions = fill_counted_lists(clauses, mentions)
         mentions = drop_titles(clauses, mentions)
-        mentions = drop_plural_headings(clauses, mentions)
+        mentions = drop_trailing_summaries(clauses, drop_plural_headings(clauses, mentions))
         mentions = name_counted_plots(clauses, mentions)
         apply_each_side(clauses)
         for clause in clauses:

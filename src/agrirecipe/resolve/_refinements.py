@@ -387,6 +387,19 @@ def apply_refinements(
                 enumerating = listed
                 continue
         placement = link is not None and link.role == "trailer" and not clause.items
+        if parent is not None and _member_plot(clause, previous, parent):
+            # "Two banana blocks. Dwarf Cavendish, block 50 m by 40 m. Lady Finger, ...":
+            # the member's own plot; the listing goes on after it
+            assert previous is not None and previous.refinement is not None
+            plot = clause.mentions[0]
+            for item in plot.items:
+                if item in plot.heads:
+                    builder.add_head(previous.refinement, item)
+                else:
+                    previous.refinement.items.append(item)
+            clause.mentions = []
+            clause.refined_parent, clause.refinement = parent, previous.refinement
+            continue
         describing = parent is not None and _describes_plants(clause.mentions)
         if describing and previous is not None:
             clause.refined_parent = previous.refined_parent  # the listing goes on after it
@@ -432,6 +445,26 @@ def _describes_plants(mentions: Sequence[Mention]) -> bool:
         return False
     heads = mentions[0].heads
     return bool(heads) and all(h.norm in descriptive_words() for h in heads)
+
+
+def _member_plot(clause: Clause, previous: Clause | None, parent: Mention) -> bool:
+    """'Two banana blocks. Dwarf Cavendish, block 50 m by 40 m. Lady Finger, ...': one
+    plot of no crop right after a member is that member's plot (merged with it later);
+    the listing goes on after it."""
+    if previous is None or previous.refined_parent is not parent or previous.refinement is None:
+        return False
+    if len(clause.mentions) != 1 or link_norm(clause) != ",":
+        return False
+    plot = clause.mentions[0]
+    return (
+        plot.count is None
+        and not plot.has_crop
+        and plot.category is None  # ("..., the cereal plot west of the root plot")
+        and not definite_before_head(clause, plot)
+        and plot.plot is not None
+        and not plot.plot["plural"]
+        and not clause.loose
+    )
 
 
 #: Words that open a relative clause about the member just listed.

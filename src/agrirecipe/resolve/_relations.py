@@ -24,6 +24,7 @@ from agrirecipe.resolve._landmarks import across_landmarks, held_by, landmark_of
 from agrirecipe.resolve._lexicon import Item
 from agrirecipe.resolve._links import (
     ARTICLES,
+    OPPOSITE,
     PRONOUNS,
     THE_TWO,
     coordinated,
@@ -91,17 +92,36 @@ def read_relations(
         kind = link.data["value"]
         relations.extend(field_relations(kind, subject, (centre,), members, link, trace))
     landmarks: list[tuple[str, str, Mention, Item]] = []
+    landmark_at: dict[int, str] = {}  # the landmark each relation clause placed against
+    last_relation: int | None = None
     directed = directed_neighbours(clauses)
     for position, clause in enumerate(clauses):
         link = clause.link
         if link is None or link.role not in ("relation", "between", "trailer"):
             continue
+        previous_relation, last_relation = last_relation, position
         if position in placed or position in directed.values():
+            continue
+        if (
+            previous_relation in landmark_at
+            and link.role == "relation"
+            # (compass sides both: "the Riesling parcel by the village, the Pinot parcel
+            # right next to it" is next to the Riesling)
+            and {str(link.data.get("value")), landmarks[-1][0]} <= set(OPPOSITE)
+            and not clause.mentions
+            and [i.norm for i in clause.items] == ["it"]
+            and (named := [m for c in clauses[:position] for m in c.named])
+            and named[-1].clause == position - 1
+        ):
+            # "wheat north of the farmhouse, maize south of it": the landmark again
+            landmark_at[position] = landmark_at[previous_relation]
+            landmarks.append((str(link.data.get("value")), landmark_at[position], named[-1], link))
             continue
         landmark = landmark_of(clause)
         if landmark is not None and clause.mentions:
             # "east of the yard there's 2 ha of apples": placed by the yard
             landmarks.append((str(link.data.get("value")), landmark, clause.mentions[0], link))
+            landmark_at[position] = landmark
             continue
         if (
             link.role == "relation"
@@ -131,6 +151,7 @@ def read_relations(
                 continue
             if named and landmark is not None and position - 1 == named[-1].clause:
                 landmarks.append((str(link.data.get("value")), landmark, named[-1], link))
+                landmark_at[position] = landmark
                 continue
             # "a test strip along the farm track": placed by scenery, not by a field
             trace.append(
@@ -233,6 +254,10 @@ def read_relations(
         if link.role == "trailer" and link.data.get("value") in ("next_to", "row"):
             ordered = link.data.get("value") == "row"
             group = coordinated(clauses, position) or listed_after(clauses, position)
+            if ordered and _placed_each(clauses, group):
+                # "Three pear blocks in a line: Conference at the west end, Comice at the
+                # east end and Williams between them": the places said, not the order named
+                continue
             if len(group) > 2:
                 # "potatoes, onions and cabbages side by side": a row, each beside the next.
                 for first, second in zip(group[1:], group, strict=False):
@@ -519,6 +544,22 @@ def _relation_mentions(
     return None
 
 
+def _placed_each(clauses: Sequence[Clause], group: Sequence[Mention]) -> bool:
+    """Whether the fields of a row are placed one by one after it (by zones, or by a
+    relation said between them): then the row's order is not the order named."""
+    fields = [r for m in group for r in ({id(r): r for r in m.refinements}.values() or (m,))]
+    if len(fields) < 3:
+        return False
+    zoned = sum(1 for m in fields if any(i.role == "zone" for i in m.items))
+    first = min(m.clause for m in fields)
+    last = max(c.index for c in clauses if c.refinement in fields or c.index <= first) + 1
+    related = any(
+        c.link is not None and c.link.role in ("relation", "between")
+        for c in clauses[first : last + 1]
+    )
+    return zoned >= 2 or (zoned >= 1 and related)
+
+
 def _both_said(clauses: Sequence[Clause], position: int) -> bool:
     """Whether "both" (or "both of them") alone stands right before the relation at
     ``position``, after two fields joined by "and"."""
@@ -526,7 +567,10 @@ def _both_said(clauses: Sequence[Clause], position: int) -> bool:
         return False
     previous = clauses[position - 1]
     words = [i.norm for i in previous.items]
-    joined = clauses[position - 2]
+    index = position - 2
+    while index > 0 and not clauses[index].mentions and not clauses[index].items:
+        index -= 1  # ("Lollo and Bibb lettuce in adjacent beds, both west of ...")
+    joined = clauses[index]
     return (
         not previous.mentions
         and words[:1] == ["both"]

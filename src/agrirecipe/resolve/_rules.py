@@ -24,7 +24,8 @@ from agrirecipe.resolve._parse import PromptReader
 __all__ = ["LexicalResolver", "RulesResolver", "fuzzy_unknown_words", "nearest_by_spelling"]
 
 # Senses a misspelt word may be read together with ("golden delicous", "pink lday").
-_SOFT_KINDS = frozenset({"crop", "variety", "category", "filler"})
+# ("goldn acre cabbages": "acre" inside a name, never after a number)
+_SOFT_KINDS = frozenset({"crop", "variety", "category", "filler", "area_unit"})
 _WINDOW = 3
 
 
@@ -67,6 +68,12 @@ def fuzzy_unknown_words(items: list[Item], lexicon: Lexicon) -> tuple[list[Item]
                 window = out[start:end]
                 if not all(_soft(w) for w in window):
                     continue
+                if (
+                    start
+                    and number_value(out[start - 1].norm) is not None
+                    and any(s.kind == "area_unit" for w in window for s in w.senses)
+                ):
+                    continue  # ("5 acre fild": a size, then the typo)
                 text = " ".join(w.norm for w in window)
                 match = lexicon.fuzzy(text)
                 if match is None:

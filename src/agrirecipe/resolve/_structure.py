@@ -30,6 +30,7 @@ __all__ = [
     "apply_each_side",
     "apply_plural_counts",
     "attribute_of",
+    "count_a_list_after_it",
     "definite_before_head",
     "definite_words",
     "descriptive_words",
@@ -212,6 +213,43 @@ def share_count_over_a_list(clauses: Sequence[Clause]) -> None:
         second.count = total - first.count
         second.distinct = second.distinct or first.distinct
         second.implied_count = False
+
+
+def count_a_list_after_it(clauses: Sequence[Clause]) -> None:
+    """'flint corn & dent corn 2 fields', 'roma toms & beef tomatoes & cherry toms 3 plots':
+    a number and plural plot said right after the last of a list of named crops, and as
+    many as the list names, count the list's fields (one each), not more of the last."""
+    for position, clause in enumerate(clauses):
+        if len(clause.mentions) != 1 or position == 0:
+            continue
+        last = clause.mentions[0]
+        heads = [h for h in last.heads if h.role != "plot"]
+        plots = [h for h in last.heads if h.role == "plot"]
+        numbers = [i for i in last.items if i.role == "number"]
+        if (
+            last.count is None
+            or last.count < 2
+            or not heads
+            or not plots
+            or not plots[-1].data["value"].get("plural")
+            or len(numbers) != 1
+            or numbers[0].start < max(h.start for h in heads)
+        ):
+            continue
+        listed = [last]
+        index = position
+        while index > 0 and len(listed) < last.count:
+            link = clauses[index].link
+            previous = clauses[index - 1]
+            if link is None or link.role not in ("conjunction", "separator"):
+                break
+            if len(previous.mentions) != 1 or previous.mentions[0].count is not None:
+                break
+            listed.append(previous.mentions[0])
+            index -= 1
+        if len(listed) == last.count and all(m.has_crop for m in listed):
+            last.count = None
+            last.implied_count = False
 
 
 def first_word(mention: Mention) -> Item | None:
