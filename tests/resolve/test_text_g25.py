@@ -279,3 +279,31 @@ def test_no_two_of_them_the_same_crop() -> None:
     ).fields
     assert len(fields) == 4
     assert len({f.crop for f in fields}) == 4
+
+
+def test_a_crop_on_both_sides_of_scenery_is_two_fields() -> None:
+    left, right = recipe(
+        "Photo taken from the ditch bank with cereals on both sides of the track - the field on "
+        "the left still green and leafy, the one on the right golden with the heads bent right "
+        "over."
+    ).fields
+    assert {left.category, right.category} == {"Cereals"}
+    assert right.stage == "Maturation"
+    assert [f.crop for f in recipe("wheat on both sides of the track").fields] == ["Wheat"] * 2
+
+
+def test_a_crop_on_both_sides_of_a_field(named_relations: Callable[[str], NamedRelations]) -> None:
+    fields = recipe("onions on both sides of the potatoes").fields
+    assert sorted(f.crop for f in fields) == ["Onion", "Onion", "Potato"]
+    assert named_relations("onions on both sides of the potatoes") == {
+        ("between", "Potato", ("Onion", "Onion"))
+    }
+
+
+def test_a_walk_from_the_field_furthest_one_way(
+    named_relations: Callable[[str], NamedRelations],
+) -> None:
+    assert named_relations(
+        "From the church tower you can make out three of our fields: Agria potatoes furthest "
+        "north, then a strip of Stuttgarter onions, and Chantenay carrots at the southern end."
+    ) >= {("north_of", "Agria", ("Stuttgarter",)), ("north_of", "Stuttgarter", ("Chantenay",))}

@@ -189,6 +189,16 @@ _A_PLOT_ALONE = re.compile(
 )
 
 
+# "Agria potatoes furthest north, then a strip of onions, and carrots at the southern
+# end": a walk from the field said to be furthest one way, the other way
+_FURTHEST_THEN = re.compile(
+    r"(?P<lead>(?:^|[:;.!?]\s*))(?P<first>[A-Za-z][^,;.:!?]*?)\s+"
+    r"(?i:furthest|farthest|most|right at the|at the far)\s+"
+    r"(?P<side>(?i:north|south|east|west))(?i:erly| end)?\s*,\s*(?i:then)\s+"
+)
+_OPPOSITE = {"north": "south", "south": "north", "east": "west", "west": "east"}
+
+
 def _between_sides(match: re.Match[str]) -> str:
     """ " between A and B" for "with A on one side and B on the other"; only ", A and B"
     (the fields' names) when the sentence has placed the field between them already
@@ -210,6 +220,13 @@ def place_sides(text: str) -> str:
     cherries are east" written "the cherries are to the east", and "on the
     20 ha east field ..., on the 8 ha west field" written "in the east, 20 ha ..., in the
     west, 8 ha" (two or more sides, not all the same)."""
+    text = _FURTHEST_THEN.sub(
+        lambda m: (
+            f"{m.group('lead')}going {_OPPOSITE[m.group('side').lower()]}, "
+            f"{m.group('first')}, then "
+        ),
+        text,
+    )
     text = _ONE_SIDE_AND_OTHER.sub(_between_sides, text)
     text = _ONE_ON_A_SIDE.sub(lambda m: f"{m.group(0)} of the other", text)
     # "durondeau pears and bing cherries, the cherries r east": a side said bare after "are"
@@ -260,4 +277,45 @@ def place_flanks(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
                 return f"{match.group('verb')} by {named} {sides}{' ' + rest if rest else ''}{tail}"
         return match.group(0)
 
-    return _FLANKED_SIDES.sub(rewrite, text)
+    def both_sides(match: re.Match[str]) -> str:
+        # "cereals on both sides of the track": a field on each side of the scenery
+        items = [i for i in tag(match.group("crop")) if i.role != "separator"]
+        if not items or not all(i.has("crop", "variety", "category") for i in items):
+            return match.group(0)
+        return (
+            f"{match.group('crop')} in two fields, one each side of "
+            f"{match.group('the')}{match.group('thing')}"
+        )
+
+    def around_a_field(match: re.Match[str]) -> str:
+        # "onions on both sides of the potatoes": the potatoes, with onions on both sides
+        for said in (match.group("x"), match.group("y")):
+            items = [i for i in tag(said) if i.role != "separator"]
+            if not items or not all(i.has("crop", "variety", "category", "plot") for i in items):
+                return match.group(0)
+            if not any(i.has("crop", "variety", "category") for i in items):
+                return match.group(0)
+        return f"{match.group('y')}, {match.group('x')} on both sides"
+
+    text = _BOTH_SIDES_OF_SCENERY().sub(both_sides, _FLANKED_SIDES.sub(rewrite, text))
+    return _AROUND_A_FIELD.sub(around_a_field, text)
+
+
+# "onions on both sides of the potatoes", "wheat either side of the maize block"
+_AROUND_A_FIELD = re.compile(
+    r"(?P<x>\b[A-Za-z][\w'-]*(?:\s+(?!(?i:on|both|either|each)\b)[A-Za-z][\w'-]*)?)\s+"
+    r"(?:(?i:on)\s+)?"
+    r"(?i:both sides of|either side of|each side of)\s+(?:(?i:the)\s+)?"
+    r"(?P<y>[A-Za-z][\w'-]*(?:\s+[A-Za-z][\w'-]*)?)(?=\s*(?:[,.;:!?]|$))"
+)
+
+
+@functools.cache
+def _BOTH_SIDES_OF_SCENERY() -> re.Pattern[str]:  # noqa: N802
+    """'cereals on both sides of the track', 'wheat either side of the lane'."""
+    things = "|".join(re.escape(w) for w in scenery_words("boundaries", "ground"))
+    return re.compile(
+        r"(?P<crop>\b[A-Za-z][\w'-]*)\s+(?:(?i:on|growing on|grown on)\s+)?"
+        r"(?i:both sides of|either side of|each side of)\s+"
+        rf"(?P<the>(?i:the|a|an|our|that)\s+)(?P<thing>(?i:{things}))\b"
+    )

@@ -379,13 +379,16 @@ def _validate(intent: SceneIntent, context: ResolveContext) -> None:
     # "150 Pink Lady plants"; "one", "other": "the north block has ..., the south block
     # ..." is read as "one ..., the other ..."; "at", "rows", "long": "8 rows x 76 cm x
     # 30 m" as "8 rows at 76 cm, rows 30 m long"; "plot": "the polytunnel of tomatoes" as
-    # "the plot of tomatoes"; "them": "between the two a strip of ..." as "between them"
+    # "the plot of tomatoes"; "them": "between the two a strip of ..." as "between them";
+    # "two", "fields", "each": "cereals on both sides of the track" as "cereals in two
+    # fields, one each side of the track"
     expanded = expand_casual(intent.prompt)
     prompt_words = (
         _words(intent.prompt)
         | _words(expanded)
         | _words(spread_value_lists(expanded))
         | {"the", "in", "plants", "one", "other", "at", "rows", "long", "plot", "them"}
+        | {"two", "fields", "each"}
     )
     for index, field in enumerate(intent.fields):
         path = f"fields[{index}]"
