@@ -333,10 +333,19 @@ class MentionBuilder:
                         or _possessed(pending)
                     )
                 )
-                # "between the two groves a block of bananas": a plot counted again
+                # "between the two groves a block of bananas": a plot counted again;
+                # "north of the orchard a big block of Winter Wheat": a plot named again
                 or (
                     current.plot is not None
-                    and (current.count or 1) >= 2
+                    and (
+                        (current.count or 1) >= 2
+                        or (
+                            item.role == "plot"
+                            and _opens_definite(current)
+                            # (not "The only crop we have is a small block of ...")
+                            and not any(p.norm in ("is", "are", "was", "were") for p in pending)
+                        )
+                    )
                     and any(p.role == "number" and p.norm in ("a", "an") for p in pending)
                     and not any(p.role in ("of", "size", "geometry") for p in pending)
                 )
@@ -640,6 +649,12 @@ def _names_plot(mention: Mention, item: Item) -> bool:
 def _colour_words() -> frozenset[str]:
     words = vocabulary()["colour_words"]
     return frozenset(str(w) for group in words.values() for w in group)
+
+
+def _opens_definite(mention: Mention) -> bool:
+    """Whether the mention opens with "the" (a plot named again: "the orchard")."""
+    first = min(mention.items, key=lambda i: i.start, default=None)
+    return first is not None and first.norm == "the"
 
 
 def decompose(items: Sequence[Item], builder: MentionBuilder) -> list[Clause]:

@@ -126,9 +126,33 @@ def colours_are_not_crops(items: Sequence[Item], text: str) -> None:
             word.role == "head"
             and word.norm in reader_words("colours")
             and (_colours_a_part(items[index + 1 :]) or _colours_the_fruit(items, index))
+        ) or (
+            word.role in ("head", "weak_variety")
+            and word.norm in reader_words("colours")
+            and _said_of_scenery(items, index)
         ):
             word.role = "filler"
             word.data["colour"] = True
+
+
+#: Scenery whose colour a photo describes ("the sun is low and golden", "the sky still
+#: orange in the west").
+_COLOURED_SCENERY = frozenset(
+    {"sky", "skies", "sun", "light", "sunlight", "sunset", "sunrise", "clouds", "horizon"}
+)
+
+
+def _said_of_scenery(items: Sequence[Item], index: int) -> bool:
+    """Whether a crop word that is a colour describes the sky or light named just before
+    it in its sentence, with no crop named between."""
+    for item in reversed(items[max(0, index - 6) : index]):
+        if item.norm in (".", "!", "?", ";", ","):
+            return False
+        if item.role in ("head", "weak_variety", "plot"):
+            return False
+        if item.norm in _COLOURED_SCENERY:
+            return True
+    return False
 
 
 def _colours_the_fruit(items: Sequence[Item], index: int) -> bool:

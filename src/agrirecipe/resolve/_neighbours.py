@@ -63,6 +63,7 @@ def place_neighbouring_plots(text: str) -> str:
     text = _ONE_AND_THE_NEXT.sub(r" and \g<b> side by side", text)
     text = _AN_ADJACENT.sub(lambda m: f"{m.group('lead')} alongside {m.group('article')} ", text)
     text = _ONE_BESIDE_THE_OTHER.sub("side by side:", text)
+    text = _ONE_BESIDE_THE_OTHER_EACH.sub(" side by side", text)
     return _NEIGHBOURING.sub(
         lambda m: (
             f"{m.group('at')} {m.group('count')}{m.group('size') or ''}{m.group('plots')} "
@@ -94,6 +95,11 @@ _MEET_AT = re.compile(
 # relates the two named first, in order)
 _ONE_BESIDE_THE_OTHER = re.compile(
     r"\b(?i:one)\s+(?i:beside|next to|alongside|by)\s+(?i:the other)(?:\s+(?i:one))?\s*:"
+)
+# "Two salad plots one beside the other, each 6 beds ...": the plots just counted
+_ONE_BESIDE_THE_OTHER_EACH = re.compile(
+    r"(?<=[A-Za-z])\s+(?i:one)\s+(?i:beside|next to|alongside)\s+(?i:the other)"
+    r"(?:\s+(?i:one))?(?=\s*,\s*(?i:each|both)\b)"
 )
 # "next to the polytunnel of cherry tomatoes", "a glasshouse full of lettuce": the crop's
 # plot under cover (the cover is scenery; the plot can be placed)

@@ -14,7 +14,7 @@ import itertools
 from collections.abc import Sequence
 
 from agrirecipe.resolve._decompose import Clause, Mention
-from agrirecipe.resolve._links import OPPOSITE
+from agrirecipe.resolve._links import OPPOSITE, link_norm
 
 __all__ = [
     "directed_neighbours",
@@ -157,10 +157,34 @@ def placements(clauses: Sequence[Clause], members: dict[int, list[int]]) -> dict
             continue
         if position == 0 or clause.mentions or any(i.role not in _OWN for i in clause.items):
             continue  # ("Gala on the north side planted at 3.5 m by 1 m": its own measures)
+        before = clauses[position - 1]
+        if (
+            # (past a distance: "and, 20 m to the east, Durondeau pears")
+            all(i.role in ("filler", "length_unit", "number") for i in before.items)
+            and not before.mentions
+            and link_norm(before) == ","
+            and position >= 2
+            and _a_bare_and(clauses[position - 2])
+            and position + 1 < len(clauses)
+        ):
+            # "Bing cherries and, to the east, Durondeau pears": the field after it
+            after = clauses[position + 1]
+            following = after.mentions or ([after.refinement] if after.refinement else [])
+            if len(following) == 1 and id(following[0]) in members:
+                placed[position] = following[0]
+            continue
         previous = clauses[_past_a_bracket(clauses, position - 1)].named
         if len(previous) == 1 and id(previous[0]) in members:
             placed[position] = previous[0]
     return placed
+
+
+def _a_bare_and(clause: Clause) -> bool:
+    """A clause of nothing but its joining word ("and", "&")."""
+    link = clause.link
+    return (
+        not clause.items and not clause.mentions and link is not None and link.role == "conjunction"
+    )
 
 
 def _past_a_bracket(clauses: Sequence[Clause], index: int) -> int:

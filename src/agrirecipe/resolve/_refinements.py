@@ -80,6 +80,16 @@ def apply_refinements(
             if previous is not None:
                 clause.refined_parent = previous.refined_parent
                 clause.refinement = previous.refinement
+                if (
+                    clause.link.role == "trailer"
+                    and not previous.items
+                    and not previous.mentions
+                    and previous.link is not None
+                    and previous.link.role in ("separator", "conjunction")
+                ):
+                    # "Bing cherries and, to the east, Durondeau pears": a placement
+                    # said before the member it places
+                    clause.refinement = None
             continue
         if (
             enumerating
@@ -412,6 +422,8 @@ def apply_refinements(
             # "two apple blocks: Granny ..., fruit bright green ..., and Fuji ...": words
             # about the fruit or plants do not end the listing of the members
             last = clause.mentions[-1]
+            if _both_before_a_list(clauses, clause, last):
+                last.count = 2  # "both blocks of the vineyard are ripe: Chardonnay ..., ..."
             parent = last if (last.count or 1) >= 2 else None
     for mention in top:
         members = len({id(r) for r in mention.refinements})
@@ -431,7 +443,8 @@ def _bracketed_variety(clause: Clause, member: Mention) -> bool:
     crops = strong_crops(said)
     return (
         names_a_variety(said)
-        and not names_a_variety(member)
+        # ("Big Mike (Gros Michel)": the same variety by its other name)
+        and (not names_a_variety(member) or same_variety(member, said))
         and bool(crops)
         and crops == strong_crops(member)
         and said.count is None
@@ -445,6 +458,20 @@ def _describes_plants(mentions: Sequence[Mention]) -> bool:
         return False
     heads = mentions[0].heads
     return bool(heads) and all(h.norm in descriptive_words() for h in heads)
+
+
+def _both_before_a_list(clauses: Sequence[Clause], clause: Clause, mention: Mention) -> bool:
+    """'both blocks of the vineyard are ripe: Chardonnay ..., Riesling ...': "both" and a
+    plural plot of no crop, right before a colon, announce the two fields listed."""
+    following = clauses[clause.index + 1] if clause.index + 1 < len(clauses) else None
+    return (
+        mention.count is None
+        and not mention.has_crop
+        and any(h.role == "plot" and h.data["value"]["plural"] for h in mention.heads)
+        and any(i.norm == "both" for i in mention.items)
+        and following is not None
+        and link_norm(following) == ":"
+    )
 
 
 def _member_plot(clause: Clause, previous: Clause | None, parent: Mention) -> bool:

@@ -94,7 +94,12 @@ def promote_weak_varieties(clauses: Sequence[Clause], builder: MentionBuilder) -
                 # ("Albion on the table-tops and Centenary in the soil beds": two names of
                 # varieties of one crop name it together)
                 _promote(clause, weak[0], weak[0].senses_of("variety")[0])
-            elif len(crops) == 1 and weak[0].tokens[0].capitalised and (in_list or alone):
+            elif len(crops) == 1 and (
+                (weak[0].tokens[0].capitalised and (in_list or alone))
+                # ("lollo for the leaf camera: beds on 1.2 m centres, 4 rows per bed"):
+                # the only name in a prompt of row measures, whatever its case
+                or (alone and any(i.role == "geometry" for c in clauses for i in c.items))
+            ):
                 # "west to east: Lollo, then Imperator carrots": a capitalised name in a
                 # list of fields is its variety even when no field beside it is its crop
                 _promote(clause, weak[0], weak[0].senses_of("variety")[0])
