@@ -17,6 +17,7 @@ import re
 from collections.abc import Callable, Sequence
 
 from agrirecipe.resolve._lexicon import Item, scenery_words
+from agrirecipe.resolve._links import OPPOSITE
 
 __all__ = [
     "place_by_cover",
@@ -202,7 +203,8 @@ _FURTHEST_THEN = re.compile(
     r"(?i:furthest|farthest|most|right at the|at the far)\s+"
     r"(?P<side>(?i:north|south|east|west))(?i:erly| end)?\s*,\s*(?i:then)\s+"
 )
-_OPPOSITE = {"north": "south", "south": "north", "east": "west", "west": "east"}
+#: The opposite side ("north": "south"), from the relations' own table.
+_OPPOSITE = {k.removesuffix("_of"): v.removesuffix("_of") for k, v in OPPOSITE.items()}
 
 
 def _between_sides(match: re.Match[str]) -> str:
