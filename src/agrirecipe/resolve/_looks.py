@@ -135,13 +135,6 @@ def colours_are_not_crops(items: Sequence[Item], text: str) -> None:
             word.data["colour"] = True
 
 
-#: Scenery whose colour a photo describes ("the sun is low and golden", "the sky still
-#: orange in the west").
-_COLOURED_SCENERY = frozenset(
-    {"sky", "skies", "sun", "light", "sunlight", "sunset", "sunrise", "clouds", "horizon"}
-)
-
-
 def _said_of_scenery(items: Sequence[Item], index: int) -> bool:
     """Whether a crop word that is a colour describes the sky or light named just before
     it in its sentence, with no crop named between."""
@@ -150,7 +143,7 @@ def _said_of_scenery(items: Sequence[Item], index: int) -> bool:
             return False
         if item.role in ("head", "weak_variety", "plot"):
             return False
-        if item.norm in _COLOURED_SCENERY:
+        if item.norm in reader_words("coloured_scenery"):
             return True
     return False
 

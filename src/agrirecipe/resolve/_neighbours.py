@@ -305,7 +305,7 @@ def place_flanks(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
                 return match.group(0)
         return f"{match.group('y')}, {match.group('x')} on both sides"
 
-    text = _BOTH_SIDES_OF_SCENERY().sub(both_sides, _FLANKED_SIDES.sub(rewrite, text))
+    text = _both_sides_of_scenery().sub(both_sides, _FLANKED_SIDES.sub(rewrite, text))
     return _AROUND_A_FIELD.sub(around_a_field, text)
 
 
@@ -319,7 +319,7 @@ _AROUND_A_FIELD = re.compile(
 
 
 @functools.cache
-def _BOTH_SIDES_OF_SCENERY() -> re.Pattern[str]:  # noqa: N802
+def _both_sides_of_scenery() -> re.Pattern[str]:
     """'cereals on both sides of the track', 'wheat either side of the lane'."""
     things = "|".join(re.escape(w) for w in scenery_words("boundaries", "ground"))
     return re.compile(
