@@ -41,6 +41,13 @@ def _lower_forms() -> tuple[re.Pattern[str], dict[str, str]]:
     return re.compile(rf"(?<=\s)(?:{alternation})(?=\s)"), forms
 
 
+@functools.cache
+def _crop_pictures() -> re.Pattern[str]:
+    data: dict[str, Any] = yaml.safe_load((DATA_DIR / "casual.yaml").read_text("utf-8"))
+    # (with the variation selector that asks for the colour form: "🌶️")
+    return re.compile(f"[{re.escape(str(data['crop_pictures']))}]\ufe0f?")
+
+
 def expand_casual(prompt: str) -> str:
     """``prompt`` with every texting form replaced by its words."""
     pattern, forms = _forms()
@@ -52,6 +59,7 @@ def expand_casual(prompt: str) -> str:
     lower, lower_forms = _lower_forms()
     # "a straw🍓berry field": an emoji inside a word is not part of it
     text = _EMOJI_IN_WORD.sub("", prompt)
+    text = _crop_pictures().sub(" ", text)
     # "apples w of the pears", "onions just S of it": a compass letter before "of"
     text = _LETTER_SIDE.sub(lambda m: f"{_LETTER_SIDES[m.group('side').lower()]} of", text)
     # "cab south of the pinot": the wine trade's short name (not a tractor's cab)

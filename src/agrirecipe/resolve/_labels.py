@@ -87,6 +87,7 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
     crops is returned unchanged.
     """
     text = _PLURAL_LABELS.sub(_one_noun_each, _valued_members(_numbered_members(text, tag)))
+    text = _PLACED_THEN_NAMED.sub(r"\g<head>, \g<where>, is", text)
     definitions = sorted(
         [
             *(m for m in _DEFINITION.finditer(text) if not _REFERRED.search(text[: m.start()])),
@@ -180,6 +181,14 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
         notes.append(f"{label} = {phrase}" + ("" if count else " (a label only)"))
     return out, notes
 
+
+# "plot 2 is 10 m west of plot 1 and is wheat": a label placed first and named after
+# "and is" defines its field, like "plot 2, 10 m west of plot 1, is wheat"
+_PLACED_THEN_NAMED = re.compile(
+    rf"(?P<head>\b(?i:{_NOUNS})\s+(?:[A-H]|\d{{1,2}}|{_WORD_LABELS}))\s+(?i:is|lies|sits)\s+"
+    rf"(?P<where>[^;.,:]*?\b(?i:{_BEFORE_REFERENCE})\s+(?:(?i:the)\s+)?(?i:{_NOUNS})\s+"
+    rf"(?:[A-H]|\d{{1,2}}|{_WORD_LABELS}))\s+(?i:and)\s+(?i:is)\b"
+)
 
 # "between plots 1 and 3", "blocks A and C": one noun for two labels
 _PLURAL_LABELS = re.compile(

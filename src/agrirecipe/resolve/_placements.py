@@ -17,6 +17,7 @@ from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._links import OPPOSITE, link_norm
 
 __all__ = [
+    "a_distance",
     "directed_neighbours",
     "fronted_pair",
     "placed_by_the_middle",
@@ -100,6 +101,13 @@ def _opened_by(clauses: Sequence[Clause], position: int) -> Mention | None:
     return None
 
 
+def a_distance(clause: Clause) -> bool:
+    """A clause of only a distance ("20 m" before "south of them")."""
+    return any(i.role == "length_unit" for i in clause.items) and all(
+        i.role in ("filler", "number", "length_unit") for i in clause.items
+    )
+
+
 def fronted_pair(clauses: Sequence[Clause], position: int) -> tuple[Mention, Mention] | None:
     """'West of the peppers, an onion plot', 'north of A: Conference pears': a relation
     that opens its sentence, its object and then its subject (subject, object)."""
@@ -109,7 +117,8 @@ def fronted_pair(clauses: Sequence[Clause], position: int) -> tuple[Mention, Men
         return None
     if position:
         previous = clauses[position - 1]
-        opens = not previous.items and (
+        # ("plot 2, 10 m west of plot 1, is wheat": a distance before the relation)
+        opens = (not previous.items or a_distance(previous)) and (
             previous.link is None
             or previous.link.norm in (";", ".", ":", "!", ",")
             or previous.link.role == "conjunction"  # ", and south of the bananas a citrus"
@@ -120,14 +129,12 @@ def fronted_pair(clauses: Sequence[Clause], position: int) -> tuple[Mention, Men
         subject, target = clause.mentions[1], clause.mentions[0]
     else:
         after = position + 1
-        while (
-            after + 1 < len(clauses)
-            and not clauses[after].mentions
-            and clauses[after].link is not None
-            and clauses[after].link.norm == ","  # type: ignore[union-attr]
-            and all(i.role in ("filler", "side", "of") for i in clauses[after].items)
+        while after + 1 < len(clauses) and (
+            _aside(clauses[after]) or _beside_it_again(clauses[after])
         ):
-            after += 1  # "south of the orchard, across the lane, there's ...": scenery between
+            # "south of the orchard, across the lane, there's ...": scenery between; "east
+            # of that field, right up against it, onions": the same place said closer
+            after += 1
         following = clauses[after] if after < len(clauses) else None
         if (
             following is None
@@ -138,6 +145,27 @@ def fronted_pair(clauses: Sequence[Clause], position: int) -> tuple[Mention, Men
             return None
         subject, target = following.mentions[0], clause.mentions[0]
     return None if subject is target else (subject, target)
+
+
+def _aside(clause: Clause) -> bool:
+    """A clause of a comma and filler only ("across the lane")."""
+    return (
+        not clause.mentions
+        and clause.link is not None
+        and clause.link.norm == ","
+        and all(i.role in ("filler", "side", "of") for i in clause.items)
+    )
+
+
+def _beside_it_again(clause: Clause) -> bool:
+    """ "right up against it", "right next to it": the field just placed, said to touch."""
+    return (
+        not clause.mentions
+        and clause.link is not None
+        and clause.link.role == "relation"
+        and clause.link.data.get("value") == "next_to"
+        and [i.norm for i in clause.items] in (["it"], ["them"])
+    )
 
 
 #: Words a placed field's clause may go on with after the direction: its own details.

@@ -35,6 +35,7 @@ from agrirecipe.resolve._links import (
     own_mentions,
 )
 from agrirecipe.resolve._placements import (
+    a_distance,
     directed_neighbours,
     fronted_pair,
     placed_by_the_middle,
@@ -60,13 +61,6 @@ __all__ = ["read_relations"]
 #: Words of a clause that places a field by scenery alone ("the Royal Gala block north of
 #: the packhouse is ripe": the look goes on describing the block).
 _SAID_OF_A_LANDMARK = frozenset({"filler", "non_agricultural", "stage", "health", "season", "cue"})
-
-
-def _a_distance(clause: Clause) -> bool:
-    """A clause of only a distance ("20 m" before "south of them")."""
-    return any(i.role == "length_unit" for i in clause.items) and all(
-        i.role in ("filler", "number", "length_unit") for i in clause.items
-    )
 
 
 def read_relations(
@@ -245,7 +239,7 @@ def read_relations(
             and clauses[position - 1].named
             and clauses[position - 1].items  # not "one ... and, north of it, one ..."
             # (nor "cherry trees and, 20 m south of them, a plum tomato plot": a distance)
-            and not _a_distance(clauses[position - 1])
+            and not a_distance(clauses[position - 1])
         ):
             # "put valencia oranges north of it, and a banana plot ...": the pronoun
             # ends its clause after a subject, so it points back and the fields after
