@@ -2,15 +2,21 @@
 drawn between it and its place ("wheat 🌾 south"), a labelled plot placed before it is
 named ("plot 2 is 10 m west of plot 1 and is wheat"), a distance before a relation that
 opens its clause, and a placement said again as touching ("east of that field, right up
-against it, onions")."""
+against it, onions"), what a copula says after a placement ("the wheat north of the maize
+is ripe"), the month of picking."""
 
 from __future__ import annotations
 
 from collections.abc import Callable
 
 from agrirecipe import generate
+from agrirecipe.recipe import SceneRecipe
 
 NamedRelations = set[tuple[str, str, tuple[str, ...]]]
+
+
+def recipe(prompt: str) -> SceneRecipe:
+    return generate(prompt, resolver="hybrid").recipe
 
 
 def test_a_crop_picture_between_a_crop_and_its_place(
@@ -62,3 +68,35 @@ def test_a_placement_said_again_as_touching(
         "blight. East of that field, right up against it, onions."
     )
     assert ("east_of", "Onion", ("Potato",)) in relations
+
+
+def test_what_is_said_after_a_placement_is_said_of_its_subject() -> None:
+    fields = recipe("the wheat north of the maize is ripe").fields
+    assert [(f.crop, f.stage, "stage" in f.stated) for f in fields] == [
+        ("Wheat", "Maturation", True),
+        ("Maize", fields[1].stage, False),
+    ]
+    scene = recipe(
+        "February, and the Sonata strawberries next to the blood orange grove are covered in "
+        "ripe fruit."
+    )
+    strawberries, oranges = scene.fields
+    assert (strawberries.stage, strawberries.season) == ("Maturation", "Winter")
+    assert "stage" not in oranges.stated
+    # (ripe strawberries in February are kept as asked, with a warning)
+    assert any("not normally mature" in w for w in scene.warnings)
+    # (a placement that opens its sentence places the field after it, which the words
+    # after the copula describe)
+    wheat, maize = recipe("Next to the wheat the maize is ripe").fields
+    assert (maize.stage, "stage" in wheat.stated) == ("Maturation", False)
+
+
+def test_the_month_of_picking_is_ripe_fruit() -> None:
+    fields = recipe(
+        "Williams pears on the south side, Lapins cherries on the north side, both orchards "
+        "picked in August."
+    ).fields
+    assert [(f.crop, f.stage, f.season) for f in fields] == [
+        ("Pear", "Maturation", "Summer"),
+        ("Cherry", "Maturation", "Summer"),
+    ]

@@ -122,6 +122,7 @@ from agrirecipe.resolve._neighbours import (
     place_neighbouring_plots,
     place_sides,
 )
+from agrirecipe.resolve._placements import predicate_of_the_placed
 from agrirecipe.resolve._refinements import apply_refinements
 from agrirecipe.resolve._relations import read_relations
 from agrirecipe.resolve._retractions import (
@@ -244,6 +245,7 @@ class PromptReader(FieldReading):
         builder = MentionBuilder(self.crop_categories)
         clauses = decompose(items, builder)
         promote_weak_varieties(clauses, builder)
+        predicate_of_the_placed(clauses)
         self._note(drop_free_choices(clauses), "left to the reader's choice: no field of its own")
         apply_plural_counts(clauses, int(vocabulary()["plural_fields"]))
         take_the_lower_count(clauses)

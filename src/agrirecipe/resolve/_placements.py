@@ -23,7 +23,59 @@ __all__ = [
     "placed_by_the_middle",
     "placement_pairs",
     "placements",
+    "predicate_of_the_placed",
 ]
+
+
+#: The verbs that open what is said of a sentence's subject ("... is ripe", "... are
+#: covered in ripe fruit").
+_COPULAS = frozenset({"is", "are"})
+#: What ends a sentence before its subject.
+_SENTENCE_ENDS = frozenset({".", ";", "!", "?"})
+
+
+def predicate_of_the_placed(clauses: Sequence[Clause]) -> None:
+    """'The wheat north of the maize is ripe', 'the Sonata strawberries next to the
+    orange grove are covered in ripe fruit': what the copula says after the field a
+    subject is placed against is said of the subject; its words move to the subject's
+    mention."""
+    for clause in clauses[1:]:
+        link = clause.link
+        previous = clauses[clause.index - 1]
+        if (
+            link is None
+            or link.role != "relation"
+            or len(clause.mentions) != 1
+            or len(previous.mentions) != 1
+            or previous.loose
+            # (the subject is its sentence's first field: not "apples and the wheat
+            # north of ...", but "February, and the strawberries next to ...")
+            or not _first_of_its_sentence(clauses, previous)
+        ):
+            continue
+        subject, placed = previous.mentions[0], clause.mentions[0]
+        words = sorted(placed.items, key=lambda item: item.start)
+        said = [i for i in subject.items if i.norm in _COPULAS]
+        heads = [i.start for i in placed.heads]
+        if not subject.has_crop or said or not heads:
+            continue
+        copula = next(
+            (n for n, i in enumerate(words) if i.norm in _COPULAS and i.start > max(heads)), None
+        )
+        if copula is None:
+            continue
+        moved = words[copula:]
+        placed.items = [i for i in placed.items if i not in moved]
+        subject.items.extend(moved)
+
+
+def _first_of_its_sentence(clauses: Sequence[Clause], clause: Clause) -> bool:
+    index = clause.index
+    while (link := clauses[index].link) is not None and link.norm not in _SENTENCE_ENDS:
+        index -= 1
+        if clauses[index].mentions:
+            return False
+    return True
 
 
 def directed_neighbours(clauses: Sequence[Clause]) -> dict[int, int]:
