@@ -76,7 +76,15 @@ def relation_holds(relation: Relation, boxes: dict[str, Box]) -> bool:
                 and overlap_1d(a[other_lo], a[other_hi], high[other_lo], high[other_hi])
             ):
                 return True
-    return False
+    # on a diagonal: between the two along X and along Y ("an orchard in the NE corner,
+    # vegetables in the SW corner and a cereal field between them")
+    return all(
+        any(
+            low[hi_i] <= a[lo_i] + EPS and a[hi_i] <= high[lo_i] + EPS
+            for low, high in ((first, second), (second, first))
+        )
+        for lo_i, hi_i in ((0, 2), (1, 3))
+    )
 
 
 def check_packing(
@@ -193,6 +201,22 @@ def test_unsatisfiable_relations_raise_prompt_error_naming_them(
     assert caught.value.stage == "layout"
     for words in named:
         assert words in str(caught.value)
+
+
+def test_a_field_between_two_on_a_diagonal() -> None:
+    # "an orchard in the NE corner, vegetables in the SW corner, a cereal field between"
+    relations = [
+        rel("north_of", "f0", "f1"),
+        rel("west_of", "f1", "f0"),
+        rel("between", "f2", "f0", "f1"),
+    ]
+    boxes = {
+        k: box(g)
+        for k, g in check_packing(requests_of((60, 100), (30, 60), (30, 40)), relations).items()
+    }
+    orchard, vegetables, cereal = boxes["f0"], boxes["f1"], boxes["f2"]
+    assert vegetables[2] <= cereal[0] and cereal[2] <= orchard[0]
+    assert vegetables[3] <= cereal[1] and cereal[3] <= orchard[1]
 
 
 def test_a_field_between_itself_is_refused() -> None:

@@ -299,6 +299,13 @@ def _options(relation: Relation) -> list[_Constraints]:
             y_edges=((second, subject), (subject, first)),
             same_col=((first, subject), (subject, second)),
         ),
+        # (last, on a diagonal: "an orchard in the NE corner, vegetables in the SW corner
+        # and a cereal field between them")
+        *(
+            _Constraints(x_edges=((a, subject), (subject, b)), y_edges=((c, subject), (subject, d)))
+            for a, b in ((first, second), (second, first))
+            for c, d in ((first, second), (second, first))
+        ),
     ]
 
 

@@ -284,6 +284,9 @@ def merge_coreferences(
                 is_definite
                 or _placed_first(clauses, clause)
                 or _placed_against_another(clauses, clause, mention)
+                # ("Two fields either side of the track. On the left is our Bintje; on
+                # the right the Nantes carrots": each placed in its own part)
+                or (bare and any(i.role == "zone" for i in mention.items))
             )
             and not summary
             and (first is None or first.norm not in EACH)

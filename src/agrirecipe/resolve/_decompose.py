@@ -23,7 +23,7 @@ from typing import Any
 
 from agrirecipe._errors import PromptError, UnknownCropError
 from agrirecipe.resolve._intent import SizeIntent
-from agrirecipe.resolve._lexicon import Item, vocabulary
+from agrirecipe.resolve._lexicon import Item, Token, vocabulary
 
 __all__ = ["Clause", "Mention", "MentionBuilder", "decompose", "resolve_weak_varieties"]
 
@@ -662,7 +662,33 @@ def decompose(items: Sequence[Item], builder: MentionBuilder) -> list[Clause]:
     clauses = split_clauses(items)
     for clause in clauses:
         builder.read(clause)
-    return clauses
+    return _split_bare_lists(clauses)
+
+
+def _split_bare_lists(clauses: list[Clause]) -> list[Clause]:
+    """'3 fruit orchards: apple pear cherry', '4 veg plots: carrots onions lettuce &
+    cabbage': crops named one after another with no mark between are a list, one clause
+    per member as if commas parted them."""
+    split: list[Clause] = []
+    for clause in clauses:
+        bare = len(clause.mentions) >= 2 and all(
+            len(m.items) == 1 and m.items[0].role == "head" for m in clause.mentions
+        )
+        if not bare or len(clause.items) != len(clause.mentions):
+            clause.index = len(split)
+            for mention in clause.mentions:
+                mention.clause = clause.index
+            split.append(clause)
+            continue
+        for number, mention in enumerate(clause.mentions):
+            link = clause.link
+            if number:
+                word = mention.items[0]
+                mark = Token(",", ",", word.start, word.start)
+                link = Item(tokens=(mark,), senses=(), role="separator")
+            mention.clause = len(split)
+            split.append(Clause(list(mention.items), link, len(split), mentions=[mention]))
+    return split
 
 
 def size_of(mention: Mention) -> list[SizeIntent]:

@@ -76,8 +76,10 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
         # "a few plants have fallen over": a verb says what the plants do or look like
         predicate = said_with_a_verb(clause, mention)
         # "one plant has wilted leaves": one plant described, not a field of one;
-        # "a ladder leaning against one tree": one plant of the fields named
-        one_described = mention.count == 1 and (
+        # "a ladder leaning against one tree": one plant of the fields named ("the third
+        # tree": one by its place in the row)
+        one = mention.count == 1 or any(i.role == "reference" for i in mention.items)
+        one_described = one and (
             described
             or (
                 others_before

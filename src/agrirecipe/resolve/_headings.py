@@ -28,6 +28,7 @@ __all__ = [
     "drop_joint_headings",
     "drop_list_headings",
     "drop_plural_headings",
+    "drop_restated_counts",
     "drop_titles",
     "drop_trailing_summaries",
     "fill_counted_lists",
@@ -223,7 +224,24 @@ def drop_joint_headings(
     ("fruit and veg plots: an apple plot and a carrot plot", "grain and veg test strips -
     a corn strip ... and a spud strip"). Return the fields left."""
     headings = _joint_headings(clauses, mentions, crop_categories)
+    members = [m for m in mentions if not any(m is h for h in headings)]
     for heading in headings:
+        # ("potato field 2ha, onion field 1ha, ..., in a line n to s: potatoes then
+        # onions ...": what a heading of one field says of it goes to its member)
+        named = [
+            m
+            for m in members
+            if m.clause > heading.clause
+            and strong_crops(heading)
+            and strong_crops(m) == strong_crops(heading)
+        ]
+        if (heading.count or 1) == 1 and len(named) == 1:
+            own = {i.role for i in named[0].items}
+            named[0].items.extend(
+                i
+                for i in heading.items
+                if i.role in (*_SUMMARY_ROLES, "size", "geometry") and i.role not in own
+            )
         clause = clauses[heading.clause]
         clause.mentions = [m for m in clause.mentions if m is not heading]
     return [m for m in mentions if not any(m is h for h in headings)]
@@ -461,6 +479,39 @@ def drop_plural_headings(clauses: Sequence[Clause], mentions: list[Mention]) -> 
         return mentions  # ("test plots next to a wheat field and a maize field": placed)
     _lend_and_drop(clauses, heading, later)
     return later
+
+
+def drop_restated_counts(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
+    """'a cabbage field on either side of it (so 2 cabbage fields)', 'a wheat field, so 2
+    wheat fields': a count said again with "so" after the crop it counts is that crop's
+    number of fields, not more fields. The crop's mention takes the count unless a side
+    word before already makes it two. Return the fields left."""
+    kept: list[Mention] = []
+    for mention in mentions:
+        first = min(mention.items, key=lambda i: i.start, default=None)
+        crops = strong_crops(mention)
+        earlier = [m for m in kept if crops and strong_crops(m) == crops]
+        if (
+            first is None
+            or first.norm != "so"
+            or (mention.count or 1) < 2
+            or mention.refinements
+            or len(earlier) != 1
+        ):
+            kept.append(mention)
+            continue
+        counted = earlier[0]
+        after = clauses[counted.clause + 1] if counted.clause + 1 < len(clauses) else None
+        sided = (
+            after is not None
+            and after.link is not None
+            and after.link.data.get("value") in ("each_side", "flanks")
+        )
+        if not sided and (counted.count or 1) == 1 and not counted.refinements:
+            counted.count = mention.count
+        for clause in clauses:
+            clause.mentions = [m for m in clause.mentions if m is not mention]
+    return kept
 
 
 def drop_trailing_summaries(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:

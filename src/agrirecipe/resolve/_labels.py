@@ -514,4 +514,17 @@ def place_walked_orders(text: str) -> str:
             return match.group(0)
         return f"from {start} to {end}"
 
-    return _WALKED.sub(order, text)
+    text = _WALKED.sub(order, text)
+    return _EACH_FURTHER.sub(
+        lambda m: f", laid out {_WALK_SIDES[m.group('side').lower()]} to {m.group('side').lower()}",
+        text,
+    )
+
+
+# "first the Hamlin grove, then the Navel, then the Moro, each one further north": the
+# fields in the order named, from the opposite side to that one
+_EACH_FURTHER = re.compile(
+    r",?\s*\b(?i:each|every)\s+(?:(?i:one|block|field|plot|strip|orchard|grove)\s+)?"
+    r"(?i:further|farther|a bit further|a little further)\s+(?P<side>(?i:north|south|east|west))\b"
+    r"(?:\s+(?i:than the last|again))?"
+)

@@ -33,9 +33,7 @@ def _pattern() -> re.Pattern[str]:
     leads = "|".join(
         re.escape(str(w)) for w in sorted(data["leads"], key=lambda w: len(str(w)), reverse=True)
     )
-    units = "|".join(
-        re.escape(str(u)) for u in sorted(data["units"], key=lambda u: len(str(u)), reverse=True)
-    )
+    units = _units()
     return re.compile(
         rf"\b(?P<lead>{leads})\s+(?P<values>{_NUMBER}(?:\s*,\s*{_NUMBER})*,?\s+(?:and|or|&)\s+"
         rf"{_NUMBER})\s*(?P<unit>{units})(?![\w²])",
@@ -44,8 +42,46 @@ def _pattern() -> re.Pattern[str]:
 
 
 @functools.cache
+def _units() -> str:
+    """The measures a list of values may end in, as one alternation (longest first)."""
+    units = sorted(_data()["units"], key=lambda u: len(str(u)), reverse=True)
+    return "|".join(re.escape(str(u)) for u in units)
+
+
+@functools.cache
 def _leads() -> dict[str, str]:
     return {str(k).lower(): str(v) for k, v in _data()["leads"].items()}
+
+
+@functools.cache
+def _repeated_unit() -> re.Pattern[str]:
+    """A value said with the same unit as the value after it in a list ("40 cm, 30 cm")."""
+    units = r"cm|mm|m|in|inch(?:es)?|ft|feet|ha|acres?"
+    return re.compile(
+        rf"(?P<first>\b{_NUMBER})\s*(?P<unit>{units})\b(?=\s*(?:,\s*|,?\s+(?:and|or|&)\s+)"
+        rf"{_NUMBER}\s*(?P=unit)(?![\w²]))",
+        re.IGNORECASE,
+    )
+
+
+def _one_unit(match: re.Match[str]) -> str:
+    """The value without its unit, when the list it starts ends in a measure of
+    ``value_lists.yaml`` and "respectively" ("40 cm, 30 cm and 75 cm apart respectively")."""
+    text = match.string
+    # (the values after it, each with the same unit but the last: "..., 30 cm and 75")
+    unit = re.escape(match.group("unit"))
+    rest = re.compile(
+        rf"(?:\s*(?:,\s*|,?\s+(?:and|or|&)\s+){_NUMBER}"
+        rf"(?:\s*{unit}(?=\s*(?:,|(?:and|or|&)\s)))?)+",
+        re.IGNORECASE,
+    )
+    values = rest.match(text, match.end())
+    if values is None:
+        return match.group(0)
+    measure = re.compile(rf"\s*(?:{_units()})(?![\w²])", re.IGNORECASE).match(text, values.end())
+    if measure is None or not _RESPECTIVELY.match(text, measure.end()):
+        return match.group(0)
+    return match.group("first")
 
 
 #: "respectively" within a few words after a list of values.
@@ -68,6 +104,8 @@ def spread_value_lists(text: str) -> str:
         members = [f"{member} {value} {unit}" for value in values]
         return ", " + ", ".join(members[:-1]) + " and " + members[-1]
 
+    # "rows 40 cm, 30 cm and 75 cm apart respectively": one unit for the list
+    text = _repeated_unit().sub(_one_unit, text)
     text = _pattern().sub(spread, text)
     # "Half a hectare each of Cos lettuce and Savoy cabbage": the size is each one's
     text = _SIZE_EACH_OF.sub(lambda m: f"{m.group('list')}, {m.group('size')} each", text)

@@ -241,16 +241,26 @@ def parallel_fields(clauses: Sequence[Clause], position: int) -> list[Mention]:
     return fields if crops[0] and all(c == crops[0] for c in crops) and not measured_before else []
 
 
+#: Words after a size that make it every listed field's ("1 ha each").
+EACH_SIZE = ("each", "both")
+
+
 def share_each_measures(clauses: Sequence[Clause]) -> None:
     """'The Hamlin block ..., Washington Navel the west half: 150 trees each at 7 m x 4 m':
     a measure said with "each" by the last of a list is every listed field's."""
     for position, clause in enumerate(clauses):
         for mention in clause.mentions[-1:]:
             ordered = sorted(mention.items, key=lambda i: i.start)
+            following: list[Item | None] = [*ordered[1:], None]
             sizes = [
                 a
-                for a, b in itertools.pairwise(ordered)
-                if a.role == "size" and b.role == "all" and b.norm in ("each", "both")
+                for a, b in zip(ordered, following, strict=True)
+                if a.role == "size"
+                and (
+                    (b is not None and b.role == "all" and b.norm in EACH_SIZE)
+                    # "Cos, iceberg and Lollo in three plots of 10 x 25 m": each plot's
+                    or bool(a.data.get("of_each_plot"))
+                )
             ]
             if sizes:
                 # "wheat north of maize north of potatoes 1 ha each": every field's size

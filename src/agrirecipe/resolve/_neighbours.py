@@ -222,6 +222,14 @@ def _between_sides(match: re.Match[str]) -> str:
     return f" between {match.group('a')} and {match.group('b')}"
 
 
+# "crisphead on the left and Boston on the right (looking north)": which way the viewer
+# faces, so left is west and right east, as they are read anyway (not an order of fields)
+_FACING_NORTH = re.compile(
+    r"(?:(?<=[Ll]eft)|(?<=[Rr]ight))\s*(?:\(\s*|,\s*)?(?i:looking|facing)\s+(?:(?i:due)\s+)?"
+    r"(?i:north)(?i:wards)?(?:\s*\))?"
+)
+
+
 def place_sides(text: str) -> str:
     """``text`` with "X with A on one side and B on the other" written "X between A and
     B", "..., danvers one east" written "..., danvers one east of the other", "the
@@ -236,6 +244,7 @@ def place_sides(text: str) -> str:
         text,
     )
     text = _ONE_SIDE_AND_OTHER.sub(_between_sides, text)
+    text = _FACING_NORTH.sub("", text)
     text = _ONE_ON_A_SIDE.sub(lambda m: f"{m.group(0)} of the other", text)
     # "durondeau pears and bing cherries, the cherries r east": a side said bare after "are"
     text = _ARE_A_SIDE.sub(lambda m: f"{m.group('verb')} to the {m.group('side')}", text)
@@ -309,9 +318,10 @@ def place_flanks(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
     return _AROUND_A_FIELD.sub(around_a_field, text)
 
 
-# "onions on both sides of the potatoes", "wheat either side of the maize block"
+# "onions on both sides of the potatoes", "wheat either side of the maize block", "two
+# carrot fields either side of the lettuce plot" (the count goes with its fields)
 _AROUND_A_FIELD = re.compile(
-    r"(?P<x>\b[A-Za-z][\w'-]*(?:\s+(?!(?i:on|both|either|each)\b)[A-Za-z][\w'-]*)?)\s+"
+    r"(?P<x>\b(?:(?i:two|2)\s+)?[A-Za-z][\w'-]*(?:\s+(?!(?i:on|both|either|each)\b)[A-Za-z][\w'-]*)?)\s+"
     r"(?:(?i:on)\s+)?"
     r"(?i:both sides of|either side of|each side of)\s+(?:(?i:the)\s+)?"
     r"(?P<y>[A-Za-z][\w'-]*(?:\s+[A-Za-z][\w'-]*)?)(?=\s*(?:[,.;:!?]|$))"

@@ -76,6 +76,7 @@ from agrirecipe.resolve._headings import (
     drop_joint_headings,
     drop_list_headings,
     drop_plural_headings,
+    drop_restated_counts,
     drop_titles,
     drop_trailing_summaries,
     fill_counted_lists,
@@ -273,6 +274,7 @@ class PromptReader(FieldReading):
         mentions = fill_counted_lists(clauses, mentions)
         mentions = drop_titles(clauses, mentions)
         mentions = drop_trailing_summaries(clauses, drop_plural_headings(clauses, mentions))
+        mentions = drop_restated_counts(clauses, mentions)
         mentions = name_counted_plots(clauses, mentions)
         apply_each_side(clauses)
         for clause in clauses:

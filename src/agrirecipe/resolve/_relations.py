@@ -54,6 +54,7 @@ from agrirecipe.resolve._rows import (
     surrounded,
     then_chain,
 )
+from agrirecipe.resolve._structure import strong_crops
 
 __all__ = ["read_relations"]
 
@@ -190,8 +191,12 @@ def read_relations(
                 )
             continue
         # a pronoun's clause ("north of it") names no field of its own after the word
+        # (in its own sentence: "..., a wheat field beyond the farm track to the north of
+        # it. There's a tractor working in the maize" names the maize again, not after it)
         after = [
-            m for c in clauses[position:] for m in (c.named if c is not clause else own_mentions(c))
+            m
+            for c in clauses[position : _sentence_end(clauses, position)]
+            for m in (c.named if c is not clause else own_mentions(c))
         ]
         said = " ".join(i.norm for i in clause.items)
         the_two = not clause.mentions and said in THE_TWO
@@ -342,6 +347,10 @@ def read_relations(
             # "To the north an orchard; in the middle wheat; to the south potatoes": each
             # side's field against the one in the middle
             pairs = (str(link.data["value"]), sides[0], (sides[1],))
+        elif (earlier := _the_first(clause, before)) is not None:
+            # "one field of wheat, one of maize, and a second wheat field beside the
+            # first": the first field of the same crop
+            pairs = (link.data.get("value", "next_to"), before[-1], (earlier,))
         elif (fronted := fronted_pair(clauses, position)) is not None:
             # "...; west of the peppers an onion plot": the field after the object
             pairs = (link.data.get("value", "next_to"), fronted[0], (fronted[1],))
@@ -401,6 +410,33 @@ def read_relations(
     for relation in relations:  # "in a line, in this order": one row
         unique.setdefault((relation.kind, relation.subject, relation.objects), relation)
     return list(unique.values())
+
+
+#: The marks that end a sentence for a placement's fields ("." and not ";").
+_FULL_STOPS = frozenset({".", "!", "?"})
+
+
+def _sentence_end(clauses: Sequence[Clause], position: int) -> int:
+    """The index of the first clause after ``position`` that opens a new sentence."""
+    return next(
+        (
+            index
+            for index in range(position + 1, len(clauses))
+            # (a full stop, not a semicolon: "Navel ... on the north side; Valencia Late
+            # ... on the south side" goes on about the same placing)
+            if (link := clauses[index].link) is not None and link.norm in _FULL_STOPS
+        ),
+        len(clauses),
+    )
+
+
+def _the_first(clause: Clause, before: Sequence[Mention]) -> Mention | None:
+    """The field "the first" points at after "a second X": the first named of X's crop."""
+    if clause.mentions or [i.norm for i in clause.items] not in (["the first"], ["the first one"]):
+        return None
+    if not before or not (crops := strong_crops(before[-1])):
+        return None
+    return next((m for m in before[:-1] if strong_crops(m) == crops), None)
 
 
 def _not_placed(clause: Clause) -> bool:
@@ -511,6 +547,10 @@ def _relation_mentions(
         after = list({id(m): m for m in after}.values())
         if after and before and (after[0].count or 1) >= 2:
             return "between", before[-1], (after[0], after[0])
+        if len(after) == 1 and len(before) >= 2 and attached:
+            # "cabbages nearest to me, a strip of onions in between, and a field of
+            # sweetcorn up the hill": between the fields named either side of it
+            return "between", before[-1], (before[-2], after[0])
         if len(after) < 2:
             return None
         if before:

@@ -702,8 +702,12 @@ def _plots_of_a_list(items: Sequence[Item]) -> None:
         plot.data["list_plots"] = True
         for word in counted:
             word.role = "filler"
-        for word in between:
-            if word.role == "geometry":
+        # ("in three plots of 10 x 25 m": each plot's size, said after the plot word)
+        after = (
+            items[cursor + 2 : cursor + 3] if followed and items[cursor + 1].role == "of" else []
+        )
+        for word in (*between, *after):
+            if word.role in ("geometry", "size") and (spec.get("plural") or word in between):
                 word.data["of_each_plot"] = True
 
 
