@@ -254,3 +254,28 @@ def test_a_fence_named_by_its_wood_is_scenery() -> None:
         "them. Overcast, a roll of fleece lying at the edge and a chestnut paling fence."
     ).fields
     assert (cabbages.crop, cabbages.stage, cabbages.health) == ("Cabbage", "Vegetative", "Ill")
+
+
+def test_a_look_after_a_list_whose_member_is_placed_again() -> None:
+    fields = recipe(
+        "Cabbage variety block for the head-size camera: Savoy, Red Express and January King, "
+        "each 10 rows at 75 cm, 45 cm in-row, 50 m long, with Red Express between the other "
+        "two. Heads formed and ready for harvest."
+    ).fields
+    assert [(f.variety, f.stage) for f in fields] == [
+        ("Savoy", "Maturation"),
+        ("Red Express", "Maturation"),
+        ("January King", "Maturation"),
+    ]
+    # (a field named again in its own sentence keeps the look said after it)
+    wheat, maize = recipe("Wheat and maize. The maize is ripe. Tall and green.").fields
+    assert ("stage" in wheat.stated, maize.stage) == (False, "Maturation")
+
+
+def test_a_bare_pair_of_measures_after_a_named_pair() -> None:
+    cherries, apples = recipe(
+        "Sweetheart Lapins cherries west of a Royal Gala block; cherries 4.5 m between rows "
+        "and 2.5 m between trees, apples 3.3 m and 0.9 m; 0.8 ha each."
+    ).fields
+    assert (cherries.agronomy.row_spacing_m, cherries.agronomy.in_row_spacing_m) == (4.5, 2.5)
+    assert (apples.agronomy.row_spacing_m, apples.agronomy.in_row_spacing_m) == (3.3, 0.9)

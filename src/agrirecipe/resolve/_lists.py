@@ -172,6 +172,7 @@ def fill_gapped_counts(text: str) -> str:
         ),
         text,
     )
+    text = _fill_measure_pairs(text)
     pattern = _gapped_of()
     position = 0
     while (match := pattern.search(text, position)) is not None:
@@ -181,3 +182,31 @@ def fill_gapped_counts(text: str) -> str:
         text = f"{text[:at]} {match.group('unit')}{text[at:]}"
         position = match.start("count")
     return text
+
+
+_LENGTH = rf"{_NUMBER}\s*(?:cm|m|in|ft)\b"
+# "cherries 4.5 m between rows and 2.5 m between trees": two measures, each with its words
+_NAMED_PAIR = re.compile(
+    rf"(?P<a>{_LENGTH})\s+(?P<first>(?:between|apart|in)\b[\w\s-]{{0,20}}?)\s+(?:and|&)\s+"
+    rf"(?P<b>{_LENGTH})\s+(?P<second>(?:between|apart|in)\b[\w\s-]{{0,20}}?)(?=\s*[,;.)]|$)",
+    re.IGNORECASE,
+)
+# "..., apples 3.3 m and 0.9 m;": the same two measures of another field, said bare
+_BARE_PAIR = re.compile(
+    rf"(?<=[A-Za-z] )(?P<a>{_LENGTH})\s+(?:and|&)\s+(?P<b>{_LENGTH})(?=\s*[,;.)]|$)",
+    re.IGNORECASE,
+)
+
+
+def _fill_measure_pairs(text: str) -> str:
+    """``text`` with "..., apples 3.3 m and 0.9 m" written "..., apples 3.3 m between rows
+    and 0.9 m between trees" after "cherries 4.5 m between rows and 2.5 m between trees":
+    a bare pair of lengths after another field's pair of named measures says the same
+    two measures, in the same order."""
+    named = _NAMED_PAIR.search(text)
+    if named is None:
+        return text
+    first, second = named.group("first"), named.group("second")
+    return text[: named.end()] + _BARE_PAIR.sub(
+        lambda m: f"{m.group('a')} {first} and {m.group('b')} {second}", text[named.end() :]
+    )

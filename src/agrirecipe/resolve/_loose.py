@@ -42,6 +42,7 @@ from agrirecipe.resolve._structure import (
     per_bed,
     strong_crops,
 )
+from agrirecipe.resolve._words import SENTENCE_MARKS
 
 __all__ = ["attach_loose"]
 
@@ -425,6 +426,21 @@ def _past_a_reference(
         return targets
     relation = clauses[index]
     named_before = any(targets[0] is m for c in clauses[:index] for m in c.mentions)
+    start = sentence_start(clauses, index)
+    listed = list({id(m): m for c in clauses[start:position] for m in c.mentions}.values())
+    said = sorted(h.start for h in targets[0].heads)
+    placing = [c.link for c in clauses[start + 1 : position] if c.link is not None]
+    if (
+        link_norm(clauses[position]) in SENTENCE_MARKS
+        and len(listed) >= 2
+        # (the member named again after the others, to place it)
+        and any(said[0] < h.start < said[-1] for m in listed for h in m.heads)
+        and any(link.role in ("relation", "between", "trailer") for link in placing)
+    ):
+        # "Savoy, Red Express and January King, ..., with Red Express between the other
+        # two. Heads formed and ready for harvest.": a look of its own sentence after a
+        # list whose member is named again to place it is the whole list's
+        return listed
     subject = clauses[index - 1].mentions[-1] if clauses[index - 1].mentions else None
     if (
         relation.link is not None
