@@ -64,6 +64,12 @@ def _repeated_unit() -> re.Pattern[str]:
     )
 
 
+@functools.cache
+def _measure() -> re.Pattern[str]:
+    """One of the measures a list of values may end in, after its last value."""
+    return re.compile(rf"\s*(?:{_units()})(?![\w²])", re.IGNORECASE)
+
+
 def _one_unit(match: re.Match[str]) -> str:
     """The value without its unit, when the list it starts ends in a measure of
     ``value_lists.yaml`` and "respectively" ("40 cm, 30 cm and 75 cm apart respectively")."""
@@ -78,7 +84,7 @@ def _one_unit(match: re.Match[str]) -> str:
     values = rest.match(text, match.end())
     if values is None:
         return match.group(0)
-    measure = re.compile(rf"\s*(?:{_units()})(?![\w²])", re.IGNORECASE).match(text, values.end())
+    measure = _measure().match(text, values.end())
     if measure is None or not _RESPECTIVELY.match(text, measure.end()):
         return match.group(0)
     return match.group("first")

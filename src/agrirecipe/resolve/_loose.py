@@ -401,7 +401,9 @@ def _past_a_reference(
     clauses: Sequence[Clause], position: int, targets: list[Mention]
 ) -> list[Mention]:
     """'a wheat plot to the south of the vineyard, 25 x 100 m': words after a field
-    named again as a relation's object describe the relation's subject."""
+    named again as a relation's object describe the relation's subject; a look in a
+    sentence of its own after a list whose member was named again to place it ("...,
+    with Red Express between the other two. Heads formed.") describes the whole list."""
     for at in (position, position - 1):
         # "Padron plot north of it, 20 rows", "the Danvers carrots beside them have
         # Alternaria, dark lesions ...": the words after "north of it" / "beside them"
@@ -433,6 +435,7 @@ def _past_a_reference(
     if (
         link_norm(clauses[position]) in SENTENCE_MARKS
         and len(listed) >= 2
+        and bool(said)
         # (the member named again after the others, to place it)
         and any(said[0] < h.start < said[-1] for m in listed for h in m.heads)
         and any(link.role in ("relation", "between", "trailer") for link in placing)

@@ -242,7 +242,7 @@ def parallel_fields(clauses: Sequence[Clause], position: int) -> list[Mention]:
 
 
 #: Words after a size that make it every listed field's ("1 ha each").
-EACH_SIZE = ("each", "both")
+_EACH_SIZE = ("each", "both")
 
 
 def share_each_measures(clauses: Sequence[Clause]) -> None:
@@ -257,7 +257,7 @@ def share_each_measures(clauses: Sequence[Clause]) -> None:
                 for a, b in zip(ordered, following, strict=True)
                 if a.role == "size"
                 and (
-                    (b is not None and b.role == "all" and b.norm in EACH_SIZE)
+                    (b is not None and b.role == "all" and b.norm in _EACH_SIZE)
                     # "Cos, iceberg and Lollo in three plots of 10 x 25 m": each plot's
                     or bool(a.data.get("of_each_plot"))
                 )

@@ -15,6 +15,7 @@ from collections.abc import Sequence
 
 from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._links import OPPOSITE, link_norm
+from agrirecipe.resolve._words import SENTENCE_MARKS
 
 __all__ = [
     "a_distance",
@@ -30,8 +31,6 @@ __all__ = [
 #: The verbs that open what is said of a sentence's subject ("... is ripe", "... are
 #: covered in ripe fruit").
 _COPULAS = frozenset({"is", "are"})
-#: What ends a sentence before its subject.
-_SENTENCE_ENDS = frozenset({".", ";", "!", "?"})
 
 
 def predicate_of_the_placed(clauses: Sequence[Clause]) -> None:
@@ -65,13 +64,15 @@ def predicate_of_the_placed(clauses: Sequence[Clause]) -> None:
         if copula is None:
             continue
         moved = words[copula:]
-        placed.items = [i for i in placed.items if i not in moved]
+        gone = {id(i) for i in moved}
+        placed.items = [i for i in placed.items if id(i) not in gone]
         subject.items.extend(moved)
 
 
 def _first_of_its_sentence(clauses: Sequence[Clause], clause: Clause) -> bool:
+    """Whether no field is named in ``clause``'s sentence before it."""
     index = clause.index
-    while (link := clauses[index].link) is not None and link.norm not in _SENTENCE_ENDS:
+    while (link := clauses[index].link) is not None and link.norm not in SENTENCE_MARKS:
         index -= 1
         if clauses[index].mentions:
             return False
