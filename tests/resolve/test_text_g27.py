@@ -279,3 +279,21 @@ def test_a_bare_pair_of_measures_after_a_named_pair() -> None:
     ).fields
     assert (cherries.agronomy.row_spacing_m, cherries.agronomy.in_row_spacing_m) == (4.5, 2.5)
     assert (apples.agronomy.row_spacing_m, apples.agronomy.in_row_spacing_m) == (3.3, 0.9)
+
+
+@pytest.mark.parametrize("noun", ["block", "one"])
+def test_members_told_apart_by_their_sides(
+    noun: str, named_relations: Callable[[str], NamedRelations]
+) -> None:
+    prompt = (
+        f"Two vineyard blocks for a robot sim, 20 rows each: the western {noun} at 2.75 m "
+        f"between rows, the eastern {noun} at 3 m, vines 1.5 m apart throughout."
+    )
+    fields = recipe(prompt).fields
+    assert [(f.crop, f.agronomy.row_spacing_m, f.agronomy.in_row_spacing_m) for f in fields] == [
+        ("Grape", 2.75, 1.5),
+        ("Grape", 3.0, 1.5),
+    ]
+    scene = recipe(prompt)
+    west, east = (f.id for f in scene.fields)
+    assert ("west_of", west, (east,)) in {(r.kind, r.subject, r.objects) for r in scene.relations}

@@ -351,6 +351,15 @@ _LEADING = re.compile(
 )
 
 
+# "the western block at 2.75 m between rows", "the eastern one at 3 m": a member named by
+# its side, then its measures (to a mark, past a decimal point)
+_SIDE_MEMBER = re.compile(
+    r"\b(?i:the)\s+(?P<side>(?i:north|south|east|west))(?i:ern)?\s+"
+    r"(?P<noun>(?i:block|plot|field|strip|one|half|part|section|parcel|bed))\s+"
+    r"(?P<rest>(?i:at|with|on|of)\s+\d(?:[^,;.:()]|[.,](?=\d))*)"
+)
+
+
 def place_leading_directions(text: str) -> str:
     """``text`` with "the east plot is X" written "X in the eastern block", and "X in the
     north orchard" written "X in the north block" (where X is, not one more field)."""
@@ -358,6 +367,16 @@ def place_leading_directions(text: str) -> str:
         lambda m: f"{m.group('rest').rstrip()} in the {_SIDES[m.group('side').lower()]}ern block",
         text,
     )
+    if len({m.group("side").lower() for m in _SIDE_MEMBER.finditer(text)}) >= 2:
+        # "the western block at 2.75 m between rows, the eastern block at 3 m": members
+        # told apart by their sides, each said after its measures
+        text = _SIDE_MEMBER.sub(
+            lambda m: (
+                f"the {m.group('noun')} {m.group('rest').rstrip()} on the "
+                f"{m.group('side').lower()} side"
+            ),
+            text,
+        )
     return _IN_SIDE_PLOT.sub(lambda m: f"{m.group('at')} the {m.group('side').lower()} block", text)
 
 
