@@ -66,6 +66,9 @@ def expand_casual(prompt: str) -> str:
     text = _CAB.sub("cabernet", text)
     text = pattern.sub(replace, text)
     text = lower.sub(lambda match: lower_forms[match.group(0)], text)
+    # "sweet corn next to cherry tomatoes, ripe, aug, both": what was said before a
+    # closing "both" is said of both ("..., both ripe, aug")
+    text = _BOTH_AFTER.sub(lambda m: f", both {m.group('said').strip().rstrip(',')}", text)
     # "strawbery beds pls, 6 of them": a "please" before a mark says nothing ("beds, 6 of
     # them" counts the beds)
     text = _PLEASE_BEFORE_MARK.sub("", text)
@@ -257,6 +260,9 @@ _CAB = re.compile(
     r"(?<!tractor )(?<!truck )(?<!lorry )(?<!combine )(?<!sprayer )(?<!digger )(?<!the )"
     r"(?<!my )(?<!its )(?<!a )\b(?i:cab)\b(?! (?i:sav|sauv|franc)\b)"
 )
+_BOTH_AFTER = re.compile(
+    r",(?P<said>(?:\s*[^,;.:!?()]+,){1,3})\s*(?i:both)(?:\s+(?i:of)\s+(?i:them))?\s*(?=[.;!?]|$)"
+)
 _EMOJI_IN_WORD = re.compile(
     "(?<=[A-Za-z])[\U0001f000-\U0001faff\u2600-\u27bf\ufe0f\u200d]+(?=[A-Za-z])"
 )
@@ -306,6 +312,37 @@ _FIELDS_OF_THEM = re.compile(
 )
 
 
+_PLOTS_SAID_AFTER = re.compile(
+    r"(?P<words>(?:[A-Za-z][\w'-]*\s+){0,2}[A-Za-z][\w'-]*)\s*(?:\(|,)\s*"
+    r"(?P<count>\d+|(?i:one|a|two|three|four|five|six|seven|eight|nine|ten|twelve))\s+"
+    # (not beds: "Elsanta strawberries, 6 beds, two rows per bed" are one field's beds)
+    r"(?P<plots>(?i:fields?|plots?|blocks?|strips?|orchards?|patch(?:es)?|paddocks?|"
+    r"vineyards?|groves?))\s*(?:\)|,(?=\s+[a-z]))"
+)
+
+
+# "a wheat field with yellow rust and a healthy one next to it": one more field of the
+# crop just named, told apart by a word of its own
+_ONE_MORE = re.compile(
+    r"(?P<lead>(?:\b(?i:and)|,|&)\s+(?i:a|an|another)\s+)(?P<said>(?:[A-Za-z][\w-]*\s+){1,2}?)"
+    r"(?i:one)\b(?=\s+(?i:next|beside|by|near|north|south|east|west|alongside|behind|across)\b)"
+)
+
+
+def _one_of_the_crop(match: re.Match[str], tag: Callable[[str], Sequence[Item]]) -> str:
+    """ "... and a healthy one next to it" with "one" said as the crop named last before it
+    in its sentence ("a healthy wheat field"), when a word of it names one."""
+    before = re.split(r"[.;!?]", match.string[: match.start()])[-1].split()
+    for at in range(len(before) - 1, -1, -1):
+        items = [i for i in tag(before[at]) if i.role != "separator"]
+        if items and all(i.has("crop") for i in items):
+            # (with the crop's own plot word: "a pear orchard, and a small one" is an orchard)
+            after = before[at + 1].strip(",") if at + 1 < len(before) else ""
+            plot = after if after and all(i.has("plot") for i in tag(after)) else "field"
+            return f"{match.group('lead')}{match.group('said')}{before[at]} {plot}"
+    return match.group(0)
+
+
 def count_said_after_crop(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
     """``text`` with "The farm is mostly potatoes - four fields of them - with ..." written
     "... mostly four potatoes fields with ...": a count of plots "of them" said right after
@@ -322,4 +359,19 @@ def count_said_after_crop(text: str, tag: Callable[[str], Sequence[Item]]) -> st
                 return f"{lead}{' ' if lead else ''}{count} {crop} {plots} "
         return match.group(0)
 
-    return _FIELDS_OF_THEM.sub(rewrite, text)
+    text = _ONE_MORE.sub(lambda m: _one_of_the_crop(m, tag), text)
+    text = _FIELDS_OF_THEM.sub(rewrite, text)
+    # "bing cherries (one block) squeezed between ...", "cherries, two blocks, next to
+    # wheat": the count of the crop's plots, said between brackets or commas after it
+    # (not after a list: "lettuce, cabbage and onions, 3 fields" counts the list)
+    return _PLOTS_SAID_AFTER.sub(
+        lambda m: m.group(0) if _after_a_list(m, tag) else rewrite(m), text
+    )
+
+
+def _after_a_list(match: re.Match[str], tag: Callable[[str], Sequence[Item]]) -> bool:
+    """Whether the crop a bracketed or comma'd count follows ends a list of crops."""
+    clause = re.split(r"[.;:!?]", match.string[: match.end("words")])[-1]
+    return bool(re.search(r"(?:,|\band\b|&|\+|\bor\b)", clause)) and (
+        sum(1 for i in tag(clause) if i.has("crop", "variety")) >= 2
+    )

@@ -347,10 +347,13 @@ def drop_titles(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Ment
         return mentions
     title, field = mentions[0], mentions[1]
     crops = strong_crops(title)
+    # ("Just a spud farm, honestly. One big field of spuds, ...": the farm named by its
+    # crop is a title too)
+    farm = any(i.norm == "farm" for i in title.items)
     if (
         not crops
-        or title.plot is not None
-        or title.count is not None
+        or (title.plot is not None and not farm)
+        or (title.count is not None and not (farm and title.count == 1))
         or title.refinements
         or names_a_variety(title)
         or not (strong_crops(field) == crops or _lists_only(field, crops))
@@ -367,6 +370,8 @@ def drop_titles(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Ment
             and (
                 c.link.norm in SENTENCE_MARKS
                 or (c.link.norm == ":" and c.index == title.clause + 1)
+                # ("A lettuce farm, just one huge field of lettuces": the farm's comma)
+                or (farm and c.link.norm in (",", "-", "–", "—") and c.index == title.clause + 1)
             )
         ),
         None,

@@ -380,10 +380,10 @@ def place_leading_directions(text: str) -> str:
     return _IN_SIDE_PLOT.sub(lambda m: f"{m.group('at')} the {m.group('side').lower()} block", text)
 
 
-# "Durondeau pears in the north orchard": where the pears are
+# "Durondeau pears in the north orchard", "Cos on the north beds": where the pears are
 _IN_SIDE_PLOT = re.compile(
     r"\b(?P<at>(?i:in|on))\s+(?i:the)\s+(?P<side>(?i:north|south|east|west))(?i:ern)?\s+"
-    r"(?i:orchard|vineyard|paddock|grove|plantation|patch|strip)\b"
+    r"(?i:orchard|vineyard|paddock|grove|plantation|patch|strip|beds|rows|terraces)\b"
     r"(?!\s+(?i:of|is|has|are|with)\b)"
 )
 

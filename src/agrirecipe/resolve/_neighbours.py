@@ -230,6 +230,18 @@ _FACING_NORTH = re.compile(
 )
 
 
+_SIDE_LABEL = re.compile(
+    r"(?:^|(?<=[.;!?]\s))(?P<side>(?i:left|right|middle|centre|center))\s*:\s*(?=[A-Za-z])"
+)
+_SIDE_LABELS = {
+    "left": "On the left",
+    "right": "On the right",
+    "middle": "In the middle",
+    "centre": "In the middle",
+    "center": "In the middle",
+}
+
+
 def place_sides(text: str) -> str:
     """``text`` with "X with A on one side and B on the other" written "X between A and
     B", "..., danvers one east" written "..., danvers one east of the other", "the
@@ -245,6 +257,10 @@ def place_sides(text: str) -> str:
     )
     text = _ONE_SIDE_AND_OTHER.sub(_between_sides, text)
     text = _FACING_NORTH.sub("", text)
+    # "Left: corn. Middle: spuds. Right: cabbages.": the parts of the view as labels
+    # (with a left or right among them: "Top: ... Middle: ... Bottom: ..." are zones)
+    if any(m.group("side").lower() in ("left", "right") for m in _SIDE_LABEL.finditer(text)):
+        text = _SIDE_LABEL.sub(lambda m: f"{_SIDE_LABELS[m.group('side').lower()]}, ", text)
     text = _ONE_ON_A_SIDE.sub(lambda m: f"{m.group(0)} of the other", text)
     # "durondeau pears and bing cherries, the cherries r east": a side said bare after "are"
     text = _ARE_A_SIDE.sub(lambda m: f"{m.group('verb')} to the {m.group('side')}", text)

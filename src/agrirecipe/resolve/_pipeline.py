@@ -381,14 +381,14 @@ def _validate(intent: SceneIntent, context: ResolveContext) -> None:
     # 30 m" as "8 rows at 76 cm, rows 30 m long"; "plot": "the polytunnel of tomatoes" as
     # "the plot of tomatoes"; "them": "between the two a strip of ..." as "between them";
     # "two", "fields", "each": "cereals on both sides of the track" as "cereals in two
-    # fields, one each side of the track"
+    # fields, one each side of the track"; "on": "Left: corn" as "On the left, corn"
     expanded = expand_casual(intent.prompt)
     prompt_words = (
         _words(intent.prompt)
         | _words(expanded)
         | _words(spread_value_lists(expanded))
         | {"the", "in", "plants", "one", "other", "at", "rows", "long", "plot", "them"}
-        | {"two", "fields", "each"}
+        | {"two", "fields", "each", "on"}
     )
     for index, field in enumerate(intent.fields):
         path = f"fields[{index}]"
