@@ -68,6 +68,7 @@ def test_a_crops_plots_said_after_it_are_placed(
             [("Wheat", "Ill"), ("Wheat", "Healthy")],
         ),
         ("a ripe wheat field and a young one next to it", [("Wheat", "Healthy")] * 2),
+        ("ripe wheat and a young one next to it", [("Wheat", "Healthy")] * 2),
         (
             "a wheat field and a pear orchard, and a small one beside it",
             [("Wheat", "Healthy"), ("Pear", "Healthy"), ("Pear", "Healthy")],

@@ -338,7 +338,9 @@ def _one_of_the_crop(match: re.Match[str], tag: Callable[[str], Sequence[Item]])
         if items and all(i.has("crop") for i in items):
             # (with the crop's own plot word: "a pear orchard, and a small one" is an orchard)
             after = before[at + 1].strip(",") if at + 1 < len(before) else ""
-            plot = after if after and all(i.has("plot") for i in tag(after)) else "field"
+            # (else "plot", a word the traceability check accepts as read in: "ripe wheat
+            # and a young one next to it")
+            plot = after if after and all(i.has("plot") for i in tag(after)) else "plot"
             return f"{match.group('lead')}{match.group('said')}{before[at]} {plot}"
     return match.group(0)
 
