@@ -41,6 +41,7 @@ _STATED_NAMES: dict[str, AttributeName] = {
     "plants_per_row": "row_length",
     "row_spacing_m": "row_spacing",
     "bed_width_m": "bed_width",
+    "alley_m": "row_spacing",
     "in_row_spacing_m": "in_row_spacing",
     "plants_per_ha": "density",
     "plant_count": "plant_count",
@@ -164,6 +165,12 @@ def plan_rows(
                 10_000.0 * rows_per_bed / (stated["plants_per_ha"] * stated["in_row_spacing_m"]),
                 4,
             )
+        alley = stated.get("alley_m")
+        default_rows = planting.bed_row_spacing_m.value
+        if bed_width is None and alley is not None:
+            # "double rows 1 m apart with 3.75 m alleys": a bed is its rows and one alley
+            within = stated.get("row_spacing_m", default_rows if default_rows > 0 else alley / 2)
+            bed_width = alley + within * (rows_per_bed - 1)
         if bed_width is None and planting.rows_per_bed > 1:
             bed_width = planting.row_spacing_m.value
         if "row_spacing_m" in stated:
@@ -173,20 +180,25 @@ def plan_rows(
             spacing = (
                 bed_width if bed_width is not None else planting.row_spacing_m.value * rows_per_bed
             )
-            default_rows = planting.bed_row_spacing_m.value
             bed_rows = default_rows if default_rows > 0 else spacing / rows_per_bed / 2
+            if alley is not None and alley < spacing:
+                # "double rows with 3.75 m alleys, ..., 1,840 plants/ha": what the beds'
+                # spacing leaves beside the alley is the rows on each bed
+                bed_rows = (spacing - alley) / (rows_per_bed - 1)
             # "4 rows per bed on 1.5 m beds": the rows said fit on the bed said.
             bed_rows = min(bed_rows, spacing / rows_per_bed)
     else:
         spacing = (
             stated.get("row_spacing_m")
             or stated.get("bed_width_m")
+            or stated.get("alley_m")  # ("4.5 m alleys": single rows, an alley between each two)
             or single_spacing
             or planting.row_spacing_m.value
         )
         if {"plants_per_ha", "in_row_spacing_m"} <= set(stated) and not {
             "row_spacing_m",
             "bed_width_m",
+            "alley_m",
         } & set(stated):
             # "80,000 heads per ha, 30 cm in-row": the rows are as far apart as that makes
             spacing = round(10_000.0 / (stated["plants_per_ha"] * stated["in_row_spacing_m"]), 4)
@@ -282,18 +294,20 @@ def plan_rows(
     else:
         headland = default_headland_m
     planted_m: tuple[float, float] | None = None
-    if size_m is not None and stated_headland is None:
+    if size_m is not None:
         # "36 m x 60 m: 12 rows on a 3 m grid": the size said is the field; its border
         # narrows to what the rows leave (they are planted whole only if they fit), and
         # "8 beds ... all three are 20 x 50 m": rows that fill less of it are a planted
-        # block in its middle, as many as said.
+        # block in its middle, as many as said. A headland said too ("18 rows of 30 m
+        # with a 2 m headland all round; the whole plot is 20 x 34 m") stays as said.
         room = [
             (side - planted) / 2
             for side, planted in ((width, usable_w), (length, usable_l))
             if planted is not None
         ]
-        if room and min(room) >= 0:
-            headland = min(headland, *room)
+        least = stated_headland if stated_headland is not None else 0.0
+        if room and min(room) >= least - 1e-9:
+            headland = min(headland, *room) if stated_headland is None else stated_headland
             inner_w, inner_l = width - 2 * headland, length - 2 * headland
             block = (
                 inner_w if usable_w is None else usable_w,

@@ -307,7 +307,7 @@ class MentionBuilder:
         """Fill ``clause.mentions`` (or ``clause.loose`` when it names no field)."""
         current: Mention | None = None
         pending: list[Item] = []
-        for item in clause.items:
+        for index, item in enumerate(clause.items):
             if item.role not in _HEADS:
                 pending.append(item)
                 continue
@@ -331,6 +331,7 @@ class MentionBuilder:
                             _existential(clause, pending) and any(p.role == "size" for p in pending)
                         )
                         or _possessed(pending)
+                        or (current.has_crop and _with_a_plot_of(clause.items, index, pending))
                     )
                 )
                 # "between the two groves a block of bananas": a plot counted again;
@@ -468,6 +469,18 @@ def _existential(clause: Clause, pending: Sequence[Item]) -> bool:
 def _possessed(pending: Sequence[Item]) -> bool:
     """'The cherry orchard has a plot of cherry tomatoes': what a field has is another."""
     return _said(pending, {"has", "have", "had"}, _ARTICLE)
+
+
+def _with_a_plot_of(items: Sequence[Item], index: int, pending: Sequence[Item]) -> bool:
+    """'5 ha of maize with a 1 ha field of onions': after "with a", a plot of another crop
+    (the plot noun at ``index`` followed by "of" and a crop) is a field of its own."""
+    norms = [p.norm for p in pending]
+    if "with" not in norms or norms.index("with") + 1 >= len(norms):
+        return False
+    if norms[norms.index("with") + 1] not in _ARTICLE:
+        return False
+    after = items[index + 1 : index + 3]
+    return len(after) == 2 and after[0].norm == "of" and after[1].role == "head"
 
 
 def _pre_head_start(pending: Sequence[Item]) -> int:

@@ -65,7 +65,9 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
         )
         # "half the vines" (not "half fruit", a share of the fields)
         fraction = definite and any(i.role == "fraction" for i in mention.items)
-        own_size = any(i.role in ("size", "geometry") for i in mention.items)
+        # "two vineyard blocks. block 1: 30 rows of vines, ...": a member's own plants
+        member_plants = _plants_of_a_member(clauses, position, mention)
+        own_size = not member_plants and any(i.role in ("size", "geometry") for i in mention.items)
         described = any(
             i.role in ("stage", "health", "cue", "season", "month")
             or "cue" in i.data
@@ -102,6 +104,8 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
             continue  # "Bare vines pruned back ..., and the pear trees ... are bare too"
         if definite and not predicate and _placed_crop_of_its_own(clauses, position, mention):
             continue  # "pear trees beyond them and the vines on the hill": the grapes
+        if definite and _relation_object_named_before(clauses, position, mention):
+            continue  # "the cherries between the vines and the pears": the vineyard named
         if definite and _named_so_before(clauses[:position], mention):
             # "Half the farm is fruit and half is veg, ..., with the fruit on the east side":
             # the field named by that word before, named again
@@ -143,7 +147,13 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
             # part, not the first member of a list)
             or (listed and not (definite or predicate or (described and others_before)))
             or not (
-                described or definite or fraction or mention.distinct or predicate or one_described
+                described
+                or definite
+                or fraction
+                or mention.distinct
+                or predicate
+                or one_described
+                or member_plants
             )
         ):
             continue
@@ -212,6 +222,54 @@ def _placed_crop_of_its_own(clauses: Sequence[Clause], position: int, mention: M
                 and following.link.role in ("relation", "between")
             )
         )
+    )
+
+
+def _plants_of_a_member(clauses: Sequence[Clause], position: int, mention: Mention) -> bool:
+    """Whether "30 rows of vines" (a word for plants) follows "one:" or "the other:", a
+    member of fields counted before ("two vineyard blocks") that allow only that crop."""
+    crops = strong_crops(mention)
+    if not crops or mention.count is not None or position == 0:
+        return False
+    before, link = clauses[position - 1], clauses[position].link
+    member = (
+        not before.mentions
+        and bool(before.loose)
+        and all(i.role in ("reference", "number") for i in before.loose)
+        and link is not None
+        and link.norm == ":"
+    )
+    return member and _grown_before(clauses[:position], crops, counted=True)
+
+
+def _relation_object_named_before(
+    clauses: Sequence[Clause], position: int, mention: Mention
+) -> bool:
+    """Whether "the vines" (a word for plants that names a crop) is what a field is placed
+    against ("between the vines and the pears") and a field of that crop was named
+    before: that field, named again by its plants."""
+    crops = strong_crops(mention)
+    link = clauses[position].link
+    if not crops or link is None:
+        return False
+    previous = clauses[position - 1].link if position > 0 else None
+    against = link.role in ("relation", "between") or (
+        link.role == "conjunction" and previous is not None and previous.role == "between"
+    )
+    return against and _grown_before(clauses[:position], crops, counted=False)
+
+
+def _grown_before(before: Sequence[Clause], crops: set[str], *, counted: bool) -> bool:
+    """Whether a field named in ``before`` grows ``crops``: it names them, or its plot word
+    allows only them ("a vineyard"); ``counted``: two or more such fields counted."""
+    return any(
+        (not counted or (m.count or 1) >= 2)
+        and (
+            crops <= strong_crops(m)
+            or any(h.role == "plot" and set(h.data["value"]["options"]) == crops for h in m.heads)
+        )
+        for c in before
+        for m in c.mentions
     )
 
 

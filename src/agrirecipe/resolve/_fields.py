@@ -41,7 +41,9 @@ __all__ = [
 #: The largest side a planting grid said like a size can have ("4.5 x 2.5 m").
 _GRID_MAX_M = 12.0
 #: Stated spacings that leave no room for a grid said like a size.
-_SPACED = frozenset({"row_spacing_m", "in_row_spacing_m", "bed_width_m", "plants_per_ha"})
+_SPACED = frozenset(
+    {"row_spacing_m", "in_row_spacing_m", "bed_width_m", "alley_m", "plants_per_ha"}
+)
 
 #: Roles of the words that describe a field (not name it).
 ATTRIBUTE_ROLES = (

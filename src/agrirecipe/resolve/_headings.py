@@ -32,6 +32,7 @@ __all__ = [
     "drop_titles",
     "drop_trailing_summaries",
     "fill_counted_lists",
+    "lend_heading_crop",
     "name_counted_plots",
 ]
 
@@ -648,3 +649,43 @@ def name_counted_plots(clauses: Sequence[Clause], mentions: list[Mention]) -> li
     for clause in clauses:
         clause.mentions = [m for m in clause.mentions if m is not heading]
     return mentions[1:]
+
+
+def lend_heading_crop(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
+    """'Canopy LiDAR study in Washington Navel: a super-high-density block, ..., and south
+    of it a conventional block, ...': a crop named alone before a colon, then two or more
+    plots of no crop, is the crop of those plots, not a field of its own. Return the
+    fields left."""
+    if len(mentions) < 3:
+        return mentions
+    heading, plots = mentions[0], mentions[1:]
+    colon = heading.clause + 1
+    if (
+        not heading.has_crop
+        or heading.plot is not None
+        or (heading.count or 1) != 1
+        or heading.refinements
+        or colon >= len(clauses)
+        or link_norm(clauses[colon]) != ":"
+        or clauses[heading.clause].mentions[-1:] != [heading]
+        or any(
+            m.has_crop or m.category is not None or m.plot is None or (m.count or 1) != 1
+            for m in plots
+        )
+        or any(r.has_crop for m in plots for r in m.refinements)
+    ):
+        return mentions
+    # (only plots that can hold the crop: "Navel: a block, a vineyard" is no heading)
+    crops = strong_crops(heading)
+    if any(
+        m.plot is not None and m.plot["options"] and not crops & set(m.plot["options"])
+        for m in plots
+    ):
+        return mentions
+    names = [h for h in heading.heads if h.role == "head"]
+    for mention in plots:
+        mention.heads.extend(names)
+        mention.items.extend(names)
+        mention.interpretations = heading.interpretations
+    clauses[heading.clause].mentions = []
+    return plots

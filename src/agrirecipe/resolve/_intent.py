@@ -95,6 +95,8 @@ class RowSpec(_Frozen):
     row_length_m: float | None = Field(default=None, gt=0.0)
     row_spacing_m: float | None = Field(default=None, gt=0.0)
     bed_width_m: float | None = Field(default=None, gt=0.0)
+    #: The open alley between single rows, or between the pairs of double rows.
+    alley_m: float | None = Field(default=None, gt=0.0)
     in_row_spacing_m: float | None = Field(default=None, gt=0.0)
     plants_per_ha: float | None = Field(default=None, gt=0.0)
     plant_count: int | None = Field(default=None, gt=0)

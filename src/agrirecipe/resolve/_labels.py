@@ -16,7 +16,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable, Sequence
 
-from agrirecipe.resolve._lexicon import Item, number_value, tokenize
+from agrirecipe.resolve._lexicon import Item, number_value, tokenize, vocabulary
 
 __all__ = [
     "drop_list_numbers",
@@ -86,8 +86,10 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
     label ("Block A = Jonagored apples"). Text with fewer than two labels that name
     crops is returned unchanged.
     """
+    text = _PLACED_THEN_MEASURED.sub(r"\g<head> \g<rest>, \g<where>", text)
     text = _PLURAL_LABELS.sub(_one_noun_each, _valued_members(_numbered_members(text, tag)))
     text = _PLACED_THEN_NAMED.sub(r"\g<head>, \g<where>, is", text)
+    text = _PLACED_THEN_MARKED.sub(_placed_then_marked, text)
     definitions = sorted(
         [
             *(m for m in _DEFINITION.finditer(text) if not _REFERRED.search(text[: m.start()])),
@@ -190,6 +192,33 @@ _PLACED_THEN_NAMED = re.compile(
     rf"(?:[A-H]|\d{{1,2}}|{_WORD_LABELS}))\s+(?i:and)\s+(?i:is)\b"
 )
 
+# "Plot B directly east of A = Nantes carrots": a label placed against another, then
+# named after "=" or ":" (the other's noun left out), like "plot B, directly east of
+# plot A: Nantes carrots" (not a bare "A = ..." defining plot A)
+_PLACED_THEN_MARKED = re.compile(
+    rf"(?P<head>\b(?P<noun>(?i:{_NOUNS}))\s+(?:[A-H]|\d{{1,2}}|{_WORD_LABELS}))\s*,?\s+"
+    r"(?P<where>(?:(?i:directly|just|immediately|right|due)\s+)?"
+    r"(?:(?i:north|south|east|west)\s+(?i:of)|(?i:next to|beside|alongside))\s+(?:(?i:the)\s+)?)"
+    rf"(?P<other>(?i:{_NOUNS})\s+)?(?P<ref>[A-H]|\d{{1,2}}|{_WORD_LABELS})\s*(?:=|:)\s*"
+    r"(?=[A-Za-z])"
+)
+
+
+def _placed_then_marked(match: re.Match[str]) -> str:
+    other = match.group("other") or f"{match.group('noun')} "
+    return f"{match.group('head')}, {match.group('where')}{other}{match.group('ref')}: "
+
+
+# "plot 2 east of plot 1 at 70,000 plants/ha on 90 cm rows": what follows the label
+# placed against another is said of the label's own plot, as in "plot 2 at 70,000
+# plants/ha on 90 cm rows, east of plot 1"
+_LABEL = rf"(?i:{_NOUNS})\s+(?:[A-H]|\d{{1,2}}|{_WORD_LABELS})"
+_PLACED_THEN_MEASURED = re.compile(
+    rf"(?P<head>\b{_LABEL})\s+(?P<where>(?:(?i:directly|just|immediately|right|due)\s+)?"
+    rf"(?i:north|south|east|west)\s+(?i:of)\s+(?:(?i:the)\s+)?{_LABEL})\s+"
+    rf"(?P<rest>(?i:at|on|with)\s+\d[^;.:]*?)(?=\s*(?:[;:]|\.(?!\d)|,\s*{_LABEL}\b|$))"
+)
+
 # "between plots 1 and 3", "blocks A and C": one noun for two labels
 _PLURAL_LABELS = re.compile(
     rf"\b(?P<noun>(?i:{_NOUNS}))s\s+(?P<a>[A-H]|\d{{1,2}}|{_WORD_LABELS})\s+(?P<and>(?i:and|&|or))\s+"
@@ -263,7 +292,13 @@ def _numbered_members(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
     "Field A: 200 x 150 m, rows N-S. Field B, east of A: 0.8 ha" names none, so A and
     B are the two members)."""
     matches = list(_MEMBER_LABEL.finditer(text))
-    if any(m.group("colon") and _crop_phrase(text[m.end() :], tag) for m in matches):
+    plants = frozenset(str(w) for w in vocabulary()["descriptive_heads"])
+    if any(
+        m.group("colon")
+        # ("block 1: 30 rows of vines" names the plants of the blocks counted, no crop)
+        and set(_crop_phrase(text[m.end() :], tag).lower().split()) - plants
+        for m in matches
+    ):
         return text
     labels = [m.group("label").upper() for m in matches]
     if not matches or set(labels) not in ({"1", "2"}, {"A", "B"}) or labels[0] not in "1A":

@@ -369,6 +369,8 @@ class Lexicon:
         said = text.split()
         for match in matches:
             phrase, score = str(match[0]), 100.0 * float(match[1])
+            if text[1:] == phrase and text[0] != text[1]:
+                continue  # "a fox trotting across": a word of its own, not "rotting" mistyped
             known = phrase.split()
             if len(said) == len(known) and any(
                 a != b and a in everyday_words() and not _doubled(a, b)

@@ -366,7 +366,14 @@ def shared_by_all_after(clauses: Sequence[Clause], position: int) -> bool:
 
 
 #: What "same spacing" copies from the field before: how its rows and plants are spaced.
-_SPACINGS = ("row_spacing_m", "in_row_spacing_m", "bed_width_m", "rows_per_bed", "plants_per_ha")
+_SPACINGS = (
+    "row_spacing_m",
+    "in_row_spacing_m",
+    "bed_width_m",
+    "alley_m",
+    "rows_per_bed",
+    "plants_per_ha",
+)
 
 
 def same_spacing(intent: FieldIntent, before: FieldIntent, words: Sequence[Item]) -> FieldIntent:

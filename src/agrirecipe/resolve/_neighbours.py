@@ -30,10 +30,11 @@ __all__ = [
 
 # "Savoy and January King in two neighbouring blocks": the plots of a list, side by side
 _NEIGHBOURING = re.compile(
-    r"\b(?P<at>(?i:in|on))\s+(?P<count>(?:\w+\s+)?)(?i:neighbouring|neighboring|adjacent)\s+"
+    r"\b(?P<at>(?i:in|on))\s+(?P<count>(?:\w+\s+)?)(?i:neighbouring|neighboring|adjacent|adjoining)\s+"
     # ("in adjacent 24-ridge plots")
     r"(?P<size>\d+[- ](?i:ridge|row|bed|tree)\s+)?"
-    r"(?P<plots>(?i:blocks|plots|fields|strips|beds|patches|paddocks))\b"
+    r"(?P<plots>(?i:blocks|plots|fields|strips|beds|patches|paddocks|tunnels|polytunnels|"
+    r"greenhouses|glasshouses))\b"
 )
 
 
@@ -112,27 +113,55 @@ _COVERED = re.compile(
 )
 
 
+#: A boundary, ditch or tree line said with up to two words before it ("a hawthorn
+#: hedge", "a narrow gravel track"): scenery that divides two plots.
+_A_DIVIDER = (
+    r"(?i:a|an|the|one|just a|only a|a narrow|a wide|a little|a small)\s+"
+    r"(?:[\w'-]+\s+){{0,2}}?(?i:{things})"
+)
+_DIVIDES = r"\s+(?:(?i:running|that runs|going)\s+)?(?:(?i:in)\s+)?(?i:between)"
+
+
 @functools.cache
-def _divided() -> re.Pattern[str]:
+def _dividers() -> tuple[re.Pattern[str], re.Pattern[str], re.Pattern[str]]:
+    """The ways scenery is said to divide two plots: "with a ditch between (them)",
+    "separated only by a hedge", "with a ditch between the wheat and the maize"."""
     things = "|".join(re.escape(w) for w in scenery_words("boundaries", "ground", "trees"))
-    return re.compile(
-        r"(?P<side>\b(?i:side by side)\s*)?(?:,\s*)?(?:(?i:with|and)\s+)?"
-        r"(?i:a|an|the|one|just a|only a|a narrow|a wide|a little|a small)\s+"
-        rf"(?:[\w'-]+\s+){{0,2}}?(?i:{things})\s+(?:(?i:running|that runs|going)\s+)?"
-        r"(?:(?i:in)\s+)?(?i:between)"
+    divider = _A_DIVIDER.format(things=things)
+    between = re.compile(
+        rf"(?P<side>\b(?i:side by side)\s*)?(?:,\s*)?(?:(?i:with|and)\s+)?{divider}{_DIVIDES}"
         r"(?:\s+(?i:them|the two|the two of them|both|the plots|the fields|the blocks|"
         r"the two plots|the two fields|the two blocks))?"
-        # (not "a hedge between the wheat and the maize": the fields it divides named)
+        # (the fields it divides named after: read by the third)
         r"(?=\s*(?:[,.;:!?)]|$|(?i:and|with|but)\b))"
     )
+    separated = re.compile(
+        # (not "Bartlett pears on the left, Bing cherries on the right, separated by a
+        # gravel track": said after a comma, of fields placed already)
+        r"(?<![,;:])\s+(?i:separated|divided|split|kept apart)\s+(?:(?i:only|just|simply)\s+)?"
+        rf"(?i:by)\s+{divider}(?=\s*(?:[,.;:!?)]|$|(?i:and|with|but)\b))"
+    )
+    named = re.compile(
+        rf"(?:\s*,)?\s+(?:(?i:with|and)\s+)?{divider}{_DIVIDES}\s+"
+        r"(?P<a>(?i:the)\s+[^,;.:!?]+?)\s+(?i:and)\s+(?P<b>(?i:the)\s+[^,;.:!?]+?)"
+        r"(?=\s*(?:[.;!?]|$))"
+    )
+    return between, separated, named
 
 
 def place_divided_plots(text: str) -> str:
     """``text`` with "two plots, side by side with a ditch between: ..." written "two
     plots, side by side: ...", and "wheat and maize with a hedge between them" written
     "wheat and maize": a ditch, hedge or track between two plots is scenery, not a
-    "between" that needs a field on each side (side by side only where it is said)."""
-    return _divided().sub(lambda m: "side by side" if m.group("side") else "", text)
+    "between" that needs a field on each side (side by side only where it is said).
+    "two wheat fields separated only by a hawthorn hedge" is "two wheat fields side by
+    side", and "..., with a ditch between the wheat and the maize" is "..., the wheat
+    next to the maize": what divides them is scenery and they touch it on either side."""
+    between, separated, named = _dividers()
+    text = separated.sub(" side by side", text)
+    # "..., with a ditch between the wheat and the maize": the two fields it divides touch
+    text = named.sub(lambda m: f", {m.group('a')} next to {m.group('b')}", text)
+    return between.sub(lambda m: "side by side" if m.group("side") else "", text)
 
 
 # "riesling in the middle w/ pinot noir on one side & cabernet on the other": the field
@@ -230,6 +259,27 @@ _FACING_NORTH = re.compile(
 )
 
 
+# "I was facing due north ...: potatoes in the foreground and a wheat field beyond them":
+# what lies beyond, seen one way, is on that side
+_FACING = re.compile(
+    r"\b(?i:facing|looking)\s+(?:(?i:due|straight)\s+)?"
+    r"(?P<side>(?i:north|south|east|west))(?i:wards)?\b(?!\s+(?i:of)\b)"
+)
+_BEYOND = re.compile(
+    r"\b(?:(?i:just|right|directly|straight)\s+)?(?i:beyond|behind)"
+    r"(?=\s+(?i:them|it|the|that|those|this|these)\b)"
+)
+
+
+def _beyond_as_faced(text: str) -> str:
+    """``text`` with "beyond them" written "north of them" when the viewer says once
+    which one way they face ("facing due north"); several ways, or none, leave it."""
+    sides = {m.group("side").lower() for m in _FACING.finditer(text)}
+    if len(sides) != 1:
+        return text
+    return _BEYOND.sub(f"{sides.pop()} of", text)
+
+
 _SIDE_LABEL = re.compile(
     r"(?:^|(?<=[.;!?]\s))(?P<side>(?i:left|right|middle|centre|center))\s*:\s*(?=[A-Za-z])"
 )
@@ -257,6 +307,7 @@ def place_sides(text: str) -> str:
     )
     text = _ONE_SIDE_AND_OTHER.sub(_between_sides, text)
     text = _FACING_NORTH.sub("", text)
+    text = _beyond_as_faced(text)
     # "Left: corn. Middle: spuds. Right: cabbages.": the parts of the view as labels
     # (with a left or right among them: "Top: ... Middle: ... Bottom: ..." are zones)
     if any(m.group("side").lower() in ("left", "right") for m in _SIDE_LABEL.finditer(text)):

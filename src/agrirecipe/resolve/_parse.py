@@ -80,6 +80,7 @@ from agrirecipe.resolve._headings import (
     drop_titles,
     drop_trailing_summaries,
     fill_counted_lists,
+    lend_heading_crop,
     name_counted_plots,
 )
 from agrirecipe.resolve._intent import (
@@ -275,7 +276,7 @@ class PromptReader(FieldReading):
         mentions = drop_titles(clauses, mentions)
         mentions = drop_trailing_summaries(clauses, drop_plural_headings(clauses, mentions))
         mentions = drop_restated_counts(clauses, mentions)
-        mentions = name_counted_plots(clauses, mentions)
+        mentions = lend_heading_crop(clauses, name_counted_plots(clauses, mentions))
         apply_each_side(clauses)
         for clause in clauses:
             # "... and there's a duck pond in the middle": the zone of scenery, not a field

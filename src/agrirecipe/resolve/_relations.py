@@ -371,10 +371,13 @@ def read_relations(
                 parallel is not None
                 and parallel[0] == word
                 and parallel[1] is objects[0]
-                and _OPPOSITE.get(parallel[3]) == kind
+                and parallel[3] != kind
+                and "next_to" not in (parallel[3], kind)
             ):
                 # "A vineyard with an apple orchard north of it and a pear orchard south of
-                # it": both "it"s are the vineyard (not the orchard named between)
+                # it": both "it"s are the vineyard (not the orchard named between); so in
+                # "south of it is a carrot plot and east of it peppers" (a walk goes on
+                # one way: "north of it ..., north of it ...")
                 objects = (parallel[2],)
             parallel = (word, subject, objects[0], kind)
         relations.extend(field_relations(kind, subject, objects, members, link, trace))
@@ -492,15 +495,6 @@ def _on_the_other_side(
     return relations
 
 
-#: The opposite of each compass relation.
-_OPPOSITE = {
-    "north_of": "south_of",
-    "south_of": "north_of",
-    "east_of": "west_of",
-    "west_of": "east_of",
-}
-
-
 def _relation_mentions(
     link: Item,
     before: Sequence[Mention],
@@ -587,11 +581,12 @@ def _placed_each(clauses: Sequence[Clause], group: Sequence[Mention]) -> bool:
     zoned = sum(1 for m in fields if any(i.role == "zone" for i in m.items))
     first = min(m.clause for m in fields)
     last = max(c.index for c in clauses if c.refinement in fields or c.index <= first) + 1
-    related = any(
-        c.link is not None and c.link.role in ("relation", "between")
-        for c in clauses[first : last + 1]
-    )
-    return zoned >= 2 or (zoned >= 1 and related)
+    links = [c.link for c in clauses[first : last + 1] if c.link is not None]
+    related = any(link.role in ("relation", "between") for link in links)
+    # "three plots in a line: strawberries between lettuce and onions": the one between
+    # the other two orders a row of three
+    between = len(fields) == 3 and any(link.role == "between" for link in links)
+    return zoned >= 2 or (zoned >= 1 and related) or between
 
 
 def _both_said(clauses: Sequence[Clause], position: int) -> bool:

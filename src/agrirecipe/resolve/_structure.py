@@ -396,7 +396,7 @@ def share_trailing_attributes(clauses: Sequence[Clause]) -> None:
 
 def _spacing(item: Item) -> bool:
     """A measure of how rows and plants are spaced ("at 3.5 x 1 m"), nothing counted."""
-    spacings = ("row_spacing_m", "in_row_spacing_m", "plants_per_ha", "bed_width_m")
+    spacings = ("row_spacing_m", "in_row_spacing_m", "plants_per_ha", "bed_width_m", "alley_m")
     return item.role == "geometry" and all(
         m.key in spacings and not m.share for m in item.data["geometry"]
     )
