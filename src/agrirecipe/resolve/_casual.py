@@ -116,6 +116,9 @@ def expand_casual(prompt: str) -> str:
     # "spec: crop = onion; beds = 10; rows: 24": a count or a crop written as a setting
     text = _SETTING_COUNT.sub(r"\g<n> \g<key>", text)
     text = _SETTING_CROP.sub("", text)
+    # "[plot1] crop=potato, ...; [plot2] ..., placed east of plot1": a spec's plot labels
+    text = _BRACKETED_LABEL.sub(r"\g<noun> \g<label>:", text)
+    text = _JOINED_LABEL.sub(r"\g<noun> \g<label>", text)
     # "fruit & veg fields, like 4 or 5 of em": the fields' count said after them
     # ("some fruit & veg fields, like 3 or 4, dont mind which": said roughly, alone)
     for pattern in (_COUNT_OF_THEM, _COUNT_SAID_ROUGHLY):
@@ -209,6 +212,11 @@ _SETTING_CROP = re.compile(
     # ("=" only: "three cultivars: Red Express, ..." is a list's heading)
     r"\b(?i:crop|crops|variety|varieties|cultivar|cultivars|cv|species)\s*=\s*(?=[A-Za-z])"
 )
+_BRACKETED_LABEL = re.compile(
+    r"\[\s*(?P<noun>(?i:plot|block|field|strip|bed|area|zone))[\s_-]*(?P<label>\d{1,2}|[A-H])\s*\]"
+    r"\s*:?"
+)
+_JOINED_LABEL = re.compile(r"\b(?P<noun>(?i:plot|block|field|strip|bed))[_-]?(?P<label>\d{1,2})\b")
 _PLOT_COUNT_AFTER = re.compile(
     r"(?P<lead>\b(?i:a|an|the|our|my|this|that|for|of|with|and|need|want)\s+|^|(?<=[,.;:!?(])\s*)"
     r"(?P<words>(?:[A-Za-z][\w'-]*\s+){0,3}?)"

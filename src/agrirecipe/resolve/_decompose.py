@@ -332,6 +332,7 @@ class MentionBuilder:
                         )
                         or _possessed(pending)
                         or (current.has_crop and _with_a_plot_of(clause.items, index, pending))
+                        or _placed_new(clause, pending)
                     )
                 )
                 # "between the two groves a block of bananas": a plot counted again;
@@ -462,8 +463,19 @@ def _existential(clause: Clause, pending: Sequence[Item]) -> bool:
         return True
     if _said(pending, {"there"}, _EXISTENTIAL):
         return True
+    return _placed_new(clause, pending)
+
+
+#: "we've planted a", "we put in a": words that bring in a field newly planted
+_PLANTED = frozenset({"planted", "put", "sown", "sowed", "grow", "growing", "set"})
+
+
+def _placed_new(clause: Clause, pending: Sequence[Item]) -> bool:
+    """'Next to the Navel oranges is a new block of Valencia', '... we've just planted a
+    block of ...': after a place and the field it is said against, "is a" or "planted a"
+    brings in a new field."""
     placed = clause.link is not None and clause.link.role == "relation"
-    return placed and _said(pending, _EXISTENTIAL, _ARTICLE)
+    return placed and (_said(pending, _EXISTENTIAL, _ARTICLE) or _said(pending, _PLANTED, _ARTICLE))
 
 
 def _possessed(pending: Sequence[Item]) -> bool:
@@ -475,9 +487,8 @@ def _with_a_plot_of(items: Sequence[Item], index: int, pending: Sequence[Item]) 
     """'5 ha of maize with a 1 ha field of onions': after "with a", a plot of another crop
     (the plot noun at ``index`` followed by "of" and a crop) is a field of its own."""
     norms = [p.norm for p in pending]
-    if "with" not in norms or norms.index("with") + 1 >= len(norms):
-        return False
-    if norms[norms.index("with") + 1] not in _ARTICLE:
+    said = [i for i, norm in enumerate(norms) if norm == "with"]
+    if not said or norms[said[-1] + 1 : said[-1] + 2] not in (["a"], ["an"]):
         return False
     after = items[index + 1 : index + 3]
     return len(after) == 2 and after[0].norm == "of" and after[1].role == "head"

@@ -87,6 +87,8 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
     crops is returned unchanged.
     """
     text = _PLACED_THEN_MEASURED.sub(r"\g<head> \g<rest>, \g<where>", text)
+    text = _NAME_PLACED_THEN_MEASURED.sub(r"\g<name>: \g<rest>, \g<where>\g<end>", text)
+    text = _members_by_look(text, tag)
     text = _PLURAL_LABELS.sub(_one_noun_each, _valued_members(_numbered_members(text, tag)))
     text = _PLACED_THEN_NAMED.sub(r"\g<head>, \g<where>, is", text)
     text = _PLACED_THEN_MARKED.sub(_placed_then_marked, text)
@@ -218,6 +220,58 @@ _PLACED_THEN_MEASURED = re.compile(
     rf"(?i:north|south|east|west)\s+(?i:of)\s+(?:(?i:the)\s+)?{_LABEL})\s+"
     rf"(?P<rest>(?i:at|on|with)\s+\d[^;.:]*?)(?=\s*(?:[;:]|\.(?!\d)|,\s*{_LABEL}\b|$))"
 )
+
+# "Kordia: 10 rows, .... Regina, north of the Kordia block: 12 rows, ...": a name that
+# opens its sentence, placed, then measured after a colon, as in "Regina: 12 rows, ...,
+# north of the Kordia block" (the measures the name's, not the block's it is placed by)
+_NAME_PLACED_THEN_MEASURED = re.compile(
+    rf"(?:^|(?<=[.;!?]\s))(?!(?i:{_NOUNS})\b)(?P<name>[A-Z][\w'-]*(?:\s+[A-Z][\w'-]*)?)\s*,\s*"
+    r"(?P<where>(?:(?i:directly|just|immediately|right|due)\s+)?(?i:north|south|east|west)\s+"
+    r"(?i:of)\s+[^,:;.]+?)\s*:\s*(?P<rest>\d(?:[^.;:]|\.(?=\d))*?)\s*(?P<end>[;!?]|\.(?!\d)|$)"
+)
+
+# "one still vegetative at about V5, the other tasseling. The young planting is on the
+# south side": members said by "one ..." and "the other ...", then one of them named by
+# its look and a plot word or "one": that member, as "the first" or "the second"
+_MEMBER_SAID = re.compile(r"\b(?i:one|the other)\s+(?P<said>[^,;.:]+)")
+_BY_LOOK = re.compile(
+    r"\b(?i:the)\s+(?P<word>[A-Za-z][\w-]*)\s+"
+    r"(?i:one|field|planting|block|plot|strip|bed|patch|crop|paddock)\b"
+    # ("... is on the south side": of two, the side of the other)
+    r"(?P<placed>\s+(?i:is|lies|sits)\s+(?:(?i:on|to|at)\s+(?i:the)\s+)?"
+    r"(?P<side>(?i:north|south|east|west))(?i:ern)?(?:\s+(?i:side|end))?\b(?!\s+(?i:of)\b))?"
+)
+
+
+def _members_by_look(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
+    def looks(phrase: str) -> set[tuple[str, str]]:
+        return {
+            (kind, str(sense.value))
+            for item in tag(phrase)
+            for kind in ("stage", "health")
+            for sense in item.senses_of(kind)
+        }
+
+    said = list(_MEMBER_SAID.finditer(text))
+    members = [looks(m.group("said")) for m in said]
+    if len(members) < 2 or len(members) > len(_ORDINAL_WORDS) or not all(members):
+        return text
+    start = said[-1].end()
+
+    def rewrite(match: re.Match[str]) -> str:
+        word = looks(match.group("word"))
+        fitting = [index for index, m in enumerate(members) if word and word <= m]
+        if len(fitting) != 1:
+            return match.group(0)
+        if match.group("placed") and len(members) == 2:
+            other = _ORDINAL_WORDS[1 - fitting[0]]
+            side = match.group("side").lower()
+            return f"{_ORDINAL_WORDS[fitting[0]]} is {side} of {other}"
+        return _ORDINAL_WORDS[fitting[0]] + (match.group("placed") or "")
+
+    # (only after the members are said: "one young, the other ripe")
+    return text[:start] + _BY_LOOK.sub(rewrite, text[start:])
+
 
 # "between plots 1 and 3", "blocks A and C": one noun for two labels
 _PLURAL_LABELS = re.compile(

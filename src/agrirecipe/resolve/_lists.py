@@ -113,11 +113,34 @@ def spread_value_lists(text: str) -> str:
     # "rows 40 cm, 30 cm and 75 cm apart respectively": one unit for the list
     text = _repeated_unit().sub(_one_unit, text)
     text = _pattern().sub(spread, text)
+    text = _SIZES_OF_COUNTED.sub(_one_size_each, text)
     # "Half a hectare each of Cos lettuce and Savoy cabbage": the size is each one's
     text = _SIZE_EACH_OF.sub(lambda m: f"{m.group('list')}, {m.group('size')} each", text)
     # "Three different vegetables, each a 20 x 30 m plot with 0.75 m rows": what each
     # field is, not one more plot
     return _EACH_A_PLOT.sub(lambda m: f"each {m.group('said')}", text)
+
+
+# "two potato fields of 3 ha and 1.5 ha": as many areas as plots counted, one each
+_AREA = rf"{_NUMBER}\s*(?:ha|hectares?|acres?|m2|m²)\b"
+_COUNTS = {"two": 2, "three": 3, "four": 4, "2": 2, "3": 3, "4": 4}
+_SIZES_OF_COUNTED = re.compile(
+    rf"\b(?P<count>{'|'.join(_COUNTS)})\s+(?P<what>(?:[\w-]+\s+){{0,3}}?"
+    r"(?:fields|plots|blocks|strips|orchards|vineyards|paddocks|groves))"
+    rf"(?:\s*,\s*|\s+(?:of|at)\s+)(?P<sizes>{_AREA}(?:\s*,\s*{_AREA})*,?\s+(?:and|&)\s+{_AREA})",
+    re.IGNORECASE,
+)
+
+
+def _one_size_each(match: re.Match[str]) -> str:
+    """ "two potato fields, one of 3 ha and one of 1.5 ha" for "two potato fields of 3 ha
+    and 1.5 ha" (as many sizes as fields; otherwise left as said)."""
+    sizes = re.findall(_AREA, match.group("sizes"), re.IGNORECASE)
+    if len(sizes) != _COUNTS[match.group("count").lower()]:
+        return match.group(0)
+    members = [f"one of {size}" for size in sizes]
+    said = f"{match.group('count')} {match.group('what')}"
+    return f"{said}, " + ", ".join(members[:-1]) + " and " + members[-1]
 
 
 _EACH_A_PLOT = re.compile(

@@ -30,9 +30,12 @@ __all__ = [
 
 # "Savoy and January King in two neighbouring blocks": the plots of a list, side by side
 _NEIGHBOURING = re.compile(
-    r"\b(?P<at>(?i:in|on))\s+(?P<count>(?:\w+\s+)?)(?i:neighbouring|neighboring|adjacent|adjoining)\s+"
-    # ("in adjacent 24-ridge plots")
-    r"(?P<size>\d+[- ](?i:ridge|row|bed|tree)\s+)?"
+    # ("Fuji and Golden Delicious, two adjacent blocks, each 30 rows ...": said after a comma)
+    r"(?:\b(?P<at>(?i:in|on))|(?P<comma>,))\s+(?P<count>(?:\w+\s+)?)"
+    r"(?i:neighbouring|neighboring|adjacent|adjoining)\s+"
+    # ("in adjacent 24-ridge plots", "in three adjacent 10 m x 40 m plots")
+    r"(?P<size>\d+[- ](?i:ridge|row|bed|tree)\s+|"
+    r"\d+(?:\.\d+)?\s*(?:m\s*)?(?:x|×|by)\s*\d+(?:\.\d+)?\s*m\s+)?"
     r"(?P<plots>(?i:blocks|plots|fields|strips|beds|patches|paddocks|tunnels|polytunnels|"
     r"greenhouses|glasshouses))\b"
 )
@@ -68,7 +71,7 @@ def place_neighbouring_plots(text: str) -> str:
     text = _ONE_BESIDE_THE_OTHER_EACH.sub(" side by side", text)
     return _NEIGHBOURING.sub(
         lambda m: (
-            f"{m.group('at')} {m.group('count')}{m.group('size') or ''}{m.group('plots')} "
+            f"{m.group('at') or ','} {m.group('count')}{m.group('size') or ''}{m.group('plots')} "
             "side by side"
         ),
         text,
@@ -381,8 +384,24 @@ def place_flanks(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
                 return match.group(0)
         return f"{match.group('y')}, {match.group('x')} on both sides"
 
+    def side_of_a_field(match: re.Match[str]) -> str:
+        # "On the north side of the onions, a cabbage plot": north of the onions (not "on
+        # the north side of the farmhouse", a side of the farm)
+        items = [i for i in tag(match.group("words")) if i.role != "separator"]
+        if not items or not items[0].has("crop", "variety", "category"):
+            return match.group(0)
+        return f"{match.group('side')} of {match.group('the') or ''}{match.group('words')}"
+
     text = _both_sides_of_scenery().sub(both_sides, _FLANKED_SIDES.sub(rewrite, text))
+    text = _SIDE_OF.sub(side_of_a_field, text)
     return _AROUND_A_FIELD.sub(around_a_field, text)
+
+
+_SIDE_OF = re.compile(
+    r"\b(?i:on|along|at)\s+(?i:the)\s+(?P<side>(?i:north|south|east|west))(?i:ern)?\s+"
+    r"(?i:side|edge)\s+(?i:of)\s+(?P<the>(?i:the|our|my)\s+)?"
+    r"(?P<words>[A-Za-z][\w'-]*(?:\s+[A-Za-z][\w'-]*)?)"
+)
 
 
 # "onions on both sides of the potatoes", "wheat either side of the maize block", "two

@@ -583,9 +583,13 @@ def _placed_each(clauses: Sequence[Clause], group: Sequence[Mention]) -> bool:
     last = max(c.index for c in clauses if c.refinement in fields or c.index <= first) + 1
     links = [c.link for c in clauses[first : last + 1] if c.link is not None]
     related = any(link.role in ("relation", "between") for link in links)
-    # "three plots in a line: strawberries between lettuce and onions": the one between
-    # the other two orders a row of three
-    between = len(fields) == 3 and any(link.role == "between" for link in links)
+    # "three plots in a line: strawberries between lettuce and onions", "...: peppers in
+    # the middle, tomatoes on the west side, ...": the one between the other two orders a
+    # row of three
+    between = len(fields) == 3 and any(
+        link.role == "between" or (link.role == "trailer" and link.data.get("value") == "middle")
+        for link in links
+    )
     return zoned >= 2 or (zoned >= 1 and related) or between
 
 

@@ -120,8 +120,13 @@ def _opens_a_look(clauses: Sequence[Clause]) -> bool:
     """ "Centenary on the tabletop gutters ..., berries deep red", "Lollo looking gorgeous,
     frilly dark red heads": a prompt that opens with the name and goes on to say how the
     plants' parts look is about that variety's field (not "Flint walls around the yard")."""
-    first = clauses[0].loose[:1] if clauses and clauses[0].loose else []
-    if not first or first[0].role != "weak_variety":
+    # (after words that only open the picture: "A shot of the Big Mike bunches hanging")
+    opening = [
+        i
+        for i in (clauses[0].loose if clauses else ())
+        if not (i.role in ("filler", "of") or i.scenery or i.norm in ("a", "an", "shot", "photo"))
+    ]
+    if not opening or opening[0].role != "weak_variety":
         return False
     parts = reader_words("coloured_parts") | reader_words("young_parts") | plant_part_words()
     return any(
