@@ -136,3 +136,20 @@ def test_left_middle_and_right_as_labels(
     relations = named_relations("Left: corn. Middle: spuds. Right: cabbages. That's the farm.")
     assert ("west_of", "Maize", ("Potato",)) in relations
     assert ("west_of", "Potato", ("Cabbage",)) in relations
+
+
+def test_near_a_place_and_further_past_a_landmark(
+    named_relations: Callable[[str], NamedRelations],
+) -> None:
+    prompt = (
+        "Our block near Mildura in Australia has Chardonnay vines north of the house and "
+        "Valencia oranges further south, past the house. It's December and the vines are "
+        "flowering."
+    )
+    assert [(f.crop, f.season) for f in recipe(prompt).fields] == [
+        ("Grape", "Summer"),
+        ("Orange", "Summer"),
+    ]
+    assert named_relations(prompt) == {("north_of", "Chardonnay", ("Valencia",))}
+    # (near a field, not a place: still beside it)
+    assert named_relations("a vineyard near the wheat") == {("next_to", "Grape", ("Wheat",))}

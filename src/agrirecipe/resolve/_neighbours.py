@@ -274,6 +274,12 @@ _BEYOND = re.compile(
 )
 
 
+_FURTHER_PAST = re.compile(
+    r"\b(?i:further|farther)\s+(?P<side>(?i:north|south|east|west))\s*,?\s+(?i:past|beyond)\s+"
+    r"(?P<thing>(?i:the|our|my)\s+[A-Za-z][\w'-]*)"
+)
+
+
 def _beyond_as_faced(text: str) -> str:
     """``text`` with "beyond them" written "north of them" when the viewer says once
     which one way they face ("facing due north"); several ways, or none, leave it."""
@@ -311,6 +317,8 @@ def place_sides(text: str) -> str:
     text = _ONE_SIDE_AND_OTHER.sub(_between_sides, text)
     text = _FACING_NORTH.sub("", text)
     text = _beyond_as_faced(text)
+    # "Valencia oranges further south, past the house": on that side of what is passed
+    text = _FURTHER_PAST.sub(lambda m: f"{m.group('side')} of {m.group('thing')}", text)
     # "Left: corn. Middle: spuds. Right: cabbages.": the parts of the view as labels
     # (with a left or right among them: "Top: ... Middle: ... Bottom: ..." are zones)
     if any(m.group("side").lower() in ("left", "right") for m in _SIDE_LABEL.finditer(text)):

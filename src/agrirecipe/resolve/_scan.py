@@ -130,6 +130,13 @@ def assign_roles(items: Sequence[Item]) -> None:
             previous.role = "filler"  # "a scarecrow in the veg": the scarecrow's article
         if (
             previous is not None
+            and previous.role == "relation"
+            and previous.norm in ("near", "by", "outside", "close to")
+            and item.senses_of("place")
+        ):
+            previous.role = "filler"  # "Our block near Mildura has ...": where the farm is
+        if (
+            previous is not None
             and previous.role == "health"
             and item.role == "filler"
             and "scenery" in item.data
