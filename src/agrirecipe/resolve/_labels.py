@@ -32,6 +32,11 @@ _NOUNS = r"(?:block|plot|field|parcel|area|section|strip|zone|bay|compartment|tr
 # "Field one: Russet potatoes ... Field two, south of field one: Fontane": a number word
 # as a label (always after its noun, like a number)
 _WORD_LABELS = r"(?i:one|two|three|four|five|six|seven|eight|nine|ten)"
+#: A label's mark ("B", "2", "two") and a label with its noun ("plot B").
+_MARK = rf"(?:[A-H]|\d{{1,2}}|{_WORD_LABELS})"
+_LABEL = rf"(?i:{_NOUNS})\s+{_MARK}"
+#: How close a side is said ("directly east of").
+_CLOSE = r"(?:(?i:directly|just|immediately|right|due)\s+)?"
 
 
 def _said(label: str) -> str:
@@ -189,19 +194,18 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
 # "plot 2 is 10 m west of plot 1 and is wheat": a label placed first and named after
 # "and is" defines its field, like "plot 2, 10 m west of plot 1, is wheat"
 _PLACED_THEN_NAMED = re.compile(
-    rf"(?P<head>\b(?i:{_NOUNS})\s+(?:[A-H]|\d{{1,2}}|{_WORD_LABELS}))\s+(?i:is|lies|sits)\s+"
-    rf"(?P<where>[^;.,:]*?\b(?i:{_BEFORE_REFERENCE})\s+(?:(?i:the)\s+)?(?i:{_NOUNS})\s+"
-    rf"(?:[A-H]|\d{{1,2}}|{_WORD_LABELS}))\s+(?i:and)\s+(?i:is)\b"
+    rf"(?P<head>\b{_LABEL})\s+(?i:is|lies|sits)\s+"
+    rf"(?P<where>[^;.,:]*?\b(?i:{_BEFORE_REFERENCE})\s+(?:(?i:the)\s+)?{_LABEL})"
+    r"\s+(?i:and)\s+(?i:is)\b"
 )
 
 # "Plot B directly east of A = Nantes carrots": a label placed against another, then
 # named after "=" or ":" (the other's noun left out), like "plot B, directly east of
 # plot A: Nantes carrots" (not a bare "A = ..." defining plot A)
 _PLACED_THEN_MARKED = re.compile(
-    rf"(?P<head>\b(?P<noun>(?i:{_NOUNS}))\s+(?:[A-H]|\d{{1,2}}|{_WORD_LABELS}))\s*,?\s+"
-    r"(?P<where>(?:(?i:directly|just|immediately|right|due)\s+)?"
+    rf"(?P<head>\b(?P<noun>(?i:{_NOUNS}))\s+{_MARK})\s*,?\s+(?P<where>{_CLOSE}"
     r"(?:(?i:north|south|east|west)\s+(?i:of)|(?i:next to|beside|alongside))\s+(?:(?i:the)\s+)?)"
-    rf"(?P<other>(?i:{_NOUNS})\s+)?(?P<ref>[A-H]|\d{{1,2}}|{_WORD_LABELS})\s*(?:=|:)\s*"
+    rf"(?P<other>(?i:{_NOUNS})\s+)?(?P<ref>{_MARK})\s*(?:=|:)\s*"
     r"(?=[A-Za-z])"
 )
 
@@ -214,9 +218,8 @@ def _placed_then_marked(match: re.Match[str]) -> str:
 # "plot 2 east of plot 1 at 70,000 plants/ha on 90 cm rows": what follows the label
 # placed against another is said of the label's own plot, as in "plot 2 at 70,000
 # plants/ha on 90 cm rows, east of plot 1"
-_LABEL = rf"(?i:{_NOUNS})\s+(?:[A-H]|\d{{1,2}}|{_WORD_LABELS})"
 _PLACED_THEN_MEASURED = re.compile(
-    rf"(?P<head>\b{_LABEL})\s+(?P<where>(?:(?i:directly|just|immediately|right|due)\s+)?"
+    rf"(?P<head>\b{_LABEL})\s+(?P<where>{_CLOSE}"
     rf"(?i:north|south|east|west)\s+(?i:of)\s+(?:(?i:the)\s+)?{_LABEL})\s+"
     rf"(?P<rest>(?i:at|on|with)\s+\d[^;.:]*?)(?=\s*(?:[;:]|\.(?!\d)|,\s*{_LABEL}\b|$))"
 )
@@ -226,7 +229,7 @@ _PLACED_THEN_MEASURED = re.compile(
 # north of the Kordia block" (the measures the name's, not the block's it is placed by)
 _NAME_PLACED_THEN_MEASURED = re.compile(
     rf"(?:^|(?<=[.;!?]\s))(?!(?i:{_NOUNS})\b)(?P<name>[A-Z][\w'-]*(?:\s+[A-Z][\w'-]*)?)\s*,\s*"
-    r"(?P<where>(?:(?i:directly|just|immediately|right|due)\s+)?(?i:north|south|east|west)\s+"
+    rf"(?P<where>{_CLOSE}(?i:north|south|east|west)\s+"
     r"(?i:of)\s+[^,:;.]+?)\s*:\s*(?P<rest>\d(?:[^.;:]|\.(?=\d))*?)\s*(?P<end>[;!?]|\.(?!\d)|$)"
 )
 
