@@ -185,6 +185,8 @@ def field_specs(draw: st.DrawFn) -> FieldSpec:
             missing_rate=draw(st.sampled_from([0.0, 0.05, 0.3])),
             size_variation=draw(st.floats(0.0, 0.9)),
             yaw_variation_deg=draw(st.floats(0.0, 180.0)),
+            # (a dense field thinned to fit the plant cap: every N-th plant drawn)
+            plants_per_instance=draw(st.sampled_from([1, 1, 2, 5])),
         ),
         pattern=draw(
             st.sampled_from(["rows", "drilled_rows", "ridges", "double_rows_on_beds", "tree_rows"])
@@ -221,9 +223,11 @@ def test_kernel_and_numpy_path_agree_on_any_field(spec: FieldSpec, seed: int) ->
 def test_nominal_grid_matches_the_recipe_count(spec: FieldSpec) -> None:
     (params,) = field_parameters(recipe_of(spec, 0))
     beds, rows_per_bed, per_row, _, _ = plant_grid(params)
-    assert beds * rows_per_bed * per_row == spec.nominal_plant_count
+    assert beds * rows_per_bed * per_row == spec.drawn_plant_count()
     without_gaps = dict(params, missing_rate=0.0)
-    assert len(place_field(without_gaps)) == spec.nominal_plant_count
+    assert len(place_field(without_gaps)) == spec.drawn_plant_count()
+    if spec.placement.plants_per_instance == 1:
+        assert spec.drawn_plant_count() == spec.nominal_plant_count
 
 
 @settings(max_examples=60, deadline=None)

@@ -231,19 +231,23 @@ def test_the_plant_cap_is_a_setting() -> None:
     prompt = "winter wheat just emerging in autumn, 5 hectares"
     recipe = resolve(prompt, resolver="rules").recipe  # ~7.6 million plants
     assert 5_000_000 < recipe.nominal_plant_count <= 10_000_000
+    assert recipe.fields[0].placement.plants_per_instance == 1
+    # under a lower cap it is drawn thinner (every N-th plant, at most one in five) ...
+    thinned = resolve(prompt, resolver="rules", max_plants=2_000_000).recipe
+    assert thinned.fields[0].placement.plants_per_instance == 4
+    # ... and refused where even one in five is too many
     with pytest.raises(PromptError, match="more than the cap of 1,000,000") as caught:
         resolve(prompt, resolver="rules", max_plants=1_000_000)
     assert caught.value.hint and "max_plants=N" in caught.value.hint
-    with pytest.raises(PromptError, match="cap of 10,000,000"):
-        resolve("a 10 ha wheat field", resolver="rules")
-    big = resolve("a 10 ha wheat field", resolver="rules", max_plants=20_000_000).recipe
+    big = resolve("a 10 ha wheat field", resolver="rules").recipe
     assert big.nominal_plant_count > 10_000_000
-    # the error says how much of that field fits at its spacings
-    with pytest.raises(PromptError) as capped:
-        resolve(prompt, resolver="rules", max_plants=1_000_000)
+    assert big.fields[0].placement.plants_per_instance == 2
+    drawn = resolve("a 10 ha wheat field", resolver="rules", max_plants=20_000_000).recipe
+    assert drawn.fields[0].placement.plants_per_instance == 1
+    # the error says how much of that field fits at its spacings, drawn one in five
+    fits = float(str(caught.value).split("at most ")[1].split(" ha")[0])
     per_ha = recipe.nominal_plant_count / 5
-    fits = float(str(capped.value).split("at most ")[1].split(" ha")[0])
-    assert fits == pytest.approx(1_000_000 / per_ha, rel=0.02)
+    assert fits == pytest.approx(1_000_000 * 5 / per_ha, rel=0.02)
 
 
 def test_impossible_relations() -> None:

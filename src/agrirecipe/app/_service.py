@@ -581,6 +581,7 @@ def _field_row(spec: FieldSpec, colour: tuple[int, int, int]) -> dict[str, Any]:
         "area_ha": round(spec.geometry.area_m2 / 10_000, 4),
         "rows": spec.row_count,
         "nominal_plant_count": spec.nominal_plant_count,
+        "plants_per_instance": spec.placement.plants_per_instance,
         "row_spacing_m": agronomy.row_spacing_m,
         "in_row_spacing_m": agronomy.in_row_spacing_m,
         "plant_height_m": agronomy.plant_height_m,

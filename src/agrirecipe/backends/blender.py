@@ -400,7 +400,7 @@ def blender_script(
         _HEADER.format(
             script=SCRIPT_NAME,
             fields=len(recipe.fields),
-            nominal=recipe.nominal_plant_count,
+            nominal=recipe.drawn_plant_count,
             version=__version__,
         ),
         _settings_block(

@@ -218,7 +218,7 @@ class UnrealBackend(Backend):
             self._field_document(spec, by_id[spec.id], root, defaults, assets.get(spec.id))
             for spec in recipe.fields
         ]
-        nominal = recipe.nominal_plant_count
+        nominal = recipe.drawn_plant_count
         # One unit per plant, plus one per field set-up and ground, plus the light.
         work = nominal + 2 * len(fields) + 1
         centre_x, centre_y = _scene_centre_m(recipe)
@@ -296,7 +296,7 @@ class UnrealBackend(Backend):
             "canopy_width_m": spec.agronomy.canopy_width_m,
             "foliage_rgb": list(spec.agronomy.foliage_rgb),
             "location_cm": list(unreal_location_cm(*geometry.origin_m, 0.0)),
-            "nominal_plants": spec.nominal_plant_count,
+            "nominal_plants": spec.drawn_plant_count(),
             "kernel": kernel_parameters,
             "progress_setup": f"agrirecipe: field {spec.id}: actor and mesh",
             "progress_plants": f"agrirecipe: field {spec.id}: plants",

@@ -133,7 +133,7 @@ def run(args: argparse.Namespace) -> int:
     scene = _scene(args)
     recipe = scene.recipe
     print(
-        f"rendering {len(recipe.fields)} field(s), up to {recipe.nominal_plant_count:,} plants, "
+        f"rendering {len(recipe.fields)} field(s), up to {recipe.drawn_plant_count:,} plants, "
         f"at {settings.resolution[0]}x{settings.resolution[1]} with {settings.engine} "
         f"({settings.samples} samples)...",
         file=sys.stderr,

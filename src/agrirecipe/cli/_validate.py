@@ -50,6 +50,10 @@ def run(args: argparse.Namespace) -> int:
             for path, message in problems:
                 print(f"{file}: {path}: {message}", file=sys.stderr)
         else:
-            plants = recipe.nominal_plant_count
-            print(f"{file}: ok ({len(recipe.fields)} field(s), {plants:,} planting positions)")
+            plants, drawn = recipe.nominal_plant_count, recipe.drawn_plant_count
+            thinned = f", {drawn:,} drawn" if drawn != plants else ""
+            print(
+                f"{file}: ok ({len(recipe.fields)} field(s), {plants:,} planting positions"
+                f"{thinned})"
+            )
     return 1 if failed else 0

@@ -44,7 +44,7 @@ def plant_grid(params: dict[str, Any]) -> tuple[int, int, int, float, float]:
     ``bed_row_spacing_m`` apart, each row ``per_row`` positions
     ``in_row_spacing_m`` apart along local Y. The grid is centred in the field
     minus its headland; ``x_start``/``y_start`` is its first position. The
-    count ``beds * rows_per_bed * per_row`` equals ``FieldSpec.nominal_plant_count``.
+    count ``beds * rows_per_bed * per_row`` equals ``FieldSpec.drawn_plant_count()``.
     """
     width, length = float(params["size_m"][0]), float(params["size_m"][1])
     headland = float(params["headland_m"])
@@ -56,7 +56,7 @@ def plant_grid(params: dict[str, Any]) -> tuple[int, int, int, float, float]:
         raise ValueError(f"unknown planting pattern {params['pattern']!r}")
     if row_spacing <= 0.0 or in_row <= 0.0 or rows_per_bed < 1:
         raise ValueError("row spacings must be positive and rows_per_bed at least 1")
-    # Same arithmetic, in the same order, as FieldSpec.nominal_plant_count.
+    # Same arithmetic, in the same order, as FieldSpec.drawn_plant_count().
     bed_span = bed_row_spacing * (rows_per_bed - 1)
     inner_w = width - 2 * headland
     inner_l = length - 2 * headland

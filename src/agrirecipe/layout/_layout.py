@@ -60,7 +60,9 @@ def _parameters(spec: FieldSpec, recipe_seed: int) -> dict[str, Any]:
         "row_spacing_m": agronomy.row_spacing_m,
         "rows_per_bed": agronomy.rows_per_bed,
         "bed_row_spacing_m": agronomy.bed_row_spacing_m,
-        "in_row_spacing_m": agronomy.in_row_spacing_m,
+        # (a thinned field draws every N-th planting position: each stands for N plants)
+        "in_row_spacing_m": agronomy.in_row_spacing_m * placement.plants_per_instance,
+        "plants_per_instance": placement.plants_per_instance,
         "plant_height_m": agronomy.plant_height_m,
         "jitter_m": placement.jitter_m,
         "missing_rate": placement.missing_rate,
@@ -152,8 +154,14 @@ class FieldPlants:
 
     @property
     def nominal_plant_count(self) -> int:
-        """Planting positions before missing plants were removed."""
-        return self.spec.nominal_plant_count
+        """Positions drawn before missing plants were removed (every planting position,
+        or every ``plants_per_instance``-th one of a thinned field)."""
+        return self.spec.drawn_plant_count()
+
+    @property
+    def plants_per_instance(self) -> int:
+        """Plants each drawn plant stands for (1 unless the field was thinned)."""
+        return self.spec.placement.plants_per_instance
 
     def attributes(self) -> dict[str, str | int | float | list[str]]:
         """The field described in flat JSON-able values, for ground-truth outputs.
@@ -185,6 +193,7 @@ class FieldPlants:
             "area_m2": round(geometry.area_m2, 6),
             "nominal_plant_count": self.nominal_plant_count,
             "plant_count": self.plant_count,
+            "plants_per_instance": self.plants_per_instance,
             "stated": list(spec.stated),
             "inferred": list(spec.inferred),
         }

@@ -12,6 +12,7 @@ from agrirecipe.recipe._io import (
 from agrirecipe.recipe._models import (
     DEFAULT_MAX_PLANTS,
     GEOMETRY_ATTRIBUTES,
+    MAX_PLANTS_PER_INSTANCE,
     SCHEMA_VERSION,
     Agronomy,
     AttributeName,
@@ -36,6 +37,7 @@ from agrirecipe.recipe._models import (
 __all__ = [
     "DEFAULT_MAX_PLANTS",
     "GEOMETRY_ATTRIBUTES",
+    "MAX_PLANTS_PER_INSTANCE",
     "SCHEMA_VERSION",
     "Agronomy",
     "AttributeName",

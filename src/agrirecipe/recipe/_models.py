@@ -217,6 +217,10 @@ class FieldGeometry(_Frozen):
         return tuple((ox + u * cos_r - v * sin_r, oy + u * sin_r + v * cos_r) for u, v in local)
 
 
+#: The most plants one drawn plant may stand for (a field thinned to fit max_plants).
+MAX_PLANTS_PER_INSTANCE = 5
+
+
 class Placement(_Frozen):
     """Seeded variation of plant placement within a field."""
 
@@ -224,6 +228,15 @@ class Placement(_Frozen):
     missing_rate: Fraction = 0.0
     size_variation: Fraction = Field(default=0.0, description="Relative s.d. of plant scale.")
     yaw_variation_deg: float = Field(default=180.0, ge=0.0, le=180.0)
+    plants_per_instance: int = Field(
+        default=1,
+        ge=1,
+        le=MAX_PLANTS_PER_INSTANCE,
+        description=(
+            "Plants one drawn plant stands for along its row: 1 draws every plant; N draws "
+            "every N-th planting position (a dense field thinned to fit max_plants)."
+        ),
+    )
 
 
 class FieldSpec(_Frozen):
@@ -280,20 +293,34 @@ class FieldSpec(_Frozen):
             raise ValueError(f"stated: {sorted(overlap)} cannot be both stated and inferred")
         return self
 
-    def _grid(self) -> tuple[int, int]:
-        """Beds (or single rows) across the field and plants along each row (the kernel's grid)."""
+    def _grid(self, plants_per_instance: int = 1) -> tuple[int, int]:
+        """Beds (or single rows) across the field and positions along each row, every
+        ``plants_per_instance``-th planting position drawn (the kernel's grid)."""
         agronomy = self.agronomy
         bed_span = agronomy.bed_row_spacing_m * (agronomy.rows_per_bed - 1)
         usable_w, usable_l = self.geometry.usable_m()
         usable_w -= bed_span
         beds = math.floor(usable_w / agronomy.row_spacing_m + 1e-9) + 1
-        per_row = math.floor(usable_l / agronomy.in_row_spacing_m + 1e-9) + 1
+        in_row = agronomy.in_row_spacing_m * plants_per_instance
+        per_row = math.floor(usable_l / in_row + 1e-9) + 1
         return beds, per_row
 
     @property
     def nominal_plant_count(self) -> int:
-        """Planting positions before missing plants are removed (the layout kernel's grid)."""
+        """Planting positions of the field's agronomy, before missing plants are removed."""
         beds, per_row = self._grid()
+        return beds * self.agronomy.rows_per_bed * per_row
+
+    def drawn_plant_count(self, plants_per_instance: int | None = None) -> int:
+        """Positions the layout kernel draws: every ``plants_per_instance``-th planting
+        position along each row (the field's own ``placement.plants_per_instance`` by
+        default); equal to :attr:`nominal_plant_count` when every plant is drawn."""
+        stride = (
+            self.placement.plants_per_instance
+            if plants_per_instance is None
+            else plants_per_instance
+        )
+        beds, per_row = self._grid(stride)
         return beds * self.agronomy.rows_per_bed * per_row
 
     @property
@@ -381,15 +408,18 @@ class SceneRecipe(_Frozen):
         cap = int(context.get("max_plants", DEFAULT_MAX_PLANTS))
         total = 0
         for index, spec in enumerate(self.fields):
-            total += spec.nominal_plant_count
+            drawn = spec.drawn_plant_count()
+            total += drawn
             if total > cap:
                 width, length = spec.geometry.size_m
-                per_ha = spec.nominal_plant_count / max(width * length / 10_000.0, 1e-9)
-                room_ha = max(cap - (total - spec.nominal_plant_count), 0) / per_ha
+                per_ha = drawn / max(width * length / 10_000.0, 1e-9)
+                room_ha = max(cap - (total - drawn), 0) / per_ha
+                stride = spec.placement.plants_per_instance
+                drawn_so = f", every {stride} plants drawn as one" if stride > 1 else ""
                 raise ValueError(
                     f"fields[{index}].geometry.size_m: the scene would hold {total:,} plants "
                     f"by field {spec.id!r}, more than the cap of {cap:,}; at its spacings "
-                    f"({per_ha:,.0f} plants/ha) at most {room_ha:.2f} ha of it fit "
+                    f"({per_ha:,.0f} plants/ha{drawn_so}) at most {room_ha:.2f} ha of it fit "
                     "(make fields smaller or raise max_plants)"
                 )
         return self
@@ -398,6 +428,11 @@ class SceneRecipe(_Frozen):
     def nominal_plant_count(self) -> int:
         """Planting positions in all fields before missing plants are removed."""
         return sum(f.nominal_plant_count for f in self.fields)
+
+    @property
+    def drawn_plant_count(self) -> int:
+        """Positions the layout draws in all fields (a thinned field draws every N-th)."""
+        return sum(f.drawn_plant_count() for f in self.fields)
 
     def field(self, field_id: str) -> FieldSpec:
         """The field with this id."""

@@ -62,10 +62,24 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
             # ("we only grow sweet peppers now - one outdoor field, roughly 60 by 120 m")
             and clause.link.norm in (",", ":", "-", "–", "—")
             # ("Lady Finger bananas: 3 m x 3 m grid, 1,111 plants/ha, a 90 x 60 m block")
+            # ("Spelt in ear and just flowering, a 2 ha field": how it looks, between)
             and all(
                 not c.mentions
                 and all(
-                    i.role in ("geometry", "filler", "place", "container", "unknown")
+                    i.role
+                    in (
+                        "geometry",
+                        "filler",
+                        "place",
+                        "container",
+                        "unknown",
+                        "cue",
+                        "stage",
+                        "health",
+                        "season",
+                        "month",
+                        "of",
+                    )
                     for i in c.items
                 )
                 for c in clauses[previous.clause + 1 : mention.clause]
@@ -76,8 +90,12 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
             and all(
                 i.role
                 in ("number", "size", "plot", "filler", "of", "cue", "stage", "health", "geometry")
-                # ("one plot drilled at 12.5 cm row spacing": how it is sown)
-                or (i.role == "unknown" and any(j.role == "geometry" for j in clause.items))
+                # ("one plot drilled at 12.5 cm row spacing": how it is sown; "a 1.5 ha block
+                # with the cableway running through it": what runs through it)
+                or (
+                    i.role == "unknown"
+                    and any(j.role in ("geometry", "size") for j in clause.items)
+                )
                 or (i.role == "head" and i.norm in descriptive_words())
                 for i in clause.items
             )

@@ -113,6 +113,8 @@ def expand_casual(prompt: str) -> str:
     text = _SIZE_IN_BRACKETS.sub(r"\g<size>, ", text)
     # "one w rows n-s": "w" for "with" before what a plot has (not the "w" of "e-w")
     text = _W_FOR_WITH.sub("with", text)
+    # "rows EW", "beds running NS": two compass letters written together
+    text = _GLUED_SIDES.sub(lambda m: f"{m.group('a')}-{m.group('b')}", text)
     # "spec: crop = onion; beds = 10; rows: 24": a count or a crop written as a setting
     text = _SETTING_COUNT.sub(r"\g<n> \g<key>", text)
     text = _SETTING_CROP.sub("", text)
@@ -202,6 +204,11 @@ _NAMED_PLACE = re.compile(
 )
 _SLASH_BEFORE_LABEL = re.compile(r"\s+[/|]\s+(?=[A-Za-z][\w'-]*(?:\s+[A-Za-z][\w'-]*){0,2}\s*:)")
 _UNIT_AND_A_HALF = re.compile(r"\b(?i:an?|one)\s+(?P<unit>(?i:acre|hectare))\s+(?i:and a half)\b")
+_GLUED_SIDES = re.compile(
+    r"(?:(?<=\brows )|(?<=\bbeds )|(?<=\bridges )|(?<=\brunning )|(?<=\boriented ))"
+    r"(?P<a>[EWNS])(?P<b>(?<=E)W|(?<=W)E|(?<=N)S|(?<=S)N)\b",
+    re.IGNORECASE,
+)
 _W_FOR_WITH = re.compile(r"(?<=[A-Za-z] )(?i:w)(?= (?:rows?|beds?|ridges?|a|an|the|some|\d)\b)")
 _SETTING_COUNT = re.compile(
     r"\b(?P<key>(?i:beds|rows|ridges|trees|plants|vines|plots|blocks|strips|fields))\s*[=:]\s*"

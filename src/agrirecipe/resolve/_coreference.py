@@ -247,6 +247,8 @@ def merge_coreferences(
             and not (kept and _other_side(kept[-1], mention))
             # ("Top left wheat, top right maize, bottom left maize": another quarter)
             and not _in_another_zone(kept, mention)
+            # ("tomatoes (beefsteak), tomatoes (roma)": the crop again, another variety)
+            and not _another_variety_in_brackets(clauses, clause, mention, kept)
             # ("Grain maize on the big field and, beside it, sweetcorn": a kind named
             # bare, placed against it)
             and not (
@@ -547,3 +549,28 @@ def _in_another_zone(kept: Sequence[Mention], mention: Mention) -> bool:
     crops = strong_crops(mention)
     same = [m for k in kept for m in (k.refinements or [k]) if strong_crops(m) & crops]
     return own is not None and bool(same) and all(zone_of(m.items) not in (None, own) for m in same)
+
+
+def _another_variety_in_brackets(
+    clauses: Sequence[Clause], clause: Clause, mention: Mention, kept: Sequence[Mention]
+) -> bool:
+    """Whether a crop named bare is followed by a variety of it in brackets that no field
+    of that crop named before has: "tomatoes (beefsteak) + tomatoes (roma)" is two."""
+    following = clauses[clause.index + 1] if clause.index + 1 < len(clauses) else None
+    if (
+        names_a_variety(mention)
+        or clause.mentions[-1:] != [mention]
+        or following is None
+        or following.link is None
+        or following.link.norm != "("
+        or len(following.mentions) != 1
+    ):
+        return False
+    said = following.mentions[0]
+    crops = strong_crops(mention)
+    if not crops or not names_a_variety(said) or strong_crops(said) != crops:
+        return False
+    same_crop = [k for k in kept if strong_crops(k) == crops]
+    return bool(same_crop) and all(
+        names_a_variety(k) and not same_variety(k, said) for k in same_crop
+    )

@@ -26,7 +26,7 @@ from agrirecipe.resolve._structure import (
 __all__ = ["dissolve_plant_parts", "said_with_a_verb"]
 
 
-def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
+def dissolve_plant_parts(clauses: Sequence[Clause], crop_categories: dict[str, str]) -> list[str]:
     """Mentions that describe plants of a named field are attributes, not new fields.
 
     ", fruit ripe" after named fields, "half the vines show mildew, a riesling
@@ -102,7 +102,11 @@ def dissolve_plant_parts(clauses: Sequence[Clause]) -> list[str]:
             continue  # "the vines are on the left and the orange grove on the right": placed
         if _names_another_crop(clauses, position, mention, others_before):
             continue  # "Bare vines pruned back ..., and the pear trees ... are bare too"
-        if definite and not predicate and _placed_crop_of_its_own(clauses, position, mention):
+        if (
+            definite
+            and not predicate
+            and _placed_crop_of_its_own(clauses, position, mention, crop_categories)
+        ):
             continue  # "pear trees beyond them and the vines on the hill": the grapes
         if definite and _relation_object_named_before(clauses, position, mention):
             continue  # "the cherries between the vines and the pears": the vineyard named
@@ -196,7 +200,9 @@ def _names_another_crop(
 _PLACING = frozenset({"on", "in", "at", "along", "up", "down", "across", "over", "by", "beyond"})
 
 
-def _placed_crop_of_its_own(clauses: Sequence[Clause], position: int, mention: Mention) -> bool:
+def _placed_crop_of_its_own(
+    clauses: Sequence[Clause], position: int, mention: Mention, crop_categories: dict[str, str]
+) -> bool:
     """Whether "and the vines on the hill" (a word for plants that names a crop, joined by
     "and" and put in a place of its own, or placed against a field: "and the vines south
     of the carrots") follows fields that all name other crops: a field of that crop
@@ -204,7 +210,9 @@ def _placed_crop_of_its_own(clauses: Sequence[Clause], position: int, mention: M
     Riesling ..., and the vines are bare", nor "tomatoes and the vines heavy")."""
     clause = clauses[position]
     crops = strong_crops(mention)
-    earlier = [strong_crops(m) for c in clauses[:position] for m in c.mentions]
+    # (a field named by a plot word or a category alone holds only the crops they allow:
+    # "orchard north of the veg garden, and the vines south of the veg garden")
+    earlier = [_may_hold(m, crop_categories) for c in clauses[:position] for m in c.mentions]
     head = max(h.end for h in mention.heads)
     following = clauses[position + 1] if position + 1 < len(clauses) else None
     return (
@@ -223,6 +231,18 @@ def _placed_crop_of_its_own(clauses: Sequence[Clause], position: int, mention: M
             )
         )
     )
+
+
+def _may_hold(mention: Mention, crop_categories: dict[str, str]) -> set[str]:
+    """The crops a field mention may be: those it names, else those its plot word or its
+    category allow (none known: an empty set)."""
+    named = {crop for crop, _, _ in mention.interpretations or ()}
+    if named:
+        return strong_crops(mention) or named
+    if mention.plot is not None and mention.plot["options"]:
+        return {*mention.plot["options"], *mention.plot["tolerates"]}
+    category = mention.category or (mention.plot or {}).get("category")
+    return {crop for crop, of in crop_categories.items() if category and of == category}
 
 
 def _plants_of_a_member(clauses: Sequence[Clause], position: int, mention: Mention) -> bool:

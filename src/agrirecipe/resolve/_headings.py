@@ -97,7 +97,9 @@ def drop_list_headings(clauses: Sequence[Clause], mentions: list[Mention]) -> li
             and not mention.refinements
             and mention.rest is None
             # "my allotment: three different veg patches": two or more fields listed
-            and sum(m.count or 1 for m in later) >= 2
+            # ("We went down to a single crop: one 4 ha block of Gala apples": the one
+            # field it counts)
+            and (sum(m.count or 1 for m in later) >= 2 or _counts_one(mention, later))
             and later[0].clause >= following.index
         ):
             clauses[mention.clause].mentions = []
@@ -111,6 +113,15 @@ def drop_list_headings(clauses: Sequence[Clause], mentions: list[Mention]) -> li
             continue
         kept.append(mention)
     return kept
+
+
+def _counts_one(heading: Mention, later: Sequence[Mention]) -> bool:
+    """Whether a heading counts one field ("a single crop", "one crop") and one is named."""
+    return (
+        heading.count == 1
+        and any(i.role == "number" and i.norm not in ("a", "an") for i in heading.items)
+        and sum(m.count or 1 for m in later) == 1
+    )
 
 
 def _crop_title(clauses: Sequence[Clause], mention: Mention, following: Sequence[Mention]) -> bool:

@@ -93,7 +93,7 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
     """
     text = _PLACED_THEN_MEASURED.sub(r"\g<head> \g<rest>, \g<where>", text)
     text = _NAME_PLACED_THEN_MEASURED.sub(r"\g<name>: \g<rest>, \g<where>\g<end>", text)
-    text = _members_by_look(text, tag)
+    text = _members_by_measure(_members_by_look(_members_by_a_word(text, tag), tag))
     text = _PLURAL_LABELS.sub(_one_noun_each, _valued_members(_numbered_members(text, tag)))
     text = _PLACED_THEN_NAMED.sub(r"\g<head>, \g<where>, is", text)
     text = _PLACED_THEN_MARKED.sub(_placed_then_marked, text)
@@ -244,6 +244,65 @@ _BY_LOOK = re.compile(
     r"(?P<placed>\s+(?i:is|lies|sits)\s+(?:(?i:on|to|at)\s+(?i:the)\s+)?"
     r"(?P<side>(?i:north|south|east|west))(?i:ern)?(?:\s+(?i:side|end))?\b(?!\s+(?i:of)\b))?"
 )
+
+
+# "the Winter Wheat and Spring Wheat plots ..., the winter one much taller": a member
+# named by the first word of its variety's name (here a season's word)
+_ONE_BY_A_WORD = re.compile(r"\b(?P<the>(?i:the))\s+(?P<word>[A-Za-z]+)\s+(?=(?i:one)\b)")
+
+
+def _members_by_a_word(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
+    """``text`` with "the winter one" written "the Winter Wheat one" when "Winter Wheat",
+    a variety whose name begins with that word, was named before it."""
+
+    def rewrite(match: re.Match[str]) -> str:
+        word = match.group("word")
+        named = re.search(
+            rf"\b{re.escape(word)}\s+(?P<next>[A-Za-z]+)", text[: match.start()], re.IGNORECASE
+        )
+        if named is None:
+            return match.group(0)
+        variety = f"{word} {named.group('next')}"
+        items = [i for i in tag(variety) if i.role != "separator"]
+        if len(items) != 1 or not items[0].has("variety"):
+            return match.group(0)
+        return f"{match.group('the')} {variety} "
+
+    return _ONE_BY_A_WORD.sub(rewrite, text)
+
+
+# "one at 30-inch rows, one at 36-inch rows, the 30-inch plot west of the 36-inch plot":
+# members named again by the measure each was said with
+_MEASURE = r"(?P<n>\d+(?:\.\d+)?)\s*-?\s*(?P<unit>inch|inches|in|cm|mm|m|ft|foot|feet)\b"
+_BY_MEASURE = re.compile(
+    rf"\b(?i:the)\s+{_MEASURE}(?:\s+(?i:rows?|row|spacing))?\s+"
+    r"(?i:one|field|plot|block|strip|bed|patch|paddock)\b"
+)
+
+
+def _members_by_measure(text: str) -> str:
+    """``text`` with "the 30-inch plot" written "the first" when the members were said
+    "one at 30-inch rows, one at 36-inch rows" (each with its own first measure)."""
+    said = list(_MEMBER_SAID.finditer(text))
+    measures: list[tuple[float, str]] = []
+    for member in said:
+        found = re.search(_MEASURE, member.group("said"))
+        if found is None:
+            return text
+        measures.append((float(found.group("n")), found.group("unit")[:2].lower()))
+    if (
+        len(measures) < 2
+        or len(measures) > len(_ORDINAL_WORDS)
+        or len(set(measures)) != len(measures)
+    ):
+        return text
+    start = said[-1].end()
+
+    def rewrite(match: re.Match[str]) -> str:
+        key = (float(match.group("n")), match.group("unit")[:2].lower())
+        return _ORDINAL_WORDS[measures.index(key)] if key in measures else match.group(0)
+
+    return text[:start] + _BY_MEASURE.sub(rewrite, text[start:])
 
 
 def _members_by_look(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
@@ -438,8 +497,11 @@ _LEADING = re.compile(
     r"(?i:plot|block|field|one|part|half|strip|parcel|section|paddock|area)\b\s*"
     r"(?:(?i:is|are|has|holds|gets|grows|has got)\s+|[:\-–—]\s*)?"
     # (the rest runs to a mark, past a decimal point or a thousands comma: "drilled in
-    # 12.5 cm rows", "at 80,000 plants/ha")
-    r"(?P<rest>(?!(?i:of|to|and|with|in|on|at|is|are)\b)[^\s,;.:()](?:[^,;.:()]|[.,](?=\d))*)"
+    # 12.5 cm rows", "at 80,000 plants/ha"; or to the next side's plot: "the south block
+    # is Grande Naine and the north block is Lady Finger")
+    r"(?P<rest>(?!(?i:of|to|and|with|in|on|at|is|are)\b)[^\s,;.:()]"
+    r"(?:(?!\s+(?i:and|but|while|whereas)\s+(?:(?i:the)\s+)?"
+    r"(?i:north|south|east|west|top|bottom|upper|lower)(?i:ern)?\s)[^,;.:()]|[.,](?=\d))*)"
 )
 
 
@@ -579,7 +641,15 @@ def place_trailing_directions(text: str) -> str:
     "Granny (west) and Fuji (east)"."""
     sides = {m.group("side").lower() for m in _BRACKETED_SIDE.finditer(text)}
     if len(sides) >= 2:
-        text = _BRACKETED_SIDE.sub(lambda m: f"in the {m.group('side').lower()}", text)
+        # ("Zone 1 (north end): Bing cherries": a zone before its field, as "At the top:")
+        text = _BRACKETED_SIDE.sub(
+            lambda m: (
+                f"at the {m.group('side').lower()} end"
+                if text[m.end() :].lstrip().startswith(":")
+                else f"in the {m.group('side').lower()}"
+            ),
+            text,
+        )
     matches = [m for m in _TRAILING.finditer(text) if m.group("word").lower() not in _NOT_PLACED]
     if len(matches) < 2 or len({m.group("side").lower() for m in matches}) < 2:
         return text

@@ -373,7 +373,11 @@ class Lexicon:
                 continue  # "a fox trotting across": a word of its own, not "rotting" mistyped
             known = phrase.split()
             if len(said) == len(known) and any(
-                a != b and a in everyday_words() and not _doubled(a, b)
+                a != b
+                and a in everyday_words()
+                and not _doubled(a, b)
+                # ("Pinto Noir vines": two letters swapped beside a word said right)
+                and not (_swapped(a, b) and len(said) > 1)
                 for a, b in zip(said, known, strict=True)
             ):
                 # "fire blight on some shoots" is no misspelt "side shoots" ("Red Barron"
@@ -389,6 +393,19 @@ _DOUBLE = re.compile(r"(.)\1+")
 def _doubled(said: str, known: str) -> bool:
     """Whether two words differ only in a letter said once or twice ("barron", "baron")."""
     return _DOUBLE.sub(r"\1", said) == _DOUBLE.sub(r"\1", known)
+
+
+def _swapped(said: str, known: str) -> bool:
+    """Whether two words differ only in two neighbouring letters swapped ("pinto", "pinot")."""
+    if len(said) != len(known):
+        return False
+    differ = [i for i, (a, b) in enumerate(zip(said, known, strict=True)) if a != b]
+    return (
+        len(differ) == 2
+        and differ[1] == differ[0] + 1
+        and said[differ[0]] == known[differ[1]]
+        and said[differ[1]] == known[differ[0]]
+    )
 
 
 #: Endings that make a new word of a known one ("blocky", "reddish", "ridged").

@@ -68,6 +68,16 @@ def colours_are_not_crops(items: Sequence[Item], text: str) -> None:
     """'striped yellow-orange with rust', 'olive-green velvety patches': a crop word joined
     by a hyphen to a colour is a colour, not a field (nor an unknown crop). 'an orange
     tractor', 'orange crates': a crop word that is a colour, before scenery, is its colour."""
+    for item in items:
+        # "the red-orange cobs": two colours joined by a hyphen, not the "red orange" (Moro)
+        if (
+            item.role in ("head", "weak_variety")
+            and len(item.tokens) == 2
+            and all(t.norm in reader_words("colours") for t in item.tokens)
+            and text[item.tokens[0].end : item.tokens[1].start] == "-"
+        ):
+            item.role = "filler"
+            item.data["colour"] = True
     for index, (first, second) in enumerate(itertools.pairwise(items)):
         third = items[index + 2] if index + 2 < len(items) else None
         if (

@@ -101,6 +101,14 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
             # a time of year belongs to the whole scene.
             scene.extend(seasons)
             seasons = []
+        if (with_list := _closes_a_with_list(clauses, position)) is not None:
+            # "Fontane on the right with late blight, blackened leaves and collapsed
+            # plants": the last words of a "with" list are still that field's
+            with_list.items.extend(
+                seasons + others + [i for i in attributes if i.role == "geometry"]
+            )
+            carried = (position, [with_list])
+            continue
         if (
             before
             and not after
@@ -316,6 +324,30 @@ def _member_opening(clauses: Sequence[Clause], position: int) -> Mention | None:
             return member if opens and clause.refined_parent is not None else None
         if clause.link is not None and clause.link.norm in (".", "!", ";"):
             return None  # (a colon goes on: "One: 200 x 150 m, rows N-S")
+    return None
+
+
+def _closes_a_with_list(clauses: Sequence[Clause], position: int) -> Mention | None:
+    """The field whose "with" list an "and" clause closes: "Fontane on the right with
+    late blight, blackened leaves and collapsed plants" (the clauses between it and the
+    field only go on with the list)."""
+    link = clauses[position].link
+    if link is None or link.norm != "and":
+        return None
+    for previous in reversed(clauses[:position]):
+        if previous.mentions:
+            owner = previous.mentions[-1]
+            last_head = max(h.start for h in owner.heads)
+            after = [i for i in owner.items if i.start > last_head]
+            with_ = any(i.norm == "with" for i in previous.items if i.start > last_head)
+            return owner if with_ and not any(i.role == "plot" for i in after) else None
+        if previous.link is None or previous.link.norm != "," or previous.mentions:
+            return None
+        if not all(
+            i.role in ATTRIBUTE_ROLES or i.role in ("filler", "of", "unknown")
+            for i in previous.items
+        ):
+            return None
     return None
 
 

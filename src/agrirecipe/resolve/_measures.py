@@ -384,7 +384,7 @@ def same_spacing(intent: FieldIntent, before: FieldIntent, words: Sequence[Item]
         return intent
     direction = any(
         w in i.norm for i in words for w in ("direction", "orientation", "bearing", "heading")
-    )
+    ) or any(i.norm.startswith(("rows", "with rows")) and "way" in i.norm for i in words)
     length = any(w in i.norm for i in words for w in ("length", "long"))
     # "6 beds of 200-ft rows, and the same layout of Sonata": the whole planting again
     layout = any(w in i.norm for i in words for w in ("layout", "spec", "setup", "set up"))

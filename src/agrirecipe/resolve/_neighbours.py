@@ -20,6 +20,7 @@ from agrirecipe.resolve._lexicon import Item, scenery_words
 from agrirecipe.resolve._links import OPPOSITE
 
 __all__ = [
+    "place_around_a_centre",
     "place_by_cover",
     "place_divided_plots",
     "place_flanks",
@@ -280,6 +281,13 @@ _FURTHER_PAST = re.compile(
 )
 
 
+_FURTHER_OPENING_PAST = re.compile(
+    r"(?:^|(?<=[.;:!?]\s))(?P<further>(?i:further|farther)\s+(?i:north|south|east|west)"
+    r"(?:\s+(?i:again|still))?)\s*,\s+(?i:past|beyond|across)\s+(?i:the|our|my)\s+"
+    r"[A-Za-z][\w'-]*(?:\s+[A-Za-z][\w'-]*){0,2}\s*,"
+)
+
+
 def _beyond_as_faced(text: str) -> str:
     """``text`` with "beyond them" written "north of them" when the viewer says once
     which one way they face ("facing due north"); several ways, or none, leave it."""
@@ -317,6 +325,9 @@ def place_sides(text: str) -> str:
     text = _ONE_SIDE_AND_OTHER.sub(_between_sides, text)
     text = _FACING_NORTH.sub("", text)
     text = _beyond_as_faced(text)
+    # "...; further north again, past the lane, there's wheat": further on than the field
+    # before, the lane passed on the way
+    text = _FURTHER_OPENING_PAST.sub(r"\g<further>,", text)
     # "Valencia oranges further south, past the house": on that side of what is passed
     text = _FURTHER_PAST.sub(lambda m: f"{m.group('side')} of {m.group('thing')}", text)
     # "Left: corn. Middle: spuds. Right: cabbages.": the parts of the view as labels
@@ -401,13 +412,33 @@ def place_flanks(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
         return f"{match.group('side')} of {match.group('the') or ''}{match.group('words')}"
 
     text = _both_sides_of_scenery().sub(both_sides, _FLANKED_SIDES.sub(rewrite, text))
+
+    def behind_a_field(match: re.Match[str]) -> str:
+        # "a patch of onions behind the pears": next to the pears (not "a barn behind the
+        # trees", scenery, nor "behind the farmhouse")
+        before = _LAST_WORD.search(text, 0, match.start())
+        if before is None or any(i.has("scenery", "non_agricultural") for i in tag(before[0])):
+            return match.group(0)
+        items = [i for i in tag(match.group("words")) if i.role != "separator"]
+        if not items or not items[0].has("crop", "variety"):
+            return match.group(0)
+        return f"next to {match.group('the')}{match.group('words')}"
+
     text = _SIDE_OF.sub(side_of_a_field, text)
+    text = _BEHIND.sub(behind_a_field, text)
     return _AROUND_A_FIELD.sub(around_a_field, text)
+
+
+_LAST_WORD = re.compile(r"[A-Za-z][\w'-]*(?=\s*$)")
+_BEHIND = re.compile(
+    r"\b(?:(?i:just|right|directly|straight)\s+)?(?i:behind)\s+(?P<the>(?i:the|our|my)\s+)"
+    r"(?P<words>[A-Za-z][\w'-]*(?:\s+[A-Za-z][\w'-]*)?)"
+)
 
 
 _SIDE_OF = re.compile(
     r"\b(?i:on|along|at)\s+(?i:the)\s+(?P<side>(?i:north|south|east|west))(?i:ern)?\s+"
-    r"(?i:side|edge)\s+(?i:of)\s+(?P<the>(?i:the|our|my)\s+)?"
+    r"(?i:side|edge)\s+(?i:of)\s+(?P<the>(?i:the|our|my|an?)\s+)?"
     r"(?P<words>[A-Za-z][\w'-]*(?:\s+[A-Za-z][\w'-]*)?)"
 )
 
@@ -431,3 +462,38 @@ def _both_sides_of_scenery() -> re.Pattern[str]:
         r"(?i:both sides of|either side of|each side of)\s+"
         rf"(?P<the>(?i:the|a|an|our|that)\s+)(?P<thing>(?i:{things}))\b"
     )
+
+
+# "Four fields around the farmhouse: wheat to the north of it, maize to the south, ...":
+# each field on its own side of the centre named, not of the field before
+_AROUND = re.compile(
+    r"\b(?i:around|round|surrounding)\s+(?i:the|our|my)\s+(?P<centre>[A-Za-z][\w'-]*)"
+)
+_TO_THE_SIDE = re.compile(
+    r"\b(?:(?i:to|on)\s+)?(?i:the)\s+(?P<side>(?i:north|south|east|west))(?:\s+(?i:side))?"
+    r"(?:\s+(?i:of)\s+(?i:it|the\s+(?P<of>[A-Za-z][\w'-]*)))?\b(?=\s*(?:[,.;]|and\b|$))"
+)
+
+
+def place_around_a_centre(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
+    """``text`` with "around the farmhouse: wheat to the north of it, maize to the south"
+    written "... wheat in the north, maize in the south" (zones of the farm), when the
+    centre is no field ("around the vineyard" keeps its fields placed against it) and two
+    or more sides are said after it."""
+    around = _AROUND.search(text)
+    if around is None or any(
+        i.has("crop", "variety", "plot", "category") for i in tag(around.group("centre"))
+    ):
+        return text
+    matches = [
+        m
+        for m in _TO_THE_SIDE.finditer(text, around.end())
+        if m.group("of") in (None, around.group("centre"))
+    ]
+    if len({m.group("side").lower() for m in matches}) < 2:
+        return text
+    for match in reversed(matches):
+        text = (
+            f"{text[: match.start()]}at the {match.group('side').lower()} end{text[match.end() :]}"
+        )
+    return text

@@ -118,6 +118,7 @@ from agrirecipe.resolve._measures import (
     share_each_measures,
 )
 from agrirecipe.resolve._neighbours import (
+    place_around_a_centre,
     place_by_cover,
     place_divided_plots,
     place_flanks,
@@ -130,6 +131,7 @@ from agrirecipe.resolve._relations import read_relations
 from agrirecipe.resolve._retractions import (
     apply_corrections,
     drop_alternatives,
+    drop_corrected_words,
     drop_free_choices,
     drop_negated,
 )
@@ -138,6 +140,7 @@ from agrirecipe.resolve._structure import (
     apply_each_side,
     apply_plural_counts,
     count_a_list_after_it,
+    count_plots_of_a_list,
     raise_conflicts,
     share_count_over_a_list,
     share_counted_fields,
@@ -151,6 +154,7 @@ from agrirecipe.resolve._zones import (
     complete_orders,
     drop_placed_neighbours,
     find_zones,
+    lone_side,
     zone_owners,
     zone_relations,
 )
@@ -211,6 +215,7 @@ class PromptReader(FieldReading):
 
         text, labels = resolve_labels(text, tag)
         text = place_compass_members(open_ordered_lists(text, tag), tag)
+        text = place_around_a_centre(text, tag)
         text = place_trailing_directions(place_leading_directions(text))
         text = place_walked_orders(place_neighbouring_plots(place_divided_plots(text)))
         text = place_by_cover(place_sides(place_flanks(text, tag)))
@@ -235,6 +240,7 @@ class PromptReader(FieldReading):
         items, steps = self.unknown_words(items, self.lexicon)
         self.trace.extend(steps)
         assign_roles(items)
+        self._note(drop_corrected_words(items), "replaced by a correction")
         purpose_diseases(items, text)
         prompt_latitude, latitude_text, items = read_latitude(text, items)
         items = read_sizes(read_heights(items))
@@ -253,6 +259,7 @@ class PromptReader(FieldReading):
         take_the_lower_count(clauses)
         share_count_over_a_list(clauses)
         count_a_list_after_it(clauses)
+        count_plots_of_a_list(clauses)
         self._note(apply_corrections(clauses), "replaced by a correction")
         self._note(
             drop_alternatives(clauses),
@@ -260,7 +267,9 @@ class PromptReader(FieldReading):
         )
         raise_conflicts(clauses)
         self._note(drop_negated(clauses), "negated: not a field")
-        self._note(dissolve_plant_parts(clauses), "the named fields' own fruit")
+        self._note(
+            dissolve_plant_parts(clauses, self.crop_categories), "the named fields' own fruit"
+        )
         share_leading_attributes(clauses)
         share_trailing_attributes(clauses)
         mentions = apply_refinements(clauses, self.crop_categories, builder)
@@ -308,6 +317,7 @@ class PromptReader(FieldReading):
         owned = zone_owners(items, [f.items for f in fields])
         zoned = [r for r in zone_relations(owned) if (r.kind, r.subject, r.objects) not in said]
         relations = drop_placed_neighbours(relations, zoned) + zoned
+        relations = relations or lone_side(tokens, claimed, owned)
         relations += complete_orders(relations, owned)
         scene_season = self._apply_scene_items(scene_items, fields, hemisphere)
         give_respectively(fields)

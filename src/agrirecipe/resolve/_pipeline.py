@@ -23,7 +23,13 @@ from typing import TYPE_CHECKING, TypeVar
 from pydantic import ValidationError
 
 from agrirecipe._errors import ConfigurationError, PromptError, UnknownCropError
-from agrirecipe.enrich import DEFAULT_LATITUDE_DEG, build_environment, build_field, plan_rows
+from agrirecipe.enrich import (
+    DEFAULT_LATITUDE_DEG,
+    build_environment,
+    build_field,
+    plan_rows,
+    thin_to_fit,
+)
 from agrirecipe.hierarchy import Hierarchy, default_hierarchy, load_hierarchy
 from agrirecipe.knowledge import KnowledgeBase, default_knowledge_base, load_knowledge_base
 from agrirecipe.recipe import (
@@ -310,6 +316,9 @@ def build_recipe(
     if latitude is None:
         latitude = intent.latitude_deg if intent.latitude_deg is not None else DEFAULT_LATITUDE_DEG
     season = _dominant_season([f.season for f in fields])
+    # (20 ha of wheat: the densest fields draw every N-th plant rather than be refused)
+    fields, thinned = thin_to_fit(fields, context.max_plants)
+    warnings.extend(thinned)
     try:
         recipe = SceneRecipe.model_validate(
             {
@@ -381,14 +390,15 @@ def _validate(intent: SceneIntent, context: ResolveContext) -> None:
     # 30 m" as "8 rows at 76 cm, rows 30 m long"; "plot": "the polytunnel of tomatoes" as
     # "the plot of tomatoes"; "them": "between the two a strip of ..." as "between them";
     # "two", "fields", "each": "cereals on both sides of the track" as "cereals in two
-    # fields, one each side of the track"; "on": "Left: corn" as "On the left, corn"
+    # fields, one each side of the track"; "on": "Left: corn" as "On the left, corn";
+    # "end": "around the farmhouse: wheat to the north of it" as "wheat at the north end"
     expanded = expand_casual(intent.prompt)
     prompt_words = (
         _words(intent.prompt)
         | _words(expanded)
         | _words(spread_value_lists(expanded))
         | {"the", "in", "plants", "one", "other", "at", "rows", "long", "plot", "them"}
-        | {"two", "fields", "each", "on"}
+        | {"two", "fields", "each", "on", "end"}
     )
     for index, field in enumerate(intent.fields):
         path = f"fields[{index}]"

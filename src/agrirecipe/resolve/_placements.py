@@ -182,11 +182,16 @@ def fronted_pair(clauses: Sequence[Clause], position: int) -> tuple[Mention, Men
         subject, target = clause.mentions[1], clause.mentions[0]
     else:
         after = position + 1
+        target = clause.mentions[0]
         while after + 1 < len(clauses) and (
-            _aside(clauses[after]) or _beside_it_again(clauses[after])
+            _aside(clauses[after])
+            or _beside_it_again(clauses[after])
+            or _describes(clauses[after], target)
         ):
             # "south of the orchard, across the lane, there's ...": scenery between; "east
-            # of that field, right up against it, onions": the same place said closer
+            # of that field, right up against it, onions": the same place said closer;
+            # "beside the Gala block, where the apples are colouring up, ...": the object
+            # described
             after += 1
         following = clauses[after] if after < len(clauses) else None
         if (
@@ -207,6 +212,16 @@ def _aside(clause: Clause) -> bool:
         and clause.link is not None
         and clause.link.norm == ","
         and all(i.role in ("filler", "side", "of") for i in clause.items)
+    )
+
+
+def _describes(clause: Clause, target: Mention) -> bool:
+    """A clause that only describes ``target`` ("where the apples are colouring up")."""
+    return (
+        clause.link is not None
+        and clause.link.role != "relation"
+        and bool(clause.mentions)
+        and all(mention is target for mention in clause.mentions)
     )
 
 

@@ -1,7 +1,8 @@
 """Mentions the text takes back: corrections, alternatives, choices left open, negations.
 
 - *Corrections*: "cherry tomatoes? no, I mean cherry trees" keeps the trees; "cabage
-  patch kid lol jk, just a cabbage field" keeps the field.
+  patch kid lol jk, just a cabbage field" keeps the field; "summer... jk make it autumn"
+  keeps the autumn.
 - *Alternatives*: "a field of wheat or maize" is one field, of the first named.
 - *Choices left open*: "some fruit fields pls, whatever fruit u like" is no more fields.
 - *Negations*: "no apples, just pears" asks for no apples; "the kitchen garden's gone"
@@ -18,10 +19,16 @@ import itertools
 from collections.abc import Sequence
 
 from agrirecipe.resolve._decompose import Clause, Mention
-from agrirecipe.resolve._lexicon import reader_words
+from agrirecipe.resolve._lexicon import Item, reader_words
 from agrirecipe.resolve._structure import first_word, names_a_variety
 
-__all__ = ["apply_corrections", "drop_alternatives", "drop_free_choices", "drop_negated"]
+__all__ = [
+    "apply_corrections",
+    "drop_alternatives",
+    "drop_corrected_words",
+    "drop_free_choices",
+    "drop_negated",
+]
 
 #: Words that may stand between a negation and what it negates ("no any apples").
 _ANY = frozenset({"any", "a", "an", "the", "some"})
@@ -65,6 +72,35 @@ def apply_corrections(clauses: Sequence[Clause]) -> list[str]:
                 while earlier.mentions and earlier.mentions[-1].continued:
                     dropped.append(earlier.mentions.pop().text)
                 break
+    return dropped
+
+
+#: What a word said again after a correction replaces: a time of year (a season or a
+#: month), a stage or a health.
+_REPLACED = {"season": "time", "month": "time", "stage": "stage", "health": "health"}
+
+
+def drop_corrected_words(items: Sequence[Item]) -> list[str]:
+    """'bananas, summer... jk make it autumn': a time of year, stage or health said right
+    after a correction (only filler or a comma between) replaces the one said last before it; that
+    one becomes filler. Returns the words dropped."""
+    dropped: list[str] = []
+    for index, item in enumerate(items):
+        if item.role != "correction":
+            continue
+        said = next(
+            (i for i in items[index + 1 :] if i.role != "filler" and i.norm not in (",", ":")),
+            None,
+        )
+        if said is None or said.role not in _REPLACED:
+            continue
+        replaced = next(
+            (i for i in reversed(items[:index]) if _REPLACED.get(i.role) == _REPLACED[said.role]),
+            None,
+        )
+        if replaced is not None:
+            replaced.role = "filler"
+            dropped.append(replaced.raw)
     return dropped
 
 

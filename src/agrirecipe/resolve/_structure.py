@@ -31,6 +31,7 @@ __all__ = [
     "apply_plural_counts",
     "attribute_of",
     "count_a_list_after_it",
+    "count_plots_of_a_list",
     "definite_before_head",
     "definite_words",
     "descriptive_words",
@@ -250,6 +251,48 @@ def count_a_list_after_it(clauses: Sequence[Clause]) -> None:
         if len(listed) == last.count and all(m.has_crop for m in listed):
             last.count = None
             last.implied_count = False
+
+
+def count_plots_of_a_list(clauses: Sequence[Clause]) -> None:
+    """'three 12 x 100 m strips of winter wheat, spelt and durum': a number of plural
+    plots "of" a list of as many crops is one plot of each, each of the plots' size (not
+    three of the first and one each of the others)."""
+    for position, clause in enumerate(clauses):
+        if not clause.mentions:
+            continue
+        first = clause.mentions[-1]
+        plots = [h for h in first.heads if h.role == "plot"]
+        crops = [h for h in first.heads if h.role != "plot"]
+        if (
+            first.count is None
+            or first.count < 2
+            or not plots
+            or not crops
+            or not plots[-1].data["value"].get("plural")
+            or plots[-1].start > min(h.start for h in crops)
+        ):
+            continue
+        listed: list[Mention] = []
+        for following in clauses[position + 1 :]:
+            if (
+                len(listed) == first.count - 1
+                or following.link is None
+                or not (following.link.role == "conjunction" or following.link.norm == ",")
+                or len(following.mentions) != 1
+            ):
+                break
+            member = following.mentions[0]
+            if member.count is not None or member.plot is not None or not member.has_crop:
+                break
+            listed.append(member)
+        if len(listed) != first.count - 1:
+            continue
+        first.count = None
+        first.implied_count = False
+        size = [i for i in first.items if i.role in ("size", "side", "dimension_joiner")]
+        for member in listed:
+            if not any(i.role == "size" for i in member.items):
+                member.items.extend(size)
 
 
 def first_word(mention: Mention) -> Item | None:

@@ -341,7 +341,20 @@ def _totals_are_not_sizes(items: Sequence[Item]) -> None:
         if item.role != "size":
             continue
         after = tuple(norms[index + 1 : index + 3])
-        if any(after[: len(words)] == tuple(words.split()) for words in reader_words("totals")):
+        said = next(
+            (
+                w.split()
+                for w in reader_words("totals")
+                if after[: len(w.split())] == tuple(w.split())
+            ),
+            None,
+        )
+        # ("A lettuce block ..., 2,000 m² in total, plus a 1,000 m² cabbage block": the
+        # lettuce's own total, another field added to it)
+        added = [
+            n for n in norms[index + 1 + len(said or ()) : index + 4 + len(said or ())] if n != ","
+        ]
+        if said is not None and added[:1] != ["plus"]:
             totals.append(item)
     sizes = [i for i in items if i.role == "size"]
     crops = {crop for i in items if i.role == "head" for crop in crops_of(i)}

@@ -27,6 +27,7 @@ __all__ = [
     "complete_orders",
     "drop_placed_neighbours",
     "find_zones",
+    "lone_side",
     "zone_of",
     "zone_owners",
     "zone_relations",
@@ -102,6 +103,27 @@ def find_zones(tokens: Sequence[Token], claimed: Sequence[bool] = ()) -> list[Zo
     One zone word alone ("top quality", "the middle field") is not a zoning, and
     "in the middle" counts only beside a zone on either side of it.
     """
+    found, taken = _zone_matches(tokens, claimed)
+    found = _as_seen(found, tokens)
+    compass = any(m.zone in _PLACES and "depth" not in _PLACES[m.zone] for m in found)
+    # "looking east ...: potatoes closest to me": the compass places, not the depth; the
+    # depth words stay zone words ("potatoes closest to the camera at the bottom"), read
+    # after a field's compass zone
+    sides = {m.zone for m in found if m.zone != "middle"}
+    if compass:
+        sides -= {"near", "far"}
+    if len(sides) == 1 and (other := _the_other_half(found, tokens, taken)) is not None:
+        found.append(other)  # "Half the farm is maize, the northern half, and the rest ..."
+        sides.add(other.zone)
+    if len(sides) < 2 and not (sides and any(m.zone == "middle" for m in found)):
+        return []
+    return sorted(found, key=lambda m: m.first)
+
+
+def _zone_matches(
+    tokens: Sequence[Token], claimed: Sequence[bool] = ()
+) -> tuple[list[ZoneMatch], list[bool]]:
+    """Every zone word of the prompt, and the tokens they (and the order words) take."""
     starts: list[int] = []
     offset = 0
     for token in tokens:
@@ -125,20 +147,7 @@ def find_zones(tokens: Sequence[Token], claimed: Sequence[bool] = ()) -> list[Zo
                 found.append(ZoneMatch(zone, first, last))
             for index in range(first, last):
                 taken[index] = True
-    found = _as_seen(found, tokens)
-    compass = any(m.zone in _PLACES and "depth" not in _PLACES[m.zone] for m in found)
-    # "looking east ...: potatoes closest to me": the compass places, not the depth; the
-    # depth words stay zone words ("potatoes closest to the camera at the bottom"), read
-    # after a field's compass zone
-    sides = {m.zone for m in found if m.zone != "middle"}
-    if compass:
-        sides -= {"near", "far"}
-    if len(sides) == 1 and (other := _the_other_half(found, tokens, taken)) is not None:
-        found.append(other)  # "Half the farm is maize, the northern half, and the rest ..."
-        sides.add(other.zone)
-    if len(sides) < 2 and not (sides and any(m.zone == "middle" for m in found)):
-        return []
-    return sorted(found, key=lambda m: m.first)
+    return found, taken
 
 
 @functools.cache
@@ -469,3 +478,40 @@ _TOUCHING = ("each other", "one another", "side by side")
 def _said_to_touch(relation: RelationIntent) -> bool:
     text = (relation.text or "").lower()
     return any(words in text for words in _TOUCHING)
+
+
+#: The relation of a field said to lie on one side.
+_SIDE_KINDS: dict[str, RelationKind] = {
+    "north": "north_of",
+    "south": "south_of",
+    "east": "east_of",
+    "west": "west_of",
+}
+
+
+def lone_side(
+    tokens: Sequence[Token], claimed: Sequence[bool], fields: Sequence[Sequence[Item]]
+) -> list[RelationIntent]:
+    """'hamlin + valencia orange groves, hamlin on the left', 'sonata strawbs & elsanta
+    strawberries, sonata up north': of two fields, one named again with a side of its
+    own lies on that side of the other (one side said, of one of two fields)."""
+    if len(fields) != 2:
+        return []
+    found, _ = _zone_matches(tokens, claimed)
+    found = _as_seen(found, tokens)
+    if len(found) != 1 or found[0].zone not in _SIDE_KINDS or not found[0].first:
+        return []
+    named = tokens[found[0].first - 1]
+    # (named again: not "wheat and maize on the left", both of them on the left)
+    owners = [
+        index
+        for index, items in enumerate(fields)
+        if any(i.role in _HEADS and i.end == named.end for i in items)
+        and any(i.role in _HEADS and i.end < named.start for i in items)
+    ]
+    if len(owners) != 1:
+        return []
+    subject = owners[0]
+    return [
+        RelationIntent(kind=_SIDE_KINDS[found[0].zone], subject=subject, objects=(1 - subject,))
+    ]
