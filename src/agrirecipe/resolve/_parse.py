@@ -14,9 +14,9 @@ named for what it reads, its words in the data file beside it):
 step  pass                                        module (data)
 ====  ==========================================  ===============================
 1     texting forms become words; value lists     ``_casual`` (casual.yaml),
-      and counts said once; labels, walks and     ``_lists`` (value_lists.yaml),
-      sides said in other words; plots said to    ``_labels``, ``_neighbours``
-      touch
+      and counts said once; labels, members       ``_lists`` (value_lists.yaml),
+      named again, walks and sides said in        ``_labels``, ``_members``,
+      other words; plots said to touch            ``_neighbours``
 2     words, numbers and marks                    ``_lexicon.tokenize``
 3     stated row geometry (and measures no        ``_geometry`` (geometry.yaml)
       recipe holds, as not used)
@@ -24,7 +24,8 @@ step  pass                                        module (data)
 5     phrases and their senses; visual cues,      ``_lexicon`` (vocabulary.yaml,
       scenery and purpose words                   cues.yaml, scenery.yaml, ...)
 6     typos and unseen names                      the strategy's reader
-7     each phrase's role; latitudes; sizes        ``_scan``
+7     each phrase's role; a season, stage or      ``_scan``, ``_retractions``
+      health taken back; latitudes; sizes
 7b    what single words are in their place        ``_words``, ``_looks``,
       (counts that are not, labels, negations,    ``_plot_words``
       colours and looks, plot words of no field)  (vocabulary.yaml
