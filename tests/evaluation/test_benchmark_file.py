@@ -155,7 +155,8 @@ def test_select_by_type_tag_id_and_limit_covers_every_type() -> None:
         "multi_generic",
         "invalid",
     }
-    assert len(benchmark.select(limit=10_000)) == len(benchmark)
+    assert len(benchmark.select(limit=len(benchmark) + 1)) == len(benchmark)
+    assert len(benchmark.select(limit=len(benchmark) - 1)) == len(benchmark) - 1
 
 
 def test_knowledge_query_errors(tmp_path: Path) -> None:
