@@ -242,7 +242,12 @@ def merge_coreferences(
             and not mention.other
             and not mention.refinements
             and (is_definite or bare or bool(repeated))
-            and not another_field(clauses, clause, mention)
+            and not (
+                another_field(clauses, clause, mention)
+                # ("San Marzano and Beefsteak tomatoes ... Beefsteak plot to the south of
+                # it": the variety named bare in a list, now with its plot)
+                and not _its_plot_named(repeated, clause, mention)
+            )
             # ("North plot, ..., Fontane potatoes; south plot, ...": another side, another plot)
             and not (kept and _other_side(kept[-1], mention))
             # ("Top left wheat, top right maize, bottom left maize": another quarter)
@@ -573,4 +578,16 @@ def _another_variety_in_brackets(
     same_crop = [k for k in kept if strong_crops(k) == crops]
     return bool(same_crop) and all(
         names_a_variety(k) and not same_variety(k, said) for k in same_crop
+    )
+
+
+def _its_plot_named(repeated: Sequence[Mention], clause: Clause, mention: Mention) -> bool:
+    """Whether ``mention`` ("Beefsteak plot") names the plot of the one field of its
+    variety named bare before ("San Marzano and Beefsteak tomatoes"), not a second one."""
+    return (
+        len(repeated) == 1
+        and repeated[0].plot is None
+        and (repeated[0].count or 1) == 1
+        and names_a_variety(mention)
+        and not any(i.norm in ("second", "another", "new", "other") for i in clause.items)
     )

@@ -67,6 +67,8 @@ class _Pattern:
     max_m: float | None
     min_n: float | None
     near_rows: bool
+    #: The largest count the words may say ("3 rows on 40-inch beds": rows on each bed).
+    max_n: float | None = None
     #: A second value in the same words ("5 rows x 30 trees", "3.5 x 1 m spacing"),
     #: read from the groups n2 / unit2.
     key2: str | None = None
@@ -159,6 +161,7 @@ def _tables() -> _Tables:
                 max_m=entry.get("max_m"),
                 min_n=entry.get("min_n"),
                 near_rows=bool(entry.get("near_rows", False)),
+                max_n=entry.get("max_n"),
                 key2=entry.get("key2"),
                 same_unit=bool(entry.get("same_unit", False)),
                 constant=entry.get("value"),
@@ -468,6 +471,8 @@ def _value(pattern: _Pattern, groups: dict[str, str | None], tables: _Tables) ->
     if groups.get("area") is not None:
         value = value / tables.areas[str(groups["area"])]
     if pattern.min_n is not None and value < pattern.min_n:
+        return None
+    if pattern.max_n is not None and value > pattern.max_n:
         return None
     if pattern.invert:
         if value <= 0 or not math.isfinite(value):

@@ -172,13 +172,23 @@ def _heads_fitting_list(
     following = clauses[mention.clause + 1]
     options = set(mention.plot["options"])
     members = [m for m in later if m.clause > mention.clause][:2]
+    # ("New Zealand orchard, a single block of Royal Gala, ...": the one block it is)
+    single = len(later) == 1 and _said_single(later[0])
     return (
         following.link is not None
         and following.link.norm == ","
         and bool(following.mentions)
         and bool(options)
-        and len(members) == 2
+        and (len(members) == 2 or (single and members == list(later)))
         and all(strong_crops(m) and strong_crops(m) <= options for m in members)
+    )
+
+
+def _said_single(mention: Mention) -> bool:
+    """Whether a mention is said to be one field ("a single block", "one block of")."""
+    return mention.count == 1 and any(
+        i.role == "number" and i.norm in ("a single", "one", "single", "just one", "only one")
+        for i in mention.items
     )
 
 
@@ -505,6 +515,13 @@ def drop_restated_counts(clauses: Sequence[Clause], mentions: list[Mention]) -> 
     word before already makes it two. Return the fields left."""
     kept: list[Mention] = []
     for mention in mentions:
+        if (restated := _restated_as_different(kept, mention)) is not None:
+            # "three vegetable strips ..., and three different crops please": the same
+            # fields, said to be of different crops
+            restated.distinct = restated.distinct_crops = True
+            for clause in clauses:
+                clause.mentions = [m for m in clause.mentions if m is not mention]
+            continue
         first = min(mention.items, key=lambda i: i.start, default=None)
         crops = strong_crops(mention)
         earlier = [m for m in kept if crops and strong_crops(m) == crops]
@@ -529,6 +546,28 @@ def drop_restated_counts(clauses: Sequence[Clause], mentions: list[Mention]) -> 
         for clause in clauses:
             clause.mentions = [m for m in clause.mentions if m is not mention]
     return kept
+
+
+def _restated_as_different(kept: Sequence[Mention], mention: Mention) -> Mention | None:
+    """The one earlier counted mention of no crop that ``mention`` ("three different
+    crops": no crop, and no plot but a word for the plants) counts again, or None."""
+    if (
+        not mention.distinct
+        or mention.has_crop
+        or (mention.plot is not None and not mention.plot["individual"])
+        or (mention.count or 1) < 2
+        or mention.refinements
+    ):
+        return None
+    earlier = [
+        m
+        for m in kept
+        if m.count == mention.count
+        and not m.has_crop
+        and not m.refinements
+        and (mention.category is None or m.category in (None, mention.category))
+    ]
+    return earlier[0] if len(earlier) == 1 and len(kept) == 1 else None
 
 
 def drop_trailing_summaries(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:

@@ -563,10 +563,26 @@ def place_walked_orders(text: str) -> str:
         return f"from {start} to {end}"
 
     text = _WALKED.sub(order, text)
+    # "Top to bottom on our hillside farm in Madeira: ...": the place said first, so the
+    # order stands right before the list it orders
+    text = _ORDER_THEN_PLACE.sub(
+        lambda m: (
+            f"{m.group('place')}, {m.group('order').lower()}:"
+            if _WALK_SIDES[m.group("a").lower()] == m.group("b").lower()
+            else m.group(0)
+        ),
+        text,
+    )
     return _EACH_FURTHER.sub(
         lambda m: f", laid out {_WALK_SIDES[m.group('side').lower()]} to {m.group('side').lower()}",
         text,
     )
+
+
+_ORDER_THEN_PLACE = re.compile(
+    rf"(?:^|(?<=[.;!?]\s))(?P<order>(?:(?i:from)\s+)?(?P<a>(?i:{_SIDE}))\s+(?i:to)\s+"
+    rf"(?P<b>(?i:{_SIDE})))\s+(?P<place>(?i:on|at|in|across)\s+[^:;.,]{{1,60}}?)\s*:"
+)
 
 
 # "first the Hamlin grove, then the Navel, then the Moro, each one further north": the

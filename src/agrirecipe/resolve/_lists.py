@@ -166,8 +166,10 @@ def _gapped() -> re.Pattern[str]:
     )
     return re.compile(
         rf"\b(?P<said>\d+)\s+(?P<unit>{units})\b"
-        # the next plot's name (one to three words, no number or unit among them)
-        rf"(?P<gap>\s*(?:,|;|\band\b|\bwhile\b)\s*{name}(?:\s+(?!\d){name}){{0,2}}\s+)"
+        # the next plot's name (one to three words, no number or unit among them), or its
+        # label ("Block 1 has 200 trees; block 2 has 300")
+        rf"(?P<gap>\s*(?:,|;|\band\b|\bwhile\b)\s*(?:{name}(?:\s+(?!\d){name}){{0,2}}|"
+        r"(?i:block|plot|field|strip|bed|zone|area)\s+\d{1,2}\s+(?i:has|have|is|with))\s+)"
         # (a whole number, not "also 0.9 m rows")
         rf"(?P<count>\d+)(?![.,]?\d)(?=\s*(?:[.;,!?)]|$|\band\b))",
         re.IGNORECASE,

@@ -32,7 +32,8 @@ __all__ = [
 # "Savoy and January King in two neighbouring blocks": the plots of a list, side by side
 _NEIGHBOURING = re.compile(
     # ("Fuji and Golden Delicious, two adjacent blocks, each 30 rows ...": said after a comma)
-    r"(?:\b(?P<at>(?i:in|on))|(?P<comma>,))\s+(?P<count>(?:\w+\s+)?)"
+    # ("Red Baron and Walla Walla onions as two neighbouring plots")
+    r"(?:\b(?P<at>(?i:in|on|as))|(?P<comma>,))\s+(?P<count>(?:\w+\s+)?)"
     r"(?i:neighbouring|neighboring|adjacent|adjoining)\s+"
     # ("in adjacent 24-ridge plots", "in three adjacent 10 m x 40 m plots")
     r"(?P<size>\d+[- ](?i:ridge|row|bed|tree)\s+|"

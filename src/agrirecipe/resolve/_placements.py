@@ -162,12 +162,15 @@ def a_distance(clause: Clause) -> bool:
 
 
 def fronted_pair(clauses: Sequence[Clause], position: int) -> tuple[Mention, Mention] | None:
-    """'West of the peppers, an onion plot', 'north of A: Conference pears': a relation
-    that opens its sentence, its object and then its subject (subject, object)."""
+    """'West of the peppers, an onion plot', 'north of A: Conference pears', 'Between the
+    two orchards there's a vegetable garden': a relation that opens its sentence, its
+    object and then its subject (subject, object)."""
     clause = clauses[position]
     link = clause.link
-    if link is None or link.role != "relation" or not clause.mentions:
+    if link is None or link.role not in ("relation", "between") or not clause.mentions:
         return None
+    if link.role == "between" and (clause.mentions[0].count or 1) < 2:
+        return None  # ("Between the two orchards there's a vegetable garden": two sides)
     if position:
         previous = clauses[position - 1]
         # ("plot 2, 10 m west of plot 1, is wheat": a distance before the relation)

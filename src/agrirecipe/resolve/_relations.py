@@ -353,7 +353,11 @@ def read_relations(
             pairs = (link.data.get("value", "next_to"), before[-1], (earlier,))
         elif (fronted := fronted_pair(clauses, position)) is not None:
             # "...; west of the peppers an onion plot": the field after the object
-            pairs = (link.data.get("value", "next_to"), fronted[0], (fronted[1],))
+            pairs = (
+                (link.data.get("value", "next_to"), fronted[0], (fronted[1],))
+                if link.role != "between"
+                else ("between", fronted[0], (fronted[1], fronted[1]))
+            )
         else:
             # "pears on the north block, bananas ...": a trailer right after a field
             # places that field ("..., and to the north, pears" places the one after).

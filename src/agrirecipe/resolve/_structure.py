@@ -432,9 +432,26 @@ def share_trailing_attributes(clauses: Sequence[Clause]) -> None:
             if (i.role in _SHARED_ROLES or _spacing(i)) and i.start > last_head
         ]
         own = {attribute_of(i) for i in first.items}
+        # ("the corn is ripe and the lettuce has mildew": two sentences, each its own; not
+        # "the corn and the lettuce have mildew")
+        said_of_one = (
+            any(
+                i.norm in _SINGULAR_VERBS and last_head < i.start < min(t.start for t in trailing)
+                for i in clause.items
+            )
+            if trailing
+            else False
+        )
+        described = any(i.role in _SHARED_ROLES for i in first.items)
+        if said_of_one or described:
+            continue
         # "cherry tomatoes with the trusses already red, and peppers, still only
         # flowering": the tomatoes' own cue keeps their stage
         first.items.extend(i for i in trailing if attribute_of(i) not in own)
+
+
+#: Verbs that say something of one field ("the lettuce has mildew").
+_SINGULAR_VERBS = frozenset({"is", "has", "was", "looks", "shows", "s"})
 
 
 def _spacing(item: Item) -> bool:
