@@ -4,8 +4,8 @@
 Chardonnay, ..., Cabernet", "onions!!! just 1 big field of onions": a plot word or a
 crop named before the fields that say what it holds is their heading (or title), not
 one more field. :func:`drop_list_headings` drops such mentions once back-references
-are merged; :func:`drop_counted_summaries` drops "Two blocks for drone flights." when
-the next sentences name exactly two fields.
+are merged. Mentions that sum up fields named elsewhere ("Two blocks for drone
+flights.") are read in :mod:`agrirecipe.resolve._summaries`.
 """
 
 from __future__ import annotations
@@ -16,21 +16,17 @@ from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._links import link_norm
 from agrirecipe.resolve._structure import (
     names_a_variety,
-    said_of_all_plots,
     same_variety,
     strong_crops,
 )
+from agrirecipe.resolve._summaries import SUMMARY_ROLES, lend_and_drop
 from agrirecipe.resolve._words import SENTENCE_MARKS
 
 __all__ = [
-    "drop_counted_summaries",
-    "drop_forward_summaries",
     "drop_joint_headings",
     "drop_list_headings",
     "drop_plural_headings",
-    "drop_restated_counts",
     "drop_titles",
-    "drop_trailing_summaries",
     "fill_counted_lists",
     "lend_heading_crop",
     "name_counted_plots",
@@ -262,7 +258,7 @@ def drop_joint_headings(
             named[0].items.extend(
                 i
                 for i in heading.items
-                if i.role in (*_SUMMARY_ROLES, "size", "geometry") and i.role not in own
+                if i.role in (*SUMMARY_ROLES, "size", "geometry") and i.role not in own
             )
         clause = clauses[heading.clause]
         clause.mentions = [m for m in clause.mentions if m is not heading]
@@ -320,43 +316,6 @@ def _joint_headings(
 
 def _ends_sentence(clause: Clause) -> bool:
     return clause.link is not None and clause.link.norm in SENTENCE_MARKS
-
-
-def drop_counted_summaries(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
-    """'Two blocks for drone flights. Block A: Gala apples, ... Block B, south of A:
-    Conference pears, ...': a counted plot of no crop, alone in its sentence, followed
-    by as many fields of named crops in the sentences after it as it still lacks
-    members, says what they are; it is not one more field. Return the fields left."""
-    if len(mentions) < 2:
-        return mentions
-    first, later = mentions[0], mentions[1:]
-    members = list({id(r): r for r in first.refinements}.values())
-    if (
-        first.has_crop
-        or first.category is not None
-        or first.plot is None
-        or (first.count or 1) < 2
-        or first.count != len(members) + len(later)
-        or not all(strong_crops(m) and (m.count or 1) == 1 and not m.refinements for m in later)
-        or not all(strong_crops(m) for m in members)
-    ):
-        return mentions
-    ends = next(
-        (
-            c
-            for c in clauses[first.clause + 1 :]
-            if c.link is not None and c.link.norm in SENTENCE_MARKS
-        ),
-        None,
-    )
-    if ends is None or any(m.clause < ends.index for m in (*members, *later)):
-        return mentions
-    if not members:
-        return later
-    for mention in later:
-        mention.is_refinement = True
-        first.refinements.append(mention)
-    return [first]
 
 
 def drop_titles(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
@@ -424,50 +383,6 @@ def _lists_only(heading: Mention, crops: set[str]) -> bool:
     )
 
 
-#: Attributes a summary said before its fields gives each of them.
-_SUMMARY_ROLES = frozenset({"stage", "health", "cue", "season", "month"})
-
-
-def _lend_and_drop(clauses: Sequence[Clause], summary: Mention, fields: Sequence[Mention]) -> None:
-    """Give ``summary``'s stage, health, cues and season to each of ``fields`` that states
-    none of its own, and take ``summary`` out of its clause."""
-    lent = [i for i in summary.items if i.role in _SUMMARY_ROLES]
-    for field in fields:
-        own = {i.role for i in field.items}
-        field.items.extend(i for i in lent if i.role not in own)
-    for clause in clauses:
-        clause.mentions = [m for m in clause.mentions if m is not summary]
-
-
-def drop_forward_summaries(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
-    """'grapes ripening in both blocks, rows north-south. Chardonnay: 25 rows ...
-    Cabernet: 18 rows ...': a crop said of "both" (or "all the") plots, with no variety,
-    before the fields of that crop are named (two for "both"), describes each of them
-    and is not one more field. Its stage, health, cues and season go to each field that
-    states none of its own. Return the fields left."""
-    for position, summary in enumerate(mentions):
-        crops = strong_crops(summary)
-        if (
-            not said_of_all_plots(summary)
-            or not crops
-            or names_a_variety(summary)
-            or summary.count is not None
-        ):
-            continue
-        later = [m for m in mentions[position + 1 :] if strong_crops(m)]
-        if len(later) < 2 or not all(strong_crops(m) <= crops for m in later):
-            continue
-        # (each field once: "east of the Chardonnay" names the Chardonnay again)
-        named = {
-            frozenset((c, v) for c, v, weak in m.interpretations or () if not weak) for m in later
-        }
-        if any(i.norm == "both" for i in summary.items) and len(named) != 2:
-            continue
-        _lend_and_drop(clauses, summary, later)
-        return [m for m in mentions if m is not summary]
-    return mentions
-
-
 def drop_plural_headings(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
     """'Vineyard test blocks for a grape-yield camera, three blocks from west to east:
     Chardonnay, Riesling, Cabernet': the first field named, a plural plot with no number
@@ -504,130 +419,8 @@ def drop_plural_headings(clauses: Sequence[Clause], mentions: list[Mention]) -> 
         for c in clauses[heading.clause + 1 : later[0].clause + 1]
     ):
         return mentions  # ("test plots next to a wheat field and a maize field": placed)
-    _lend_and_drop(clauses, heading, later)
+    lend_and_drop(clauses, heading, later)
     return later
-
-
-def drop_restated_counts(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
-    """'a cabbage field on either side of it (so 2 cabbage fields)', 'a wheat field, so 2
-    wheat fields': a count said again with "so" after the crop it counts is that crop's
-    number of fields, not more fields. The crop's mention takes the count unless a side
-    word before already makes it two. Return the fields left."""
-    kept: list[Mention] = []
-    for mention in mentions:
-        if (restated := _restated_as_different(kept, mention)) is not None:
-            # "three vegetable strips ..., and three different crops please": the same
-            # fields, said to be of different crops
-            restated.distinct = restated.distinct_crops = True
-            for clause in clauses:
-                clause.mentions = [m for m in clause.mentions if m is not mention]
-            continue
-        first = min(mention.items, key=lambda i: i.start, default=None)
-        crops = strong_crops(mention)
-        earlier = [m for m in kept if crops and strong_crops(m) == crops]
-        if (
-            first is None
-            or first.norm != "so"
-            or (mention.count or 1) < 2
-            or mention.refinements
-            or len(earlier) != 1
-        ):
-            kept.append(mention)
-            continue
-        counted = earlier[0]
-        after = clauses[counted.clause + 1] if counted.clause + 1 < len(clauses) else None
-        sided = (
-            after is not None
-            and after.link is not None
-            and after.link.data.get("value") in ("each_side", "flanks")
-        )
-        if not sided and (counted.count or 1) == 1 and not counted.refinements:
-            counted.count = mention.count
-        for clause in clauses:
-            clause.mentions = [m for m in clause.mentions if m is not mention]
-    return kept
-
-
-def _restated_as_different(kept: Sequence[Mention], mention: Mention) -> Mention | None:
-    """The one earlier counted mention of no crop that ``mention`` ("three different
-    crops": no crop, and no plot but a word for the plants) counts again, or None."""
-    if (
-        not mention.distinct
-        or mention.has_crop
-        or (mention.plot is not None and not mention.plot["individual"])
-        or (mention.count or 1) < 2
-        or mention.refinements
-    ):
-        return None
-    earlier = [
-        m
-        for m in kept
-        if m.count == mention.count
-        and not m.has_crop
-        and not m.refinements
-        and (mention.category is None or m.category in (None, mention.category))
-    ]
-    return earlier[0] if len(earlier) == 1 and len(kept) == 1 else None
-
-
-def drop_trailing_summaries(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
-    """'Navel oranges at 7 x 4 m and Moro blood oranges at 6 x 3 m, adjacent blocks of 150
-    trees each': a plural plot of no crop, closing the sentence of two or more fields of
-    named crops (uncounted, or counted as many), is the plots they are in: not more
-    fields. Its stage, health, cues, season, size and measures go to each field that
-    states none of its own. Return the fields left."""
-    for position, summary in enumerate(mentions):
-        if (
-            position < 2
-            or summary.has_crop
-            or summary.category is not None
-            or summary.plot is None
-            or not summary.plot["plural"]
-            or summary.refinements
-            or not (summary.implied_count or summary.count == position)
-        ):
-            continue
-        start, end = _sentence_of(clauses, summary.clause)
-        fields = mentions[:position]
-        if (
-            any(m.clause < start for m in fields)
-            or any(m.clause < end for m in mentions[position + 1 :])
-            or not all(
-                strong_crops(m) and (m.count or 1) == 1 and not m.refinements for m in fields
-            )
-        ):
-            continue
-        lent = [i for i in summary.items if i.role in (*_SUMMARY_ROLES, "size", "geometry")]
-        for field in fields:
-            own = {i.role for i in field.items}
-            keys = {g.key for i in field.items if i.role == "geometry" for g in i.data["geometry"]}
-            field.items.extend(
-                i
-                for i in lent
-                if (i.role != "geometry" and i.role not in own)
-                # (measures by what they measure: "150 trees each" beside "at 7 x 4 m")
-                or (i.role == "geometry" and not keys & {g.key for g in i.data["geometry"]})
-            )
-        for clause in clauses:
-            clause.mentions = [m for m in clause.mentions if m is not summary]
-        return [m for m in mentions if m is not summary]
-    return mentions
-
-
-def _sentence_of(clauses: Sequence[Clause], index: int) -> tuple[int, int]:
-    """The first clause of the sentence clause ``index`` is in, and the first after it."""
-    start = index
-    while start > 0 and link_norm(clauses[start]) not in SENTENCE_MARKS:
-        start -= 1
-    end = next(
-        (
-            c.index
-            for c in clauses[index + 1 :]
-            if c.link is not None and c.link.norm in SENTENCE_MARKS
-        ),
-        len(clauses),
-    )
-    return start, end
 
 
 def fill_counted_lists(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:

@@ -38,7 +38,8 @@ step  pass                                        module (data)
       attributes; the members a plural lists;     ``_refinements``,
       descriptions of plants named;               ``_descriptions``,
       back-references; plots said with a field;   ``_coreference``,
-      list headings                               ``_appositives``, ``_headings``
+      list headings; summaries of fields          ``_appositives``, ``_headings``,
+                                                  ``_summaries``
 11    head-less clauses' words to their fields    ``_loose``,
       (which fields a measure is said of)         ``_measures``
 12    fields of each mention, their attributes    ``_fields``
@@ -72,14 +73,10 @@ from agrirecipe.resolve._fields import (
 )
 from agrirecipe.resolve._geometry import find_geometry, hoist_counted_crops
 from agrirecipe.resolve._headings import (
-    drop_counted_summaries,
-    drop_forward_summaries,
     drop_joint_headings,
     drop_list_headings,
     drop_plural_headings,
-    drop_restated_counts,
     drop_titles,
-    drop_trailing_summaries,
     fill_counted_lists,
     lend_heading_crop,
     name_counted_plots,
@@ -148,6 +145,12 @@ from agrirecipe.resolve._structure import (
     share_leading_attributes,
     share_trailing_attributes,
     take_the_lower_count,
+)
+from agrirecipe.resolve._summaries import (
+    drop_counted_summaries,
+    drop_forward_summaries,
+    drop_restated_counts,
+    drop_trailing_summaries,
 )
 from agrirecipe.resolve._weak_varieties import promote_weak_varieties
 from agrirecipe.resolve._words import purpose_diseases, read_words
