@@ -341,7 +341,7 @@ def _closes_a_with_list(clauses: Sequence[Clause], position: int) -> Mention | N
             after = [i for i in owner.items if i.start > last_head]
             with_ = any(i.norm == "with" for i in previous.items if i.start > last_head)
             return owner if with_ and not any(i.role == "plot" for i in after) else None
-        if previous.link is None or previous.link.norm != "," or previous.mentions:
+        if previous.link is None or previous.link.norm != ",":
             return None
         if not all(
             i.role in ATTRIBUTE_ROLES or i.role in ("filler", "of", "unknown")

@@ -270,8 +270,12 @@ _FACING = re.compile(
     r"\b(?i:facing|looking)\s+(?:(?i:due|straight)\s+)?"
     r"(?P<side>(?i:north|south|east|west))(?i:wards)?\b(?!\s+(?i:of)\b)"
 )
+#: "just", "right behind": a place said closer.
+_CLOSE = r"(?:(?i:just|right|directly|straight)\s+)?"
+#: The one or two words that name what a side or a place is said of ("the Gala block").
+_NAMED = r"(?P<words>[A-Za-z][\w'-]*(?:\s+[A-Za-z][\w'-]*)?)"
 _BEYOND = re.compile(
-    r"\b(?:(?i:just|right|directly|straight)\s+)?(?i:beyond|behind)"
+    rf"\b{_CLOSE}(?i:beyond|behind)"
     r"(?=\s+(?i:them|it|the|that|those|this|these)\b)"
 )
 
@@ -431,16 +435,12 @@ def place_flanks(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
 
 
 _LAST_WORD = re.compile(r"[A-Za-z][\w'-]*(?=\s*$)")
-_BEHIND = re.compile(
-    r"\b(?:(?i:just|right|directly|straight)\s+)?(?i:behind)\s+(?P<the>(?i:the|our|my)\s+)"
-    r"(?P<words>[A-Za-z][\w'-]*(?:\s+[A-Za-z][\w'-]*)?)"
-)
+_BEHIND = re.compile(rf"\b{_CLOSE}(?i:behind)\s+(?P<the>(?i:the|our|my)\s+){_NAMED}")
 
 
 _SIDE_OF = re.compile(
     r"\b(?i:on|along|at)\s+(?i:the)\s+(?P<side>(?i:north|south|east|west))(?i:ern)?\s+"
-    r"(?i:side|edge)\s+(?i:of)\s+(?P<the>(?i:the|our|my|an?)\s+)?"
-    r"(?P<words>[A-Za-z][\w'-]*(?:\s+[A-Za-z][\w'-]*)?)"
+    rf"(?i:side|edge)\s+(?i:of)\s+(?P<the>(?i:the|our|my|an?)\s+)?{_NAMED}"
 )
 
 

@@ -434,13 +434,9 @@ def share_trailing_attributes(clauses: Sequence[Clause]) -> None:
         own = {attribute_of(i) for i in first.items}
         # ("the corn is ripe and the lettuce has mildew": two sentences, each its own; not
         # "the corn and the lettuce have mildew")
-        said_of_one = (
-            any(
-                i.norm in _SINGULAR_VERBS and last_head < i.start < min(t.start for t in trailing)
-                for i in clause.items
-            )
-            if trailing
-            else False
+        said_of_one = bool(trailing) and any(
+            i.norm in _SINGULAR_VERBS and last_head < i.start < min(t.start for t in trailing)
+            for i in clause.items
         )
         described = any(i.role in _SHARED_ROLES for i in first.items)
         if said_of_one or described:
