@@ -68,14 +68,27 @@ def test_orchards_and_sparse_fields_are_never_thinned() -> None:
     assert wheat.placement.plants_per_instance > 1
 
 
+def test_a_forty_hectare_cereal_farm_is_built_one_plant_in_seven() -> None:
+    scene = generate(
+        "Our land: 40 ha of cereals, 10 ha of vegetables and a 2 ha orchard.", resolver="hybrid"
+    ).recipe
+    cereal, _vegetables, orchard = scene.fields
+    assert cereal.geometry.area_m2 == pytest.approx(400_000, rel=0.01)
+    assert cereal.placement.plants_per_instance == 7
+    assert sum(f.drawn_plant_count() for f in scene.fields) <= DEFAULT_MAX_PLANTS
+    assert orchard.placement.plants_per_instance == 1
+    (warning,) = [w for w in scene.warnings if w.startswith(cereal.id)]
+    assert "every seventh plant along each row is drawn" in warning
+
+
 def test_a_field_too_big_even_thinned_is_refused_saying_how_much_fits() -> None:
     with pytest.raises(PromptError) as caught:
-        generate("a 40 ha wheat field", resolver="hybrid")
+        generate("an 80 ha wheat field", resolver="hybrid")
     message = str(caught.value)
     assert "cap of 10,000,000" in message
     assert f"every {MAX_PLANTS_PER_INSTANCE} plants drawn as one" in message
     fits = float(message.split("at most ")[1].split(" ha")[0])
-    assert 25 < fits < 40
+    assert 50 < fits < 80
     assert caught.value.hint is not None and "max_plants=N" in caught.value.hint
 
 

@@ -186,7 +186,7 @@ def field_specs(draw: st.DrawFn) -> FieldSpec:
             size_variation=draw(st.floats(0.0, 0.9)),
             yaw_variation_deg=draw(st.floats(0.0, 180.0)),
             # (a dense field thinned to fit the plant cap: every N-th plant drawn)
-            plants_per_instance=draw(st.sampled_from([1, 1, 2, 5])),
+            plants_per_instance=draw(st.sampled_from([1, 1, 2, 5, 10])),
         ),
         pattern=draw(
             st.sampled_from(["rows", "drilled_rows", "ridges", "double_rows_on_beds", "tree_rows"])

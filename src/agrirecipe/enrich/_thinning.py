@@ -67,4 +67,6 @@ def _dense(spec: FieldSpec) -> bool:
 
 
 def _ordinal(number: int) -> str:
-    return {2: "second", 3: "third", 4: "fourth", 5: "fifth"}.get(number, f"{number}th")
+    return {2: "second", 3: "third", 4: "fourth", 5: "fifth", 6: "sixth", 7: "seventh"}.get(
+        number, f"{number}th"
+    )
