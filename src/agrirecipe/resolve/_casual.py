@@ -18,7 +18,7 @@ from typing import Any
 import yaml
 
 from agrirecipe.resolve._geometry import number_words
-from agrirecipe.resolve._lexicon import DATA_DIR, Item
+from agrirecipe.resolve._lexicon import DATA_DIR, Item, vocabulary
 
 __all__ = ["count_said_after_crop", "expand_casual"]
 
@@ -62,6 +62,11 @@ def expand_casual(prompt: str) -> str:
     text = _crop_pictures().sub(" ", text)
     # "apples w of the pears", "onions just S of it": a compass letter before "of"
     text = _LETTER_SIDE.sub(lambda m: f"{_LETTER_SIDES[m.group('side').lower()]} of", text)
+    # "iceburg lettuce on the W side & savoy cabage on the E side": a compass letter as
+    # the side of a place
+    text = _LETTER_PLACE.sub(lambda m: _LETTER_SIDES[m.group("side").lower()], text)
+    # "a couple diff veg plots": a couple of them
+    text = _a_couple().sub("a couple of", text)
     # "cab south of the pinot": the wine trade's short name (not a tractor's cab)
     text = _CAB.sub("cabernet", text)
     text = pattern.sub(replace, text)
@@ -271,6 +276,21 @@ _ROOTSTOCK = re.compile(
 )
 _LETTER_SIDES = {"n": "north", "s": "south", "e": "east", "w": "west"}
 _LETTER_SIDE = re.compile(r"(?<=[A-Za-z] )(?P<side>[NSEWnsew]) of\b")
+_LETTER_PLACE = re.compile(
+    r"(?<=\b[Tt]he )(?P<side>[NSEWnsew])(?= (?i:side|end|half|edge|corner|part)s?\b)"
+)
+
+
+@functools.cache
+def _a_couple() -> re.Pattern[str]:
+    """ "a couple" said without "of" before plots ("a couple diff veg plots"), up to two
+    words before the plot noun."""
+    nouns = "|".join(
+        re.escape(str(n)) for n in sorted(vocabulary()["plot_nouns"], key=len, reverse=True)
+    )
+    return re.compile(rf"\b(?i:a couple)(?= (?!of\b)(?:[A-Za-z-]+ ){{0,2}}(?i:{nouns})s?\b)")
+
+
 _CAB = re.compile(
     r"(?<!tractor )(?<!truck )(?<!lorry )(?<!combine )(?<!sprayer )(?<!digger )(?<!the )"
     r"(?<!my )(?<!its )(?<!a )\b(?i:cab)\b(?! (?i:sav|sauv|franc)\b)"

@@ -71,6 +71,36 @@ def _placed_first(clauses: Sequence[Clause], clause: Clause) -> bool:
     )
 
 
+#: The words that say what "it" is ("it's a 3 hectare field", "it is a 2 ha block").
+_IT_IS = (("it s",), ("it", "is"), ("its",), ("it", "s"))
+
+
+def _it_is_a(mention: Mention) -> bool:
+    """Whether the mention says what the field named is, a plot of no crop of its own
+    ("it's a 3 hectare field with power lines across the middle")."""
+    words = [i.norm for i in mention.items]
+    opening = next((o for o in _IT_IS if tuple(words[: len(o)]) == o), None)
+    return (
+        opening is not None
+        and words[len(opening) : len(opening) + 1] in (["a"], ["an"])
+        and not mention.has_crop
+        and mention.category is None
+        and bool(mention.heads)
+        and all(h.role == "plot" for h in mention.heads)
+    )
+
+
+#: Sides a field is said on of something named before ("left of it").
+_SIDE_WORDS = frozenset({"left", "right", "north", "south", "east", "west"})
+
+
+def _on_a_side_of_it(mention: Mention) -> bool:
+    """Whether the mention opens with a side of what a pronoun names ("Left of it is our
+    Bintje"): one part of what was named before."""
+    words = [i.norm for i in mention.items[:3]]
+    return len(words) == 3 and words[0] in _SIDE_WORDS and words[1:] == ["of", "it"]
+
+
 def _placed_against_another(clauses: Sequence[Clause], clause: Clause, mention: Mention) -> bool:
     """Whether the mention is placed against a field of another crop named right after it
     ("Two veg plots ..., lettuce directly north of the cabbage": one member each)."""
@@ -160,12 +190,17 @@ def merge_coreferences(
             continue
         # "the carrots ...", "fire blight on the pears", "the Roma one"; "one big field
         # of it" (of the crop just named)
+        it_is_a = _it_is_a(mention)
         is_definite = (
             (first is not None and first.norm in definite)
             or definite_before_head(clause, mention)
             or _of_it(mention)
             or _bare_one(kept, mention)
+            or it_is_a
         )
+        if it_is_a:
+            # "Durum wheat, ears out ...; it's a 3 hectare field": the field named, its size
+            mention.count = None
         if (
             is_definite
             and mention.count == 1
@@ -261,6 +296,14 @@ def merge_coreferences(
                 and names_a_variety(mention)
                 and _placed_past_a_pronoun(clauses, clause)
             )
+            # ("Rows of capsicum ..., and the Jalapeño beds beside them": a kind placed
+            # against the plants named before is not them)
+            and not (
+                names_a_variety(mention)
+                and bool(kept)
+                and bool(strong_crops(kept[-1]))
+                and _placed_by_a_pronoun(clauses, clause)
+            )
         )
         if not anaphoric:
             if first is not None and first.norm == "both" and mention.count is None:
@@ -294,6 +337,9 @@ def merge_coreferences(
                 # ("Two fields either side of the track. On the left is our Bintje; on
                 # the right the Nantes carrots": each placed in its own part)
                 or (bare and any(i.role == "zone" for i in mention.items))
+                # ("Two fields either side of the concrete farm track. Left of it is our
+                # Bintje, ...; right of it the Nantes carrots")
+                or (bare and _on_a_side_of_it(mention))
             )
             and not summary
             and (first is None or first.norm not in EACH)
@@ -513,6 +559,22 @@ def _placed_past_a_pronoun(clauses: Sequence[Clause], clause: Clause) -> bool:
         # field right before it)
         and clause.index >= 2
         and not clauses[clause.index - 2].mentions
+    )
+
+
+def _placed_by_a_pronoun(clauses: Sequence[Clause], clause: Clause) -> bool:
+    """Whether the clause after ``clause`` places its field against plants named before
+    it by a plural pronoun ("the Jalapeño beds beside them still only flowering")."""
+    if clause.index + 1 >= len(clauses):
+        return False
+    following = clauses[clause.index + 1]
+    link = following.link
+    return (
+        link is not None
+        and link.role == "relation"
+        and not following.mentions
+        and bool(following.items)
+        and following.items[0].norm in ("them", "those")
     )
 
 

@@ -256,9 +256,15 @@ class MentionBuilder:
                     if not weak
                 )
             return True
-        if mention.category is not None:
+        category = mention.category or (
+            mention.plot["category"]
+            if mention.plot is not None and mention.plot.get("strict", False)
+            else None
+        )
+        if category is not None:
+            # ("a vegetable garden to the east, ..., wheat north of the orchard": two fields)
             interpretations = [
-                i for i in interpretations if self.crop_categories.get(i[0]) == mention.category
+                i for i in interpretations if self.crop_categories.get(i[0]) == category
             ]
             if not interpretations:
                 return False

@@ -198,6 +198,8 @@ def _names_another_crop(
 
 #: Words that open a place after a word for plants ("the vines on the hill").
 _PLACING = frozenset({"on", "in", "at", "along", "up", "down", "across", "over", "by", "beyond"})
+#: Words that place what follows the scenery they open ("behind the barn the vines").
+_FRONTED_PLACING = frozenset({"behind", "beyond", "past", "across", "over"})
 
 
 def _placed_crop_of_its_own(
@@ -215,14 +217,23 @@ def _placed_crop_of_its_own(
     earlier = [_may_hold(m, crop_categories) for c in clauses[:position] for m in c.mentions]
     head = max(h.end for h in mention.heads)
     following = clauses[position + 1] if position + 1 < len(clauses) else None
+    # ("..., then a hawthorn hedge, and past the hedge the vines go up the slope", "and
+    # behind the barn the vines": placed past scenery, a place of their own)
+    first_head = min(h.start for h in mention.heads)
+    before = [i for i in mention.items if i.end <= first_head]
+    past_scenery = any(i.scenery for i in before) and (
+        (clause.link is not None and clause.link.role == "relation")
+        or (bool(before) and before[0].norm in _FRONTED_PLACING)
+    )
     return (
         clause.link is not None
-        and clause.link.role == "conjunction"
+        and (clause.link.role == "conjunction" or past_scenery)
         and bool(crops)
         and bool(earlier)
         and all(e and not e & crops for e in earlier)
         and (
-            any(i.start >= head and i.norm in _PLACING for i in mention.items)
+            past_scenery
+            or any(i.start >= head and i.norm in _PLACING for i in mention.items)
             # "apple trees north of the carrots, and the vines south of the carrots"
             or (
                 following is not None
@@ -424,7 +435,22 @@ def _held_by_scenery(clause: Clause, mention: Mention) -> bool:
     before = [i for i in clause.items if i.end <= head]
     while before and before[-1].role in ("unknown", "filler") and "scenery" not in before[-1].data:
         before.pop()  # "split", "ripe-looking"
-    return len(before) >= 2 and before[-1].role == "of" and "scenery" in before[-2].data
+    if len(before) >= 2 and before[-1].role == "of" and "scenery" in before[-2].data:
+        return True
+    # "some fruit already in bins": fruit put in a container
+    last = max(h.end for h in mention.heads)
+    after = [i.norm for i in clause.items if i.start >= last]
+    while after and after[0] in _ON_THE_WAY:
+        after.pop(0)
+    while after and after[0] in ("a", "an", "the", "some", "their"):
+        after.pop(0)
+    return bool(after) and after[0] in reader_words("produce_containers")
+
+
+#: Words between fruit and the container it is put in ("fruit already in bins").
+_ON_THE_WAY = frozenset(
+    {"already", "now", "still", "being", "put", "picked", "packed", "in", "into"}
+)
 
 
 def _continues_with(previous: Clause, mention: Mention) -> bool:

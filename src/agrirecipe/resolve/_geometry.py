@@ -595,6 +595,13 @@ _COUNTED_CROP_ROWS = re.compile(
     r"north|south|east|west)\s|\d|\())))\b"
 )
 
+#: "30 onion beds": ten or more beds of a crop are one field's beds, whatever follows.
+_MANY_CROP_BEDS = re.compile(
+    r"(?<![\w.,])(?P<n>[1-9]\d+)\s+"
+    r"(?P<mod>(?i:single|double|twin|raised|flat|mulched)\s+)?"
+    r"(?P<words>[A-Za-z][\w'’-]*(?:\s+[A-Za-z][\w'’-]*)?)\s+(?P<noun>(?i:beds|ridges))\b"
+)
+
 _PLANT_UNITS = frozenset({"trees", "tree", "vines", "vine", "plants", "plant", "bushes", "palms"})
 #: "40 Regina cherry trees and 60 Bing": a count of plants, then one said without its noun.
 _ELLIPTIC_PLANTS = re.compile(
@@ -710,7 +717,9 @@ def hoist_counted_crops(text: str, tag: Callable[[str], Sequence[Any]]) -> str:
     text = _ELLIPTIC_COUNT.sub(r"\g<head> and \g<n> \g<noun> of", text)
     text = _ROWS_OF_CROP_AT.sub(crop_rows(" {tail}"), text)
     text = _SINGLE_CROP_ROW.sub(single_row, text)
-    return _COUNTED_CROP_ROWS.sub(crop_rows(""), text)
+    text = _COUNTED_CROP_ROWS.sub(crop_rows(""), text)
+    # "west of them 30 onion beds, also 1.6 m": more beds than a scene has plots of a crop
+    return _MANY_CROP_BEDS.sub(crop_rows(""), text)
 
 
 #: Words after "N <crop> beds" that place them: only a larger number counts beds there

@@ -224,7 +224,9 @@ def _heads_counted_plots(clauses: Sequence[Clause], mention: Mention) -> bool:
     # ("Market garden, two plots: tomatoes ... and peppers": a plot word for any crop)
     holds_any = plot is not None and not heading_crop and not options
     return (
-        not plots.has_crop
+        # ("Plant-counting model test field, three wheat plots stacked north to south:
+        # Winter Wheat, then Spelt, then Durum": plots of a crop the heading may hold)
+        (not plots.has_crop or holds_any or strong_crops(plots) <= options)
         and (plots.count or 0) >= 2
         and len(members) >= 2
         and (bool(options) or holds_any)

@@ -361,7 +361,7 @@ def _crop_phrase(following: str, tag: Callable[[str], Sequence[Item]]) -> str:
 _LEADING = re.compile(
     r"(?<!in )(?<!on )(?<!of )(?<!at )(?<!to )"
     r"(?:\b(?i:the)\s+|(?:^|(?<=[,;.:]\s)))(?P<side>(?i:north|south|east|west|top|bottom|upper|lower))(?i:ern)?\s+"
-    r"(?i:plot|block|field|one|part|half|strip|parcel|section|paddock|area)\b\s*"
+    r"(?P<noun>(?i:plot|block|field|one|part|half|strip|parcel|section|paddock|area))\b\s*"
     r"(?:(?i:is|are|has|holds|gets|grows|has got)\s+|[:\-–—]\s*)?"
     # (the rest runs to a mark, past a decimal point or a thousands comma: "drilled in
     # 12.5 cm rows", "at 80,000 plants/ha"; or to the next side's plot: "the south block
@@ -384,10 +384,7 @@ _SIDE_MEMBER = re.compile(
 def place_leading_directions(text: str) -> str:
     """``text`` with "the east plot is X" written "X in the eastern block", and "X in the
     north orchard" written "X in the north block" (where X is, not one more field)."""
-    text = _LEADING.sub(
-        lambda m: f"{m.group('rest').rstrip()} in the {_SIDES[m.group('side').lower()]}ern block",
-        text,
-    )
+    text = _LEADING.sub(_placed_on_its_side, text)
     if len({m.group("side").lower() for m in _SIDE_MEMBER.finditer(text)}) >= 2:
         # "the western block at 2.75 m between rows, the eastern block at 3 m": members
         # told apart by their sides, each said after its measures
@@ -399,6 +396,17 @@ def place_leading_directions(text: str) -> str:
             text,
         )
     return _IN_SIDE_PLOT.sub(lambda m: f"{m.group('at')} the {m.group('side').lower()} block", text)
+
+
+def _placed_on_its_side(match: re.Match[str]) -> str:
+    """ "the east plot is X" as "X in the eastern block"; "the top field is X" as "X in the
+    top field", a zone read with the farm's other zones ("...; below it maize; and at the
+    bottom, carrots")."""
+    side = match.group("side")
+    rest = match.group("rest").rstrip()
+    if side.lower() in _OPPOSITE_SIDES:
+        return f"{rest} in the {side.lower()}ern block"
+    return f"{rest} in the {side} {match.group('noun')}"
 
 
 # "Durondeau pears in the north orchard", "Cos on the north beds": where the pears are

@@ -683,5 +683,7 @@ def _plot_spec(
         "options": tuple(options),
         "tolerates": tuple(tolerates),
         "category": category,
+        # ("vegetable garden": a plot whose name says its category holds no other crop)
+        "strict": bool(spec.get("strict", False)) and category is not None,
         "narrows": bool(options) or category is not None,
     }

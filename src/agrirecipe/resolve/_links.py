@@ -288,7 +288,10 @@ def following_list(
     for index in range(position + 1, len(clauses)):
         clause = clauses[index]
         link = clause.link.norm if clause.link is not None else None
-        if group and not clause.mentions and (bracket or link in ("(", ")")):
+        # ("Gros Michel bananas (Big Mike, as granddad calls them), then ...": the member
+        # before it named again in the bracket)
+        again = all(any(m is g for g in group) for m in clause.mentions)
+        if group and again and (bracket or link in ("(", ")")):
             # "a tomato strip (6 rows, 1.5 m apart), then ...": what a bracket says of
             # the member before it
             bracket = link != ")"

@@ -51,6 +51,7 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
     """Give each head-less clause's attributes to its field(s); return scene-wide items."""
     scene: list[Item] = []
     carried: tuple[int, list[Mention]] | None = None  # the last clause's own targets
+    said_all = -1  # the last clause whose words were said of every field ("both ...")
     for position, clause in enumerate(clauses):
         _detach_trailing_all(clause)
         if position and mentions:
@@ -91,9 +92,10 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
             for mention in pair:
                 mention.items.extend(i for i in attributes if i.role != "all")
             continue
-        if says_all:
+        if says_all or _goes_on_saying_all(clauses, position, said_all):
             owner = bracketed_by(clauses, position)  # "two lettuce plots (10 rows each"
             (owner.items if owner is not None else scene).extend(attributes)
+            said_all = position
             continue
         several = len(mentions) > 1 or any((m.count or 1) > 1 for m in mentions)
         if not before or (several and not after):
@@ -416,6 +418,20 @@ def _described_crop(clause: Clause, before: Sequence[Mention]) -> list[Mention]:
         return []
     fields = [m for m in before if strong_crops(m) & crops]
     return fields[-1:]
+
+
+def _goes_on_saying_all(clauses: Sequence[Clause], position: int, said_all: int) -> bool:
+    """ "winter wheat next to durum, both still green and young": words joined by "and" to
+    words said of every field are said of every field too."""
+    clause = clauses[position]
+    return (
+        said_all == position - 1
+        and said_all >= 0
+        and clause.link is not None
+        and clause.link.norm == "and"
+        and not clause.mentions
+        and not any(c.mentions for c in clauses[position + 1 :])
+    )
 
 
 def _about_the_others(clause: Clause) -> bool:

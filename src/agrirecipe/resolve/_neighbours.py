@@ -7,7 +7,8 @@ is scenery, "riesling in the middle w/ pinot noir on one side & cabernet on the 
 is "riesling between pinot noir and cabernet", "on the 20 ha east field" is "in the
 east, 20 ha", "the polytunnel of cherry tomatoes" is a plot that can be placed, and
 "flanked on both sides by wheat drilled at 12.5 cm" is "flanked by wheat on both sides
-drilled at 12.5 cm".
+drilled at 12.5 cm", and "The vineyard north of it is Pinot Nero" is "The vineyard is
+Pinot Nero north of it".
 """
 
 from __future__ import annotations
@@ -16,10 +17,11 @@ import functools
 import re
 from collections.abc import Callable, Sequence
 
-from agrirecipe.resolve._lexicon import Item, scenery_words
+from agrirecipe.resolve._lexicon import Item, scenery_words, vocabulary
 from agrirecipe.resolve._links import OPPOSITE
 
 __all__ = [
+    "name_the_placed_plot",
     "place_around_a_centre",
     "place_by_cover",
     "place_divided_plots",
@@ -498,3 +500,35 @@ def place_around_a_centre(text: str, tag: Callable[[str], Sequence[Item]]) -> st
             f"{text[: match.start()]}at the {match.group('side').lower()} end{text[match.end() :]}"
         )
     return text
+
+
+@functools.cache
+def _placed_plot() -> re.Pattern[str]:
+    """ "the vineyard north of it is Pinot Nero": a plot, its place against what a pronoun
+    names, then what it grows."""
+    nouns = "|".join(
+        re.escape(str(n)) for n in sorted(vocabulary()["plot_nouns"], key=len, reverse=True)
+    )
+    return re.compile(
+        rf"\b(?P<plot>(?i:the)\s+(?i:{nouns}))\s+"
+        r"(?P<place>(?:(?i:just|right|directly|immediately)\s+)?"
+        r"(?i:(?:north|south|east|west)\s+of|next\s+to|beside|behind|beyond|alongside))\s+"
+        r"(?P<pronoun>(?i:it|them))\s+(?P<verb>(?i:is|are))\s+"
+        r"(?P<crop>[A-Za-z](?:[^,;.:!?()]|[.,](?=\d))*?)(?=\s*(?:[;:!?()]|[.,](?!\d)|$))"
+    )
+
+
+def name_the_placed_plot(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
+    """``text`` with "The vineyard north of it is Pinot Nero" written "The vineyard is Pinot
+    Nero north of it": the plot placed is the one that grows the crop the verb names (not
+    "the block north of it is ripe")."""
+
+    def named(match: re.Match[str]) -> str:
+        if not any(i.has("crop", "variety") for i in tag(match.group("crop"))):
+            return match.group(0)
+        return (
+            f"{match.group('plot')} {match.group('verb')} {match.group('crop')} "
+            f"{match.group('place')} {match.group('pronoun')}"
+        )
+
+    return _placed_plot().sub(named, text)

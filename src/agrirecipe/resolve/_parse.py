@@ -116,6 +116,7 @@ from agrirecipe.resolve._measures import (
     share_each_measures,
 )
 from agrirecipe.resolve._neighbours import (
+    name_the_placed_plot,
     place_around_a_centre,
     place_by_cover,
     place_divided_plots,
@@ -222,6 +223,7 @@ class PromptReader(FieldReading):
         text = place_around_a_centre(text, tag)
         text = place_trailing_directions(place_leading_directions(text))
         text = place_walked_orders(place_neighbouring_plots(place_divided_plots(text)))
+        text = name_the_placed_plot(text, tag)
         text = place_by_cover(place_sides(place_flanks(text, tag)))
         text = hoist_counted_crops(count_said_after_crop(text, tag), tag)
         for note in labels:

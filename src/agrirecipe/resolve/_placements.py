@@ -19,7 +19,9 @@ from agrirecipe.resolve._words import SENTENCE_MARKS
 
 __all__ = [
     "a_distance",
+    "between_said_last",
     "directed_neighbours",
+    "fronted_between",
     "fronted_pair",
     "placed_by_the_middle",
     "placement_pairs",
@@ -206,6 +208,70 @@ def fronted_pair(clauses: Sequence[Clause], position: int) -> tuple[Mention, Men
             return None
         subject, target = following.mentions[0], clause.mentions[0]
     return None if subject is target else (subject, target)
+
+
+#: Marks after which a clause opens a sentence.
+_OPENINGS = SENTENCE_MARKS | {":"}
+
+
+def fronted_between(
+    clauses: Sequence[Clause], position: int
+) -> tuple[Mention, Mention, Mention] | None:
+    """'Between the orchard and the vines, a vegetable garden': a "between" that opens its
+    sentence, its two sides joined by "and", then the field between them (subject, side,
+    side)."""
+    clause = clauses[position]
+    link = clause.link
+    if (
+        link is None
+        or link.role != "between"
+        or len(clause.mentions) != 1
+        or (clause.mentions[0].count or 1) != 1
+        or position + 2 >= len(clauses)
+    ):
+        return None
+    if position and (
+        clauses[position - 1].items or link_norm(clauses[position - 1]) not in _OPENINGS
+    ):
+        return None
+    other, placed = clauses[position + 1], clauses[position + 2]
+    if (
+        link_norm(other) != "and"
+        or len(other.mentions) != 1
+        or link_norm(placed) not in (",", ":")
+        or len(placed.mentions) != 1
+    ):
+        return None
+    subject, sides = placed.mentions[0], (clause.mentions[0], other.mentions[0])
+    if any(subject is side for side in sides) or sides[0] is sides[1]:
+        return None
+    return subject, sides[0], sides[1]
+
+
+def between_said_last(
+    clauses: Sequence[Clause], position: int
+) -> tuple[Mention, Mention, Mention] | None:
+    """'a tomato plot and a pepper plot, with a lettuce strip in between': a "between"
+    that ends its sentence, after the field it places and the two named before that
+    (subject, side, side)."""
+    clause = clauses[position]
+    link = clause.link
+    if link is None or link.role != "between" or clause.mentions or clause.items:
+        return None
+    following = clauses[position + 1] if position + 1 < len(clauses) else None
+    if following is not None and link_norm(following) not in _OPENINGS:
+        return None
+    named: list[Mention] = []
+    for earlier in reversed(clauses[:position]):
+        for mention in reversed(earlier.mentions):
+            if all(mention is not m for m in named):
+                named.append(mention)
+        if link_norm(earlier) in _OPENINGS:
+            break
+    if len(named) != 3 or any((m.count or 1) != 1 for m in named):
+        return None
+    subject, second, first = named
+    return subject, first, second
 
 
 def _aside(clause: Clause) -> bool:

@@ -36,7 +36,9 @@ from agrirecipe.resolve._links import (
 )
 from agrirecipe.resolve._placements import (
     a_distance,
+    between_said_last,
     directed_neighbours,
+    fronted_between,
     fronted_pair,
     placed_by_the_middle,
     placement_pairs,
@@ -62,6 +64,25 @@ __all__ = ["read_relations"]
 #: Words of a clause that places a field by scenery alone ("the Royal Gala block north of
 #: the packhouse is ripe": the look goes on describing the block).
 _SAID_OF_A_LANDMARK = frozenset({"filler", "non_agricultural", "stage", "health", "season", "cue"})
+
+
+#: Words that open scenery said on the way to a place ("across a narrow ditch").
+_ON_THE_WAY = frozenset({"across", "over", "past", "beyond", "through", "behind"})
+
+
+def _pronoun_past_an_aside(clauses: Sequence[Clause], position: int) -> bool:
+    """Whether clause ``position`` places against a pronoun ("right next to it") right
+    after scenery said on the way ("across a narrow ditch"), with a field after it."""
+    clause, previous = clauses[position], clauses[position - 1]
+    following = clauses[position + 1] if position + 1 < len(clauses) else None
+    return (
+        [i.norm for i in clause.items] in (["it"], ["them"])
+        and bool(previous.items)
+        and previous.items[0].norm in _ON_THE_WAY
+        and following is not None
+        and bool(following.mentions)
+        and any(c.mentions for c in clauses[: position - 1])
+    )
 
 
 def read_relations(
@@ -163,6 +184,9 @@ def read_relations(
             and any(i.scenery for i in clauses[position - 1].items)
             # (not "bananas along the stream to the east of them": scenery placed itself)
             and _not_placed(clauses[position - 1])
+            # (nor "a maize field ... and, across a narrow ditch right next to it, carrots":
+            # the scenery said on the way, "it" the field)
+            and not _pronoun_past_an_aside(clauses, position)
             # (not "in two polytunnels next to each other: tunnel 1 is Elsanta, ...")
             and not (link.role == "trailer" and len(listed_after(clauses, position)) >= 2)
             # (nor "From the road heading north you cross a hedge, then the strawberry
@@ -230,6 +254,7 @@ def read_relations(
                 (placed_by := clauses[position - 1].link) is None
                 or placed_by.role not in ("relation", "trailer", "between")
             )
+            and not _pronoun_past_an_aside(clauses, position)
         ):
             # "..., kids in yellow hats weeding between them": scenery placed, no field
             trace.append(
@@ -351,6 +376,12 @@ def read_relations(
             # "one field of wheat, one of maize, and a second wheat field beside the
             # first": the first field of the same crop
             pairs = (link.data.get("value", "next_to"), before[-1], (earlier,))
+        elif (between := between_said_last(clauses, position)) is not None:
+            # "a tomato plot and a pepper plot, with a lettuce strip in between"
+            pairs = ("between", between[0], between[1:])
+        elif (between := fronted_between(clauses, position)) is not None:
+            # "Between the orchard and the vines, a vegetable garden"
+            pairs = ("between", between[0], between[1:])
         elif (fronted := fronted_pair(clauses, position)) is not None:
             # "...; west of the peppers an onion plot": the field after the object
             pairs = (

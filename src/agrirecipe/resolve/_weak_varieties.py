@@ -37,15 +37,14 @@ def promote_weak_varieties(clauses: Sequence[Clause], builder: MentionBuilder) -
     # ("The big pivot circle is Russet, 50 ha, ...": the only name of a crop in a prompt
     # that says how big or how grown its field is; not "Flint walls around the yard")
     # ("Cos ready to cut, ..., the harvest rig working the far end of the field": the
-    # field named again by "the" is the one the prompt opened with)
+    # field named again by "the" is the one the prompt opened with; "Freshly planted
+    # Sonata runers ..., only a few leaves each. A trailer of plant trays at the end of
+    # the field.")
     alone = (
         all(_the_field(c, m) for c in clauses for m in c.mentions)
         and sum(1 for c in clauses for i in c.loose if i.role == "weak_variety") == 1
         and (
-            (
-                not any(c.mentions for c in clauses)
-                and any(i.role in ("size", "geometry", "stage") for c in clauses for i in c.items)
-            )
+            any(i.role in ("size", "geometry", "stage") for c in clauses for i in c.items)
             or _opens_a_look(clauses)
         )
     )
@@ -190,7 +189,13 @@ def _promote_into_plot(clauses: Sequence[Clause], clause: Clause, supported: set
         return
     ordered = sorted(clause.items, key=lambda i: i.start)
     for index, item in enumerate(ordered):
-        opens = index == 0 and item.tokens[0].capitalised
+        # ("Plot 1 Iceberg, plot 2 Lollo Rosso, plot 3 Cos": right after a plot's label)
+        labelled = (
+            index >= 2
+            and ordered[index - 2].role == "plot"
+            and (ordered[index - 1].norm.isdigit() or len(ordered[index - 1].norm) == 1)
+        )
+        opens = (index == 0 and item.tokens[0].capitalised) or labelled
         if item.role not in ("weak_variety", "filler") or not (
             opens or (index > 0 and ordered[index - 1].role == "of")
         ):
