@@ -118,6 +118,7 @@ def make_spec(
     placement: Placement,
     pattern: str,
     planted: tuple[float, float] | None = None,
+    plant_count: int | None = None,
 ) -> FieldSpec:
     agronomy = Agronomy(
         planting_pattern=pattern,  # type: ignore[arg-type]
@@ -151,6 +152,7 @@ def make_spec(
             rotation_deg=rotation,
             headland_m=headland,
             planted_m=planted,
+            plant_count=plant_count,
         ),
         placement=placement,
     )
@@ -171,6 +173,7 @@ def field_specs(draw: st.DrawFn) -> FieldSpec:
     row_spacing = max(row_spacing, width / 300)
     if rows_per_bed > 1:
         bed_row_spacing = min(bed_row_spacing, 0.99 * row_spacing / (rows_per_bed - 1))
+    stride = draw(st.sampled_from([1, 1, 2, 5, 10]))
     return make_spec(
         width=width,
         length=length,
@@ -180,13 +183,15 @@ def field_specs(draw: st.DrawFn) -> FieldSpec:
         rows_per_bed=rows_per_bed,
         bed_row_spacing=bed_row_spacing,
         rotation=draw(st.sampled_from([0.0, 30.0, -90.0, 135.5, 180.0])),
+        # a stated count that leaves the last row short ("250 trees in 18 rows"), or none
+        plant_count=draw(st.none() | st.integers(1, 5000)) if stride == 1 else None,
         placement=Placement(
             jitter_m=draw(st.floats(0.0, 0.2)),
             missing_rate=draw(st.sampled_from([0.0, 0.05, 0.3])),
             size_variation=draw(st.floats(0.0, 0.9)),
             yaw_variation_deg=draw(st.floats(0.0, 180.0)),
             # (a dense field thinned to fit the plant cap: every N-th plant drawn)
-            plants_per_instance=draw(st.sampled_from([1, 1, 2, 5, 10])),
+            plants_per_instance=stride,
         ),
         pattern=draw(
             st.sampled_from(["rows", "drilled_rows", "ridges", "double_rows_on_beds", "tree_rows"])
@@ -223,7 +228,9 @@ def test_kernel_and_numpy_path_agree_on_any_field(spec: FieldSpec, seed: int) ->
 def test_nominal_grid_matches_the_recipe_count(spec: FieldSpec) -> None:
     (params,) = field_parameters(recipe_of(spec, 0))
     beds, rows_per_bed, per_row, _, _ = plant_grid(params)
-    assert beds * rows_per_bed * per_row == spec.drawn_plant_count()
+    limit = spec.geometry.plant_count
+    grid = beds * rows_per_bed * per_row
+    assert (grid if limit is None else min(grid, limit)) == spec.drawn_plant_count()
     without_gaps = dict(params, missing_rate=0.0)
     assert len(place_field(without_gaps)) == spec.drawn_plant_count()
     if spec.placement.plants_per_instance == 1:

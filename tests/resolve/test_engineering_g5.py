@@ -193,7 +193,8 @@ def test_a_count_of_plants_in_rows_of_a_stated_length_fills_whole_rows() -> None
     )
     (field,) = scene.recipe.fields
     assert field.row_length_m == pytest.approx(100)
-    assert field.row_count == 5  # 201 positions a row: 5 rows hold the 1,000
+    assert field.row_count == 5  # 201 positions a row: 5 rows hold the 1,000 ...
+    assert field.nominal_plant_count == 1000  # ... the last one short
     assert any("do not fill 100 m rows evenly" in w for w in scene.recipe.warnings)
 
 

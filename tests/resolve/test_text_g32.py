@@ -15,6 +15,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from agrirecipe import generate
+from agrirecipe.layout import field_parameters, place_field, place_field_array
 from agrirecipe.recipe import SceneRecipe
 
 NamedRelations = set[tuple[str, str, tuple[str, ...]]]
@@ -302,3 +303,21 @@ def test_a_field_in_between_said_last(
         "lettuce strip in between; rows lengthwise, N-S."
     )
     assert named_relations(prompt) == {("between", "Lettuce", ("Tomato", "Pepper"))}
+
+
+def test_a_stated_count_that_does_not_fill_whole_rows_leaves_the_last_one_short() -> None:
+    scene = recipe(
+        "Bing cherries at harvest in June, 250 trees in 18 rows, 4.9 m between rows and 2.7 m "
+        "between trees, rows NW-SE."
+    )
+    (bing,) = scene.fields
+    assert bing.row_count == 18
+    assert bing.nominal_plant_count == bing.geometry.plant_count == 250
+    # every engine draws exactly those: the kernel stops at the 250th position
+    (params,) = field_parameters(scene)
+    assert len(place_field(dict(params, missing_rate=0.0))) == 250
+    assert len(place_field_array(dict(params, missing_rate=0.0))[0]) == 250
+    assert any("the last one short" in w for w in scene.warnings)
+    # a count that fills whole rows leaves no limit
+    (gala,) = recipe("300 Gala trees in 10 rows").fields
+    assert gala.nominal_plant_count == 300 and gala.geometry.plant_count is None

@@ -169,6 +169,7 @@ def _changed_field(
                 "size_m": plan.size_m,
                 "headland_m": plan.headland_m,
                 "planted_m": plan.planted_m,
+                "plant_count": plan.plant_count,
                 "rotation_deg": plan.rotation_deg
                 if "row_bearing_deg" in values
                 else geometry.rotation_deg,

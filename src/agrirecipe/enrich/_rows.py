@@ -65,6 +65,9 @@ class RowPlan:
     #: The planted block when stated counts fill less than a stated field ("10 rows in a
     #: 25 x 60 m plot"): width and length inside the headland; None when rows fill it.
     planted_m: tuple[float, float] | None = None
+    #: A stated plant count that leaves the last row short ("250 trees in 18 rows"): the
+    #: planting positions after it stay empty; None when the rows hold exactly the count.
+    plant_count: int | None = None
     warnings: list[str] = field(default_factory=list)
 
     def agronomy_update(self) -> dict[str, float | int]:
@@ -253,15 +256,17 @@ def plan_rows(
 
     # Along the rows: a stated length, plants per row, or a count of plants.
     count = stated.get("plant_count")
+    # (a count that does not fill whole rows leaves the last row short: exactly that many)
+    short: int | None = None
     if count is not None and per_row is None and bed_count is None and length_rows is not None:
         # "1,000 tomato plants in 100 m rows": as many rows of that length as the plants fill
         along = math.floor(length_rows / in_row + 1e-9) + 1
         bed_count = max(1, math.ceil(int(count) / (along * rows_per_bed)))
         if bed_count * rows_per_bed * along != int(count):
+            short = int(count)
             warnings.append(
                 f"{label}: {int(count)} plants do not fill {length_rows:g} m rows evenly; "
-                f"planted as {bed_count * rows_per_bed} rows of {along} "
-                f"({bed_count * rows_per_bed * along} plants)"
+                f"planted as {bed_count * rows_per_bed} rows of {along}, the last one short"
             )
     elif count is not None and per_row is None:
         bed_count, per_row = _split_count(
@@ -274,6 +279,8 @@ def plan_rows(
             label,
             warnings,
         )
+        if bed_count * rows_per_bed * per_row != int(count):
+            short = int(count)
     if length_rows is not None:
         usable_l = length_rows
     elif per_row is not None:
@@ -348,6 +355,7 @@ def plan_rows(
         headland_m=headland,
         rotation_deg=rotation,
         planted_m=planted_m,
+        plant_count=short,
         stated=names,
         warnings=warnings,
     )
@@ -392,7 +400,7 @@ def _split_count(
         if rows * per_row != count:
             warnings.append(
                 f"{label}: {count} plants do not fill {rows} rows evenly; planted as {rows} rows "
-                f"of {per_row} ({rows * per_row} plants)"
+                f"of {per_row}, the last one short"
             )
         return bed_count, per_row
     target = shape_m[0] / shape_m[1]  # width / length of the crop's usual field
@@ -413,7 +421,7 @@ def _split_count(
     per_row = math.ceil(count / (beds * rows_per_bed))
     warnings.append(
         f"{label}: {count} plants make no even block; planted as {beds * rows_per_bed} rows of "
-        f"{per_row} ({beds * rows_per_bed * per_row} plants)"
+        f"{per_row}, the last one short"
     )
     return beds, per_row
 

@@ -62,6 +62,8 @@ def thin_to_fit(fields: Sequence[FieldSpec], cap: int) -> tuple[list[FieldSpec],
 
 
 def _dense(spec: FieldSpec) -> bool:
+    if spec.geometry.plant_count is not None:
+        return False  # a stated count of plants is drawn whole
     width, length = spec.geometry.size_m
     return spec.nominal_plant_count / max(width * length / 10_000.0, 1e-9) > DENSE_PLANTS_PER_HA
 

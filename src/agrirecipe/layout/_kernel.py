@@ -145,10 +145,15 @@ def iter_field_plants(
     draw = random.Random(int(params["seed"])).random
     sqrt3 = KERNEL_SQRT3
     min_scale = KERNEL_MIN_SCALE
+    # A stated count that does not fill whole rows: the positions after it stay empty.
+    limit = params.get("plant_count")
+    last = beds * rows_per_bed * per_row if limit is None else int(limit)
     for bed in range(beds):
         for row in range(rows_per_bed):
             local_x = x_start + bed * row_spacing + row * bed_row_spacing
             for step in range(per_row):
+                if (bed * rows_per_bed + row) * per_row + step >= last:
+                    return
                 local_y = y_start + step * in_row
                 u_missing, u_x, u_y, u_yaw, u_scale = draw(), draw(), draw(), draw(), draw()
                 # A field keeps its first plant: a tiny plot is never left empty.

@@ -48,7 +48,10 @@ def field_seed(recipe_seed: int, field_id: str) -> int:
 
 def _parameters(spec: FieldSpec, recipe_seed: int) -> dict[str, Any]:
     geometry, agronomy, placement = spec.geometry, spec.agronomy, spec.placement
+    # ("250 trees in 18 rows": the stated count, the last row short)
+    counted = {} if geometry.plant_count is None else {"plant_count": geometry.plant_count}
     return {
+        **counted,
         "id": spec.id,
         "seed": field_seed(recipe_seed, spec.id),
         "origin_m": [geometry.origin_m[0], geometry.origin_m[1]],
@@ -95,6 +98,9 @@ def place_field_array(
     beds, rows_per_bed, per_row, x_start, y_start = _kernel.plant_grid(params)
     terms = _kernel.placement_terms(params)
     count = beds * rows_per_bed * per_row
+    limit = params.get("plant_count")  # a stated count: the positions after it stay empty
+    if limit is not None:
+        count = min(count, int(limit))
     draws = _random_stream(int(params["seed"]), count * _kernel.KERNEL_DRAWS_PER_POSITION)
     draws = draws.reshape(count, _kernel.KERNEL_DRAWS_PER_POSITION)
     kept = draws[:, 0] >= terms.missing_rate  # the kernel skips u_missing < missing_rate
@@ -108,8 +114,8 @@ def place_field_array(
     row_index = np.arange(rows_per_bed, dtype=np.float64)[None, :]
     row_x = ((x_start + bed_index * terms.row_spacing) + row_index * terms.bed_row_spacing).ravel()
     step_y = y_start + np.arange(per_row, dtype=np.float64) * terms.in_row
-    local_x = np.repeat(row_x, per_row)[kept]
-    local_y = np.tile(step_y, beds * rows_per_bed)[kept]
+    local_x = np.repeat(row_x, per_row)[:count][kept]
+    local_y = np.tile(step_y, beds * rows_per_bed)[:count][kept]
 
     px = local_x + (2.0 * u_x - 1.0) * terms.jitter
     py = local_y + (2.0 * u_y - 1.0) * terms.jitter

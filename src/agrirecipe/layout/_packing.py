@@ -58,6 +58,9 @@ class FieldRequest:
     #: The planted block inside the headland when smaller than the field (see
     #: :attr:`~agrirecipe.recipe.FieldGeometry.planted_m`), carried into the geometry.
     planted_m: tuple[float, float] | None = None
+    #: The stated plant count when it leaves the last row short (see
+    #: :attr:`~agrirecipe.recipe.FieldGeometry.plant_count`), carried into the geometry.
+    plant_count: int | None = None
 
 
 def describe_relation(relation: Relation) -> str:
@@ -104,6 +107,7 @@ def pack_fields(
             rotation_deg=float(request.rotation_deg),
             headland_m=float(request.headland_m),
             planted_m=request.planted_m,
+            plant_count=request.plant_count,
         )
     return geometry
 

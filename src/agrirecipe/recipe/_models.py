@@ -193,6 +193,14 @@ class FieldGeometry(_Frozen):
         "when a stated count of rows or plants fills less than the stated field "
         "('10 rows in a 25 x 60 m plot'); None: the rows fill the field inside its headland.",
     )
+    plant_count: int | None = Field(
+        default=None,
+        ge=1,
+        description="The stated number of plants when they do not fill whole rows ('250 trees "
+        "in 18 rows'): planting positions after it, in planting order (bed by bed, row by row, "
+        "along each row), stay empty, so the last row is short; None: every position of the "
+        "grid is planted.",
+    )
 
     def usable_m(self) -> tuple[float, float]:
         """Width and length the rows may fill: inside the headland, and the planted block."""
@@ -291,6 +299,11 @@ class FieldSpec(_Frozen):
         overlap = set(self.stated) & set(self.inferred)
         if overlap:
             raise ValueError(f"stated: {sorted(overlap)} cannot be both stated and inferred")
+        if self.geometry.plant_count is not None and self.placement.plants_per_instance != 1:
+            raise ValueError(
+                "placement.plants_per_instance: a field of a stated plant count draws every "
+                "plant (plants_per_instance 1)"
+            )
         return self
 
     def _grid(self, plants_per_instance: int = 1) -> tuple[int, int]:
@@ -307,9 +320,12 @@ class FieldSpec(_Frozen):
 
     @property
     def nominal_plant_count(self) -> int:
-        """Planting positions of the field's agronomy, before missing plants are removed."""
+        """Planting positions of the field's agronomy, before missing plants are removed
+        (at most the stated ``geometry.plant_count``)."""
         beds, per_row = self._grid()
-        return beds * self.agronomy.rows_per_bed * per_row
+        grid = beds * self.agronomy.rows_per_bed * per_row
+        limit = self.geometry.plant_count
+        return grid if limit is None else min(grid, limit)
 
     def drawn_plant_count(self, plants_per_instance: int | None = None) -> int:
         """Positions the layout kernel draws: every ``plants_per_instance``-th planting
@@ -321,7 +337,9 @@ class FieldSpec(_Frozen):
             else plants_per_instance
         )
         beds, per_row = self._grid(stride)
-        return beds * self.agronomy.rows_per_bed * per_row
+        grid = beds * self.agronomy.rows_per_bed * per_row
+        limit = self.geometry.plant_count
+        return grid if limit is None else min(grid, limit)
 
     @property
     def bed_count(self) -> int:

@@ -232,6 +232,7 @@ class _Plan:
     notes: list[str]
     rotation_deg: float = 0.0
     planted_m: tuple[float, float] | None = None
+    plant_count: int | None = None
     agronomy_update: dict[str, float | int] | None = None
     warnings: tuple[str, ...] = ()
 
@@ -688,6 +689,7 @@ def _enrich(
         notes=notes,
         rotation_deg=rows.rotation_deg if rows is not None else 0.0,
         planted_m=rows.planted_m if rows is not None else None,
+        plant_count=rows.plant_count if rows is not None else None,
         agronomy_update=rows.agronomy_update() if rows is not None else None,
         warnings=tuple(rows.warnings) if rows is not None else (),
     )
@@ -743,6 +745,7 @@ def _layout(
             plan.headland_m,
             plan.rotation_deg,
             planted_m=plan.planted_m,
+            plant_count=plan.plant_count,
         )
         for plan, field_id in zip(plans, ids, strict=True)
     ]
