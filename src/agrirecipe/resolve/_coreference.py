@@ -16,6 +16,16 @@ from collections.abc import Sequence
 from agrirecipe.resolve._decompose import Clause, Mention, MentionBuilder
 from agrirecipe.resolve._descriptions import said_with_a_verb
 from agrirecipe.resolve._links import ARTICLES
+from agrirecipe.resolve._placed_members import (
+    in_another_zone,
+    on_a_side_of_it,
+    other_side,
+    placed_against_another,
+    placed_by_a_pronoun,
+    placed_first,
+    placed_past_a_pronoun,
+    related_to,
+)
 from agrirecipe.resolve._structure import (
     EACH,
     another_field,
@@ -30,7 +40,6 @@ from agrirecipe.resolve._structure import (
     same_variety,
     strong_crops,
 )
-from agrirecipe.resolve._zones import zone_of
 
 __all__ = ["merge_coreferences"]
 
@@ -57,20 +66,6 @@ def _counted_host(
     return host if heads and all(builder.compatible(host, h) for h in heads) else None
 
 
-def _placed_first(clauses: Sequence[Clause], clause: Clause) -> bool:
-    """Whether a direction alone opens the clause's sentence ("Two blocks ... . To the
-    north, Jonagored apples: ..."): the field after it is placed, one of those counted."""
-    if clause.index == 0 or clause.link is None or clause.link.norm != ",":
-        return False
-    before = clauses[clause.index - 1]
-    return (
-        not before.items
-        and not before.mentions
-        and before.link is not None
-        and before.link.role in ("trailer", "relation")
-    )
-
-
 #: The words that say what "it" is ("it's a 3 hectare field", "it is a 2 ha block").
 _IT_IS = (("it s",), ("it", "is"), ("its",), ("it", "s"))
 
@@ -87,31 +82,6 @@ def _it_is_a(mention: Mention) -> bool:
         and mention.category is None
         and bool(mention.heads)
         and all(h.role == "plot" for h in mention.heads)
-    )
-
-
-#: Sides a field is said on of something named before ("left of it").
-_SIDE_WORDS = frozenset({"left", "right", "north", "south", "east", "west"})
-
-
-def _on_a_side_of_it(mention: Mention) -> bool:
-    """Whether the mention opens with a side of what a pronoun names ("Left of it is our
-    Bintje"): one part of what was named before."""
-    words = [i.norm for i in mention.items[:3]]
-    return len(words) == 3 and words[0] in _SIDE_WORDS and words[1:] == ["of", "it"]
-
-
-def _placed_against_another(clauses: Sequence[Clause], clause: Clause, mention: Mention) -> bool:
-    """Whether the mention is placed against a field of another crop named right after it
-    ("Two veg plots ..., lettuce directly north of the cabbage": one member each)."""
-    following = clauses[clause.index + 1] if clause.index + 1 < len(clauses) else None
-    if following is None or following.link is None or not following.mentions:
-        return False
-    other = strong_crops(following.mentions[0])
-    return (
-        following.link.role in ("relation", "between")
-        and bool(other)
-        and not other & strong_crops(mention)
     )
 
 
@@ -239,7 +209,7 @@ def merge_coreferences(
             for m in (k.refinements[::-1] or [k])
             if m is not mention and same_variety(m, mention)
         ]
-        if repeated and _related_to(clauses, clause, repeated[0]):
+        if repeated and related_to(clauses, clause, repeated[0]):
             repeated = []  # "Valencia oranges next to Valencia oranges": two fields
         placed_again: Mention | None = None
         if (
@@ -284,9 +254,9 @@ def merge_coreferences(
                 and not _its_plot_named(repeated, clause, mention)
             )
             # ("North plot, ..., Fontane potatoes; south plot, ...": another side, another plot)
-            and not (kept and _other_side(kept[-1], mention))
+            and not (kept and other_side(kept[-1], mention))
             # ("Top left wheat, top right maize, bottom left maize": another quarter)
-            and not _in_another_zone(kept, mention)
+            and not in_another_zone(kept, mention)
             # ("tomatoes (beefsteak), tomatoes (roma)": the crop again, another variety)
             and not _another_variety_in_brackets(clauses, clause, mention, kept)
             # ("Grain maize on the big field and, beside it, sweetcorn": a kind named
@@ -294,7 +264,7 @@ def merge_coreferences(
             and not (
                 not is_definite
                 and names_a_variety(mention)
-                and _placed_past_a_pronoun(clauses, clause)
+                and placed_past_a_pronoun(clauses, clause)
             )
             # ("Rows of capsicum ..., and the Jalapeño beds beside them": a kind placed
             # against the plants named before is not them)
@@ -302,7 +272,7 @@ def merge_coreferences(
                 names_a_variety(mention)
                 and bool(kept)
                 and bool(strong_crops(kept[-1]))
-                and _placed_by_a_pronoun(clauses, clause)
+                and placed_by_a_pronoun(clauses, clause)
             )
         )
         if not anaphoric:
@@ -332,14 +302,14 @@ def merge_coreferences(
             _counted_host(builder, kept, mention)
             if (
                 is_definite
-                or _placed_first(clauses, clause)
-                or _placed_against_another(clauses, clause, mention)
+                or placed_first(clauses, clause)
+                or placed_against_another(clauses, clause, mention)
                 # ("Two fields either side of the track. On the left is our Bintje; on
                 # the right the Nantes carrots": each placed in its own part)
                 or (bare and any(i.role == "zone" for i in mention.items))
                 # ("Two fields either side of the concrete farm track. Left of it is our
                 # Bintje, ...; right of it the Nantes carrots")
-                or (bare and _on_a_side_of_it(mention))
+                or (bare and on_a_side_of_it(mention))
             )
             and not summary
             and (first is None or first.norm not in EACH)
@@ -353,7 +323,7 @@ def merge_coreferences(
                 r
                 for r in host.refinements
                 if (same_variety(r, mention) if strong_crops(host) else strong_crops(r) & own)
-                and not _in_another_zone([r], mention)
+                and not in_another_zone([r], mention)
             ]
             if same:
                 member = same[-1]
@@ -534,50 +504,6 @@ def _of_it(mention: Mention) -> bool:
     )
 
 
-def _related_to(clauses: Sequence[Clause], clause: Clause, earlier: Mention) -> bool:
-    """Whether ``clause`` opens with a relation word right after ``earlier``."""
-    link = clause.link
-    if link is None or link.role not in ("relation", "between", "trailer"):
-        return False
-    before = [m for c in clauses[: clause.index] for m in c.mentions]
-    return bool(before) and before[-1] is earlier
-
-
-def _placed_past_a_pronoun(clauses: Sequence[Clause], clause: Clause) -> bool:
-    """Whether the clause before ``clause`` places it against a field by a pronoun
-    ("..., beside it, sweetcorn"; "and north of them, pears")."""
-    if clause.index == 0 or clause.link is None or clause.link.norm != ",":
-        return False
-    previous = clauses[clause.index - 1]
-    link = previous.link
-    return (
-        link is not None
-        and link.role in ("relation", "between")
-        and not previous.mentions
-        and [i.norm for i in previous.items] in (["it"], ["them"], ["that"], ["those"])
-        # (not "a sweetcorn plot next to them, sweetcorn 4 rows ...": the placement of the
-        # field right before it)
-        and clause.index >= 2
-        and not clauses[clause.index - 2].mentions
-    )
-
-
-def _placed_by_a_pronoun(clauses: Sequence[Clause], clause: Clause) -> bool:
-    """Whether the clause after ``clause`` places its field against plants named before
-    it by a plural pronoun ("the Jalapeño beds beside them still only flowering")."""
-    if clause.index + 1 >= len(clauses):
-        return False
-    following = clauses[clause.index + 1]
-    link = following.link
-    return (
-        link is not None
-        and link.role == "relation"
-        and not following.mentions
-        and bool(following.items)
-        and following.items[0].norm in ("them", "those")
-    )
-
-
 def _last_named(clauses: Sequence[Clause], clause: Clause) -> int:
     """The index of the last clause before ``clause`` that names a field (-1 if none)."""
     return next((c.index for c in reversed(clauses[: clause.index]) if c.mentions), -1)
@@ -592,30 +518,6 @@ def _is_summary(mention: Mention) -> bool:
         and all(h.role == "plot" for h in mention.heads)
         and (mention.category is None or all(h.data["value"]["narrows"] for h in mention.heads))
     )
-
-
-_SIDES = frozenset(
-    {"north", "south", "east", "west", "upper", "lower", "top", "bottom", "front", "back"}
-)
-
-
-def _other_side(earlier: Mention, mention: Mention) -> bool:
-    """Whether a plot of no crop is told apart from the field before it by a side word
-    ("North plot ... ; south plot ...")."""
-    if strong_crops(mention) or mention.plot is None:
-        return False
-    said = {i.norm for i in mention.items if i.norm in _SIDES}
-    before = {i.norm for i in earlier.items if i.norm in _SIDES}
-    return bool(said) and bool(before) and not said & before
-
-
-def _in_another_zone(kept: Sequence[Mention], mention: Mention) -> bool:
-    """Whether ``mention`` names a crop again in a zone of its own, when every earlier
-    field of that crop lies in another zone ("top right maize, bottom left maize")."""
-    own = zone_of(mention.items)
-    crops = strong_crops(mention)
-    same = [m for k in kept for m in (k.refinements or [k]) if strong_crops(m) & crops]
-    return own is not None and bool(same) and all(zone_of(m.items) not in (None, own) for m in same)
 
 
 def _another_variety_in_brackets(

@@ -37,7 +37,8 @@ step  pass                                        module (data)
       open, negations); counts, shared            ``_structure``,
       attributes; the members a plural lists;     ``_refinements``,
       descriptions of plants named;               ``_descriptions``,
-      back-references; plots said with a field;   ``_coreference``,
+      back-references (and where a mention is     ``_coreference``,
+      placed); plots said with a field;           ``_placed_members``,
       list headings; summaries of fields          ``_appositives``, ``_headings``,
                                                   ``_summaries``
 11    head-less clauses' words to their fields    ``_loose``,
