@@ -176,6 +176,33 @@ def test_between_objects_in_any_order_and_a_missing_relation_fails() -> None:
     assert not score_prompt(item, scene(*fields)).correct
 
 
+def test_interchangeable_fields_are_told_apart_by_the_relations() -> None:
+    # "two veg plots, each 20 rows at 50 cm, one directly north of the other": either
+    # recipe field matches either truth field, and the relation says which is which
+    item = make_prompt(
+        type="multi_generic",
+        fields=[{"ref": "north", "crop": "Potato"}, {"ref": "south", "crop": "Potato"}],
+        relations=[{"kind": "north_of", "subject": "north", "objects": ["south"]}],
+    )
+    fields = (field("Potato", "Agria", field_id="p1"), field("Potato", "Agria", field_id="p2"))
+    for subject, other in (("p1", "p2"), ("p2", "p1")):
+        placed = PredictedRelation("north_of", subject, (other,))
+        assert score_prompt(item, scene(*fields, relations=(placed,))).correct
+    # ... but a relation still has to be there, and fields that differ are not swapped
+    assert not score_prompt(item, scene(*fields)).correct
+    told = make_prompt(
+        type="multi_detailed",
+        fields=[
+            {"ref": "north", "crop": "Potato", "variety": "Agria"},
+            {"ref": "south", "crop": "Potato", "variety": "Bintje"},
+        ],
+        relations=[{"kind": "north_of", "subject": "north", "objects": ["south"]}],
+    )
+    apart = (field("Potato", "Agria", field_id="a"), field("Potato", "Bintje", field_id="b"))
+    reversed_ = PredictedRelation("north_of", "b", ("a",))
+    assert not score_prompt(told, scene(*apart, relations=(reversed_,))).correct
+
+
 def test_sizes_are_unordered_within_one_percent_and_areas_are_checked() -> None:
     item = make_prompt(type="single_generic", fields=[{"crop": "Potato", "size_m": [50, 100]}])
     assert score_prompt(item, scene(field("Potato", "Agria", size_m=(100.0, 50.0)))).correct

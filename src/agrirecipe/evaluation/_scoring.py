@@ -9,6 +9,7 @@ beyond what the prompt asked for, e.g. a "field" made of scenery words).
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
@@ -415,6 +416,7 @@ def score_prompt(
     phantoms = len(extras) - accepted_extras
     if item.distinct_crops and len({p.crop for p in predicted}) != len(predicted):
         problems.append(("distinct", "crops are not all different"))
+    matched = _best_for_relations(item, scene, matched, weights)
     problems.extend(("relation", text) for text in _relation_problems(item, scene, matched))
     if item.hemisphere is not None and scene.hemisphere != item.hemisphere:
         problems.append(
@@ -465,6 +467,47 @@ def _agreement(truth: TruthField, field: PredictedField) -> float:
             and getattr(field, attribute) in allowed
         )
     )
+
+
+#: The most truth fields one group of interchangeable matches may hold (6! orders).
+_MOST_INTERCHANGEABLE = 6
+
+
+def _best_for_relations(
+    item: BenchmarkPrompt,
+    scene: PredictedScene,
+    matched: dict[int, int],
+    weights: Sequence[Sequence[float]],
+) -> dict[int, int]:
+    """The matching, among those as good as ``matched`` field by field, under which the
+    most truth relations hold: truth fields that match each other's recipe fields
+    equally well ("two veg plots, each 20 rows at 50 cm, one directly north of the other")
+    are interchangeable, and the relations say which is which."""
+    if not item.relations:
+        return matched
+    groups: list[list[int]] = []
+    for t_index in sorted(matched):
+        for group in groups:
+            if all(
+                weights[t_index][matched[other]] == weights[t_index][matched[t_index]]
+                and weights[other][matched[t_index]] == weights[other][matched[other]]
+                for other in group
+            ):
+                group.append(t_index)
+                break
+        else:
+            groups.append([t_index])
+    best, fewest = matched, len(_relation_problems(item, scene, matched))
+    for group in groups:
+        if len(group) < 2 or len(group) > _MOST_INTERCHANGEABLE or not fewest:
+            continue
+        columns = [best[t] for t in group]
+        for order in itertools.permutations(columns):
+            trial = {**best, **dict(zip(group, order, strict=True))}
+            count = len(_relation_problems(item, scene, trial))
+            if count < fewest:
+                best, fewest = trial, count
+    return best
 
 
 def _relation_problems(
