@@ -84,6 +84,9 @@ def expand_casual(prompt: str) -> str:
     # "forty acres of wheat": a measure in words of tens, written in digits (not "the
     # back forty", a field's name)
     text = _TENS_BEFORE_A_UNIT.sub(_tens_in_digits, text)
+    # "small fruit fields, five or six of them": a count of them in words (the first of
+    # two said as alternatives), written in digits
+    text = _COUNT_OF_THEM_IN_WORDS.sub(_count_of_them_in_digits, text)
     # "Rows of Boston lettuce a foot apart": one unit, written as a number
     text = _A_UNIT_APART.sub(r"1 \g<unit>", text)
     # "near the city of Valencia in Spain": a place's name, not a variety
@@ -178,6 +181,17 @@ _COUNT_OF_THEM = re.compile(
 _OPEN_FIELD_PLOTS = re.compile(
     r"\b(?i:open)[\s-]+(?i:field)\s+(?=(?i:plots?|blocks?|strips?|beds?|trials?)\b)"
 )
+_SMALL_NUMBERS = r"two|three|four|five|six|seven|eight|nine|ten|eleven|twelve"
+_COUNT_OF_THEM_IN_WORDS = re.compile(
+    rf"(?<=, )(?P<a>(?i:{_SMALL_NUMBERS}))(?:\s+(?i:or|to)\s+(?i:{_SMALL_NUMBERS}))?"
+    r"(?=\s+(?i:of)\s+(?i:them)\b)"
+)
+
+
+def _count_of_them_in_digits(match: re.Match[str]) -> str:
+    return str(int(number_words()[match.group("a").lower()]))
+
+
 _TENS_BEFORE_A_UNIT = re.compile(
     r"\b(?P<tens>(?i:twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety))"
     r"(?:[\s-]+(?P<units>(?i:one|two|three|four|five|six|seven|eight|nine)))?\s+"
@@ -407,8 +421,9 @@ def count_said_after_crop(text: str, tag: Callable[[str], Sequence[Item]]) -> st
 
 
 def _after_a_list(match: re.Match[str], tag: Callable[[str], Sequence[Item]]) -> bool:
-    """Whether the crop a bracketed or comma'd count follows ends a list of crops."""
+    """Whether the crop a bracketed or comma'd count follows ends a list of crops (or of
+    kinds: "cereals n potatoes, 2 fields")."""
     clause = re.split(r"[.;:!?]", match.string[: match.end("words")])[-1]
     return bool(re.search(r"(?:,|\band\b|&|\+|\bor\b)", clause)) and (
-        sum(1 for i in tag(clause) if i.has("crop", "variety")) >= 2
+        sum(1 for i in tag(clause) if i.has("crop", "variety", "category")) >= 2
     )

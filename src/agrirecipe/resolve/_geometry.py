@@ -618,9 +618,11 @@ _CONVERTED = re.compile(
     r"(?:cm|m|mm|in|inch|inches|ft|feet)\.?\s*\)"
 )
 #: "Kordia with 8 rows, Regina with 6": a count said with its noun, then one without.
+#: ("Albion on 12 raised beds and Sonata on 8": said with "on" or "in" too)
 _ELLIPTIC_WITH = re.compile(
-    r"\b(?i:with)\s+\d+\s+(?P<unit>rows|beds|ridges|trees|vines|plants)\b[^.;:]*?,\s*"
-    r"(?:(?i:and)\s+)?(?P<words>[A-Za-z][\w'’-]*(?:\s+[A-Za-z][\w'’-]*)?)\s+(?i:with)\s+"
+    r"\b(?P<prep>(?i:with|on|in))\s+\d+\s+(?:(?i:raised|single|double|twin|mulched)\s+)?"
+    r"(?P<unit>rows|beds|ridges|trees|vines|plants)\b[^.;:]*?(?:,\s*(?:(?i:and)\s+)?|\s+(?i:and)\s+)"
+    r"(?P<words>[A-Za-z][\w'’-]*(?:\s+[A-Za-z][\w'’-]*)?)\s+(?P=prep)\s+"
     r"\d+\b(?!\s*(?:[A-Za-z%]|\.\d))"
 )
 #: "a single tomato row 20 m long", "one lettuce bed": one row (or bed) of the crop.

@@ -58,7 +58,16 @@ def drop_list_headings(clauses: Sequence[Clause], mentions: list[Mention]) -> li
             ),
             None,
         )
-        later = [m for m in mentions[position + 1 :] if m.has_crop or m.category is not None]
+        # (right after the heading's colon, a plot that names its crops is a field of them:
+        # "Sensor rig field: a vineyard ... south of a strawberry field")
+        right_after = following is not None and following.index == mention.clause + 1
+        later = [
+            m
+            for m in mentions[position + 1 :]
+            if m.has_crop
+            or m.category is not None
+            or (right_after and m.plot is not None and bool(m.plot["options"]))
+        ]
         if (
             following is not None
             and following.link is not None

@@ -54,7 +54,7 @@ def _letter(label: str) -> bool:
 # "Block A:", "plot 2 -", "Field B," : a label that introduces what follows it.
 _DEFINITION = re.compile(
     rf"\b(?i:{_NOUNS})\s+(?P<label>[A-H]|\d{{1,2}}|{_WORD_LABELS})\b\s*"
-    rf"(?P<mark>[:,(\-–—]|(?i:is|has|sits|lies|stands|goes)\b)"
+    rf"(?P<mark>[:,(\-–—=]|(?i:is|has|sits|lies|stands|goes)\b)"
 )
 # "plot 2 Kordia cherries" among labels defined with a mark
 _LOOSE_DEFINITION = re.compile(
@@ -85,6 +85,33 @@ _SENTENCE_START = re.compile(r"(?:^|[.;:!?])\s*$")
 _NAMING = ("crop", "variety", "category")
 
 
+# "Iceberg lettuce in field A, Red Express cabbage in field B": a crop put in a labelled
+# plot (after a mark or "and": the crop's words only)
+_CROP_IN_LABEL = re.compile(
+    rf"(?P<lead>(?:^|[,;:.]\s*|\b(?i:and)\s+))(?P<crop>[A-Za-z][\w'’-]*(?:\s+[A-Za-z][\w'’-]*){{0,3}}?)"
+    rf"\s+(?i:in|on)\s+(?P<noun>(?i:{_NOUNS}))\s+(?P<label>[A-H]|\d{{1,2}})\b"
+)
+
+
+def _crops_in_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
+    """``text`` with "Iceberg lettuce in field A, Red Express cabbage in field B" written
+    "field A: Iceberg lettuce, field B: Red Express cabbage" (two or more such)."""
+    found = [
+        m
+        for m in _CROP_IN_LABEL.finditer(text)
+        if (items := [i for i in tag(m.group("crop")) if i.role != "separator"])
+        and all(i.has(*_NAMING) for i in items)
+    ]
+    if len(found) < 2:
+        return text
+    for match in reversed(found):
+        lead = match.group("lead")
+        lead = ", " if lead.strip().lower() == "and" else lead  # ("..., and field B: pears")
+        said = f"{lead}{match.group('noun')} {match.group('label')}: {match.group('crop')}"
+        text = text[: match.start()] + said + text[match.end() :]
+    return text
+
+
 def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str, list[str]]:
     """``text`` with field labels dropped and references to them spelled out.
 
@@ -92,10 +119,12 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
     label ("Block A = Jonagored apples"). Text with fewer than two labels that name
     crops is returned unchanged.
     """
+    text = _crops_in_labels(text, tag)
     text = _PLACED_THEN_MEASURED.sub(r"\g<head> \g<rest>, \g<where>", text)
     text = _NAME_PLACED_THEN_MEASURED.sub(r"\g<name>: \g<rest>, \g<where>\g<end>", text)
     text = name_members_again(text, tag)
     text = _PLURAL_LABELS.sub(_one_noun_each, valued_members(_numbered_members(text, tag)))
+    text = _BETWEEN_BARE_LABELS.sub(lambda m: f"{m.group('head')}{_one_noun_each(m)}", text)
     text = _PLACED_THEN_NAMED.sub(r"\g<head>, \g<where>, is", text)
     text = _PLACED_THEN_MARKED.sub(_placed_then_marked, text)
     definitions = sorted(
@@ -238,6 +267,14 @@ _NAME_PLACED_THEN_MEASURED = re.compile(
 _PLURAL_LABELS = re.compile(
     rf"\b(?P<noun>(?i:{_NOUNS}))s\s+(?P<a>[A-H]|\d{{1,2}}|{_WORD_LABELS})\s+(?P<and>(?i:and|&|or))\s+"
     rf"(?P<b>[A-H]|\d{{1,2}}|{_WORD_LABELS})\b"
+)
+
+
+# "Plot 2 lies between 1 and 3": the labels it lies between, said without their noun
+_BETWEEN_BARE_LABELS = re.compile(
+    rf"\b(?P<head>(?P<noun>(?i:{_NOUNS}))\s+(?:[A-H]|\d{{1,2}})\s+(?:[a-z]+\s+){{0,2}}"
+    rf"(?i:between)\s+)(?P<a>[A-H]|\d{{1,2}})\s+(?P<and>(?i:and|&))\s+(?P<b>[A-H]|\d{{1,2}})\b"
+    rf"(?!\s*(?:m|cm|ha|ft|in|%|rows|beds)\b)"
 )
 
 

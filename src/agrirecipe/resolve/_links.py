@@ -309,11 +309,24 @@ def following_list(
             # ("heading north you cross a hedge, then the strawberry beds, then ...")
             and clause.link.norm not in (":", ",", "then")
             and (clause.mentions or clause.link.role not in ("separator", "conjunction"))
+            # ("North to south along the lane: Kordia cherries, ...": scenery on the way)
+            and not _along_scenery(clause)
         ):
             break
         if clause.mentions and all(clause.mentions[-1] is not m for m in group):
             group.append(clause.mentions[-1])
     return group
+
+
+def _along_scenery(clause: Clause) -> bool:
+    """A clause that only says what the fields lie along ("along the lane")."""
+    return (
+        not clause.mentions
+        and clause.link is not None
+        and clause.link.role == "relation"
+        and any(i.scenery for i in clause.items)
+        and all(i.scenery or i.role in ("filler", "of") for i in clause.items)
+    )
 
 
 def listing(link: Item | None) -> bool:

@@ -301,7 +301,18 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
         # "Durondeau and Bartlett pears in neighbouring blocks, 3.5 m x 1 m": measures
         # said after the plots a list is grown in are each plot's
         in_plots = len(targets) > 1 and after_list_plots(clauses, position)
-        for target in targets if shared_by_list or shared_noun or in_plots else targets[:1]:
+        # "Golden Delicious apples and Durondeau pears on trellis, rows 3.2 m apart": a
+        # measure opening the clause after a list whose members state none of their own
+        bare_list = (
+            len(targets) > 1
+            and clause.link is not None
+            and clause.link.norm == ","
+            and bool(clause.items)
+            and clause.items[0].role == "geometry"
+            and not any(i.role == "geometry" for t in targets for i in t.items)
+        )
+        to_each = shared_by_list or shared_noun or in_plots or bare_list
+        for target in targets if to_each else targets[:1]:
             target.items.extend(geometry)
     return scene
 

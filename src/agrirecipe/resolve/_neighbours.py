@@ -45,6 +45,12 @@ _NEIGHBOURING = re.compile(
 )
 
 
+_OPENING_NEIGHBOURS = re.compile(
+    r"(?:^|(?<=[.;:!?]\s))(?P<count>(?i:two|three|four|2|3|4)\s+)"
+    r"(?i:neighbouring|neighboring|adjacent|adjoining)\s+"
+    r"(?P<plots>(?i:plots|fields|blocks|strips|beds|patches|paddocks))\b"
+    r"(?P<of>\s+(?i:of)\s+[A-Za-z][\w'’ -]*?)?(?=\s*(?:[,:;.]|$))"
+)
 # "Padrón peppers on one bed and Jalapeños on the next": two plots side by side
 _ONE_AND_THE_NEXT = re.compile(
     r"\s+(?i:on|in) (?i:one) (?P<noun>(?i:bed|row|ridge|strip|plot|block|bench|bay))\s+"
@@ -73,6 +79,10 @@ def place_neighbouring_plots(text: str) -> str:
     text = _AN_ADJACENT.sub(lambda m: f"{m.group('lead')} alongside {m.group('article')} ", text)
     text = _ONE_BESIDE_THE_OTHER.sub("side by side:", text)
     text = _ONE_BESIDE_THE_OTHER_EACH.sub(" side by side", text)
+    # "Two adjacent plots of carrots, Imperator and Danvers": said opening a sentence
+    text = _OPENING_NEIGHBOURS.sub(
+        lambda m: f"{m.group('count')}{m.group('plots')}{m.group('of') or ''} side by side", text
+    )
     return _NEIGHBOURING.sub(
         lambda m: (
             f"{m.group('at') or ','} {m.group('count')}{m.group('size') or ''}{m.group('plots')} "

@@ -283,6 +283,18 @@ def zone_relations(fields: Sequence[Sequence[Item]]) -> list[RelationIntent]:
                 RelationIntent(kind="between", subject=middle, objects=(rows[0][0], rows[2][0]))
                 for middle in rows[1]
             )
+    for index, zone in zones.items():
+        # "veg on the east side, grapes on the west side and a bit of wheat in between":
+        # between the two fields named right before it, however they were placed
+        if (
+            zone == "middle"
+            and index >= 2
+            and any(i.role == "zone" and i.norm.startswith("in between") for i in fields[index])
+            and not any(r.kind == "between" and r.subject == index for r in relations)
+        ):
+            relations.append(
+                RelationIntent(kind="between", subject=index, objects=(index - 2, index - 1))
+            )
     return relations
 
 
