@@ -440,7 +440,7 @@ def _held_by_scenery(clause: Clause, mention: Mention) -> bool:
     # "some fruit already in bins": fruit put in a container
     last = max(h.end for h in mention.heads)
     after = [i.norm for i in clause.items if i.start >= last]
-    while after and after[0] in _ON_THE_WAY:
+    while after and after[0] in _PUT_IN:
         after.pop(0)
     while after and after[0] in ("a", "an", "the", "some", "their"):
         after.pop(0)
@@ -448,9 +448,7 @@ def _held_by_scenery(clause: Clause, mention: Mention) -> bool:
 
 
 #: Words between fruit and the container it is put in ("fruit already in bins").
-_ON_THE_WAY = frozenset(
-    {"already", "now", "still", "being", "put", "picked", "packed", "in", "into"}
-)
+_PUT_IN = frozenset({"already", "now", "still", "being", "put", "picked", "packed", "in", "into"})
 
 
 def _continues_with(previous: Clause, mention: Mention) -> bool:

@@ -579,14 +579,19 @@ def definite_words() -> frozenset[str]:
     return frozenset(str(word) for word in vocabulary()["definite_words"])
 
 
+@functools.cache
+def _definite_extents() -> frozenset[str]:
+    """Words between "the" and the field it names again ("the whole field")."""
+    return frozenset(str(word) for word in vocabulary()["definite_extents"])
+
+
 def definite_before_head(clause: Clause, mention: Mention) -> bool:
     """Whether the word right before the mention's first head is "the", "its"... ("the
     whole field") or a vague quantity of the plants of a crop named ("a few peppers have
     scabby spots")."""
     head = min(mention.heads, key=lambda h: h.start)
     before = [i for i in clause.items if i.end <= head.start]
-    extents = frozenset(str(word) for word in vocabulary()["definite_extents"])
-    while len(before) > 1 and before[-1].norm in extents:
+    while len(before) > 1 and before[-1].norm in _definite_extents():
         before.pop()
     return bool(before) and (
         before[-1].norm in definite_words() or bool(before[-1].data.get("counts_plants"))
