@@ -86,7 +86,7 @@ def expand_casual(prompt: str) -> str:
     text = _TENS_BEFORE_A_UNIT.sub(_tens_in_digits, text)
     # "small fruit fields, five or six of them": a count of them in words (the first of
     # two said as alternatives), written in digits
-    text = _COUNT_OF_THEM_IN_WORDS.sub(_count_of_them_in_digits, text)
+    text = _count_of_them_in_words().sub(_count_of_them_in_digits, text)
     # "Rows of Boston lettuce a foot apart": one unit, written as a number
     text = _A_UNIT_APART.sub(r"1 \g<unit>", text)
     # "near the city of Valencia in Spain": a place's name, not a variety
@@ -181,11 +181,21 @@ _COUNT_OF_THEM = re.compile(
 _OPEN_FIELD_PLOTS = re.compile(
     r"\b(?i:open)[\s-]+(?i:field)\s+(?=(?i:plots?|blocks?|strips?|beds?|trials?)\b)"
 )
-_SMALL_NUMBERS = r"two|three|four|five|six|seven|eight|nine|ten|eleven|twelve"
-_COUNT_OF_THEM_IN_WORDS = re.compile(
-    rf"(?<=, )(?P<a>(?i:{_SMALL_NUMBERS}))(?:\s+(?i:or|to)\s+(?i:{_SMALL_NUMBERS}))?"
-    r"(?=\s+(?i:of)\s+(?i:them)\b)"
-)
+
+
+@functools.cache
+def _count_of_them_in_words() -> re.Pattern[str]:
+    """ ", five or six of them": a count from two to twelve in words (geometry.yaml's
+    number words), the first of two said as alternatives."""
+    words = "|".join(
+        re.escape(word)
+        for word, value in number_words().items()
+        if " " not in word and 2 <= value <= 12
+    )
+    return re.compile(
+        rf"(?<=, )(?P<a>(?i:{words}))(?:\s+(?i:or|to)\s+(?i:{words}))?"
+        r"(?=\s+(?i:of)\s+(?i:them)\b)"
+    )
 
 
 def _count_of_them_in_digits(match: re.Match[str]) -> str:

@@ -198,8 +198,6 @@ def _names_another_crop(
 
 #: Words that open a place after a word for plants ("the vines on the hill").
 _PLACING = frozenset({"on", "in", "at", "along", "up", "down", "across", "over", "by", "beyond"})
-#: Words that place what follows the scenery they open ("behind the barn the vines").
-_FRONTED_PLACING = frozenset({"behind", "beyond", "past", "across", "over"})
 
 
 def _placed_crop_of_its_own(
@@ -223,7 +221,7 @@ def _placed_crop_of_its_own(
     before = [i for i in mention.items if i.end <= first_head]
     past_scenery = any(i.scenery for i in before) and (
         (clause.link is not None and clause.link.role == "relation")
-        or (bool(before) and before[0].norm in _FRONTED_PLACING)
+        or (bool(before) and before[0].norm in reader_words("placed_past"))
     )
     return (
         clause.link is not None

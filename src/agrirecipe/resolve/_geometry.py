@@ -584,11 +584,14 @@ def strip_geometry(request: str) -> tuple[str, list[tuple[int, GeometryMatch]]]:
 #: "12 maize rows at 75 cm", "40 carrot ridges, two rows per ridge": a count of rows
 #: with the crop between the number and the row noun (rows and ridges always; beds
 #: only before a measure, since "two strawberry beds" may be two plots).
+#: Words said between a count and its rows or beds ("8 raised strawberry beds", "on 12
+#: raised beds").
+_BED_MODIFIERS = "single|double|twin|raised|flat|mulched"
 _COUNTED_CROP_ROWS = re.compile(
     r"(?<![\w.,])(?P<n>\d+|(?i:two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|"
     r"fifteen|twenty|thirty|forty|fifty|sixty))\s+"
     # ("8 raised strawberry beds on 1.5 m centres": one field of beds)
-    r"(?P<mod>(?i:single|double|twin|raised|flat|mulched)\s+)?"
+    rf"(?P<mod>(?i:{_BED_MODIFIERS})\s+)?"
     r"(?P<words>[A-Za-z][\w'’-]*(?:\s+[A-Za-z][\w'’-]*)?)\s+"
     # ("10 Sonata strawberry beds south of 10 Centenary beds, all beds on 1.5 m centres")
     r"(?P<noun>(?i:rows|ridges|drills|beds(?=\s*(?:,\s*)?(?:(?:at|on|of|x|by|with|spaced|each|all|"
@@ -598,7 +601,7 @@ _COUNTED_CROP_ROWS = re.compile(
 #: "30 onion beds": ten or more beds of a crop are one field's beds, whatever follows.
 _MANY_CROP_BEDS = re.compile(
     r"(?<![\w.,])(?P<n>[1-9]\d+)\s+"
-    r"(?P<mod>(?i:single|double|twin|raised|flat|mulched)\s+)?"
+    rf"(?P<mod>(?i:{_BED_MODIFIERS})\s+)?"
     r"(?P<words>[A-Za-z][\w'’-]*(?:\s+[A-Za-z][\w'’-]*)?)\s+(?P<noun>(?i:beds|ridges))\b"
 )
 
@@ -620,7 +623,7 @@ _CONVERTED = re.compile(
 #: "Kordia with 8 rows, Regina with 6": a count said with its noun, then one without.
 #: ("Albion on 12 raised beds and Sonata on 8": said with "on" or "in" too)
 _ELLIPTIC_WITH = re.compile(
-    r"\b(?P<prep>(?i:with|on|in))\s+\d+\s+(?:(?i:raised|single|double|twin|mulched)\s+)?"
+    rf"\b(?P<prep>(?i:with|on|in))\s+\d+\s+(?:(?i:{_BED_MODIFIERS})\s+)?"
     r"(?P<unit>rows|beds|ridges|trees|vines|plants)\b[^.;:]*?(?:,\s*(?:(?i:and)\s+)?|\s+(?i:and)\s+)"
     r"(?P<words>[A-Za-z][\w'’-]*(?:\s+[A-Za-z][\w'’-]*)?)\s+(?P=prep)\s+"
     r"\d+\b(?!\s*(?:[A-Za-z%]|\.\d))"

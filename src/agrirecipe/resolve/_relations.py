@@ -21,7 +21,7 @@ from agrirecipe.recipe import RelationKind
 from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._intent import RelationIntent, TraceStep
 from agrirecipe.resolve._landmarks import across_landmarks, held_by, landmark_of
-from agrirecipe.resolve._lexicon import Item
+from agrirecipe.resolve._lexicon import Item, reader_words
 from agrirecipe.resolve._links import (
     ARTICLES,
     OPPOSITE,
@@ -66,10 +66,6 @@ __all__ = ["read_relations"]
 _SAID_OF_A_LANDMARK = frozenset({"filler", "non_agricultural", "stage", "health", "season", "cue"})
 
 
-#: Words that open scenery said on the way to a place ("across a narrow ditch").
-_ON_THE_WAY = frozenset({"across", "over", "past", "beyond", "through", "behind"})
-
-
 def _pronoun_past_an_aside(clauses: Sequence[Clause], position: int) -> bool:
     """Whether clause ``position`` places against a pronoun ("right next to it") right
     after scenery said on the way ("across a narrow ditch"), with a field after it."""
@@ -78,7 +74,7 @@ def _pronoun_past_an_aside(clauses: Sequence[Clause], position: int) -> bool:
     return (
         [i.norm for i in clause.items] in (["it"], ["them"])
         and bool(previous.items)
-        and previous.items[0].norm in _ON_THE_WAY
+        and previous.items[0].norm in reader_words("placed_past")
         and following is not None
         and bool(following.mentions)
         and any(c.mentions for c in clauses[: position - 1])
