@@ -212,3 +212,30 @@ def test_a_block_said_square() -> None:
     # (a square grid is a spacing, not a size)
     (bananas,) = recipe("bananas on a 3 m square grid, half a hectare").fields
     assert bananas.geometry.area_m2 == pytest.approx(5000, rel=0.01)
+
+
+def test_a_crop_listed_again_fills_the_count(
+    named_relations: Callable[[str], NamedRelations],
+) -> None:
+    prompt = (
+        "Test layout, 3 blocks: maize (80,000 plants/ha) | cabbage (rows 0.75 m, plants 0.45 m "
+        "apart) | maize again (80,000 plants/ha), with the cabbage block between the two maize "
+        "blocks."
+    )
+    fields = recipe(prompt).fields
+    assert [f.crop for f in fields] == ["Maize", "Cabbage", "Maize"]
+    assert fields[0].plants_per_ha == pytest.approx(80000, rel=0.01)
+    assert fields[2].plants_per_ha == pytest.approx(80000, rel=0.01)
+    relations = recipe(prompt).relations
+    assert [(r.kind, r.subject, r.objects) for r in relations] == [
+        ("between", fields[1].id, (fields[0].id, fields[2].id))
+    ]
+    # "three plots: wheat, potatoes, wheat": three, the third wheat again (no random crop)
+    assert [f.crop for f in recipe("three plots: wheat, potatoes, wheat").fields] == [
+        "Wheat",
+        "Potato",
+        "Wheat",
+    ]
+    # a crop named again and placed is the member named again
+    carrots, onions = recipe("two fields: carrots and onions, carrots north of the onions").fields
+    assert (carrots.crop, onions.crop) == ("Carrot", "Onion")

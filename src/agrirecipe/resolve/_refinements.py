@@ -311,15 +311,20 @@ def apply_refinements(
                 lists_members = False
             named_before = [m for c in clauses[: parent.clause] for m in c.mentions]
             if clause.mentions and (
-                any(
-                    same_variety(r, sub)
-                    # "two different fruits: apples and apples" still lists two members
-                    or (
-                        link.role == "separator"
-                        and not parent.distinct
-                        and _names_again(r, sub, placed=_placed_against(clauses, clause))
+                (
+                    any(
+                        same_variety(r, sub)
+                        # "two different fruits: apples and apples" still lists two members
+                        or (
+                            link.role == "separator"
+                            and not parent.distinct
+                            and _names_again(r, sub, placed=_placed_against(clauses, clause))
+                        )
+                        for r in parent.refinements
                     )
-                    for r in parent.refinements
+                    # "3 blocks: maize | cabbage | maize again": a crop listed again is a
+                    # member of its own while the count still has room for it
+                    and not _listed_again(clauses, clause, parent)
                 )
                 # "centenary & albion strawberries, 2 fields, albion south of centenary":
                 # the count says again how many fields were named; the varieties after it
@@ -616,6 +621,23 @@ def _bare_crop_first(clause: Clause) -> bool:
         and bool(clause.items)
         and clause.items[0] in clause.mentions[0].heads
         and clause.mentions[0].has_crop
+    )
+
+
+def _listed_again(clauses: Sequence[Clause], clause: Clause, parent: Mention) -> bool:
+    """Whether ``clause``, a crop of the list after ``parent``'s stated count named again,
+    is one more member: the count has room for it and the rest of the list, and it is
+    not placed against another field ("..., wheat north of the potatoes")."""
+    link = clause.link
+    room = (parent.count or 0) - len(parent.refinements)
+    return (
+        link is not None
+        and link.role == "separator"
+        and parent.count is not None
+        and not parent.implied_count
+        and room > 0
+        and len(_listed(clauses, clause.index)) <= room
+        and not _placed_against(clauses, clause)
     )
 
 

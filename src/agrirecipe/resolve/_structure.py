@@ -591,7 +591,10 @@ def definite_before_head(clause: Clause, mention: Mention) -> bool:
     scabby spots")."""
     head = min(mention.heads, key=lambda h: h.start)
     before = [i for i in clause.items if i.end <= head.start]
-    while len(before) > 1 and before[-1].norm in _definite_extents():
+    # ("the whole field", "the two maize blocks")
+    while len(before) > 1 and (
+        before[-1].norm in _definite_extents() or before[-1].role == "number"
+    ):
         before.pop()
     return bool(before) and (
         before[-1].norm in definite_words() or bool(before[-1].data.get("counts_plants"))
