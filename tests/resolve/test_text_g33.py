@@ -239,3 +239,38 @@ def test_a_crop_listed_again_fills_the_count(
     # a crop named again and placed is the member named again
     carrots, onions = recipe("two fields: carrots and onions, carrots north of the onions").fields
     assert (carrots.crop, onions.crop) == ("Carrot", "Onion")
+
+
+def test_a_vague_number_of_fields_said_again_as_a_count() -> None:
+    fields = recipe(
+        "Our farm is a patchwork of small fruit fields, five or six of them, each one a "
+        "different fruit."
+    ).fields
+    assert len(fields) == 5
+    assert len({f.crop for f in fields}) == 5
+    assert {f.category for f in fields} == {"Fruits"}
+    assert len(recipe("some vegetable fields, three of them, all young").fields) == 3
+    # ("some fields, two of them diseased": a share of them, not their count)
+    assert [f.health for f in recipe("four wheat fields, two of them diseased").fields] == [
+        "Ill",
+        "Ill",
+        "Healthy",
+        "Healthy",
+    ]
+
+
+def test_different_crops_counted_after_is_and_after_a_category_heading() -> None:
+    for prompt in (
+        "The vegetable side of the farm is three different crops in long strips.",
+        "Vegetables: three different crops in long strips.",
+    ):
+        fields = recipe(prompt).fields
+        assert len(fields) == 3, prompt
+        assert {f.category for f in fields} == {"Vegetables"}, prompt
+        assert len({f.crop for f in fields}) == 3, prompt
+    fruit, vegetables = (
+        [f.category for f in recipe("Fruit: two plots. Vegetables: three plots").fields][:2],
+        [f.category for f in recipe("Fruit: two plots. Vegetables: three plots").fields][2:],
+    )
+    assert fruit == ["Fruits", "Fruits"]
+    assert vegetables == ["Vegetables"] * 3

@@ -28,6 +28,7 @@ __all__ = [
     "drop_plural_headings",
     "drop_titles",
     "fill_counted_lists",
+    "lend_heading_category",
     "lend_heading_crop",
     "name_counted_plots",
 ]
@@ -543,3 +544,55 @@ def lend_heading_crop(clauses: Sequence[Clause], mentions: list[Mention]) -> lis
         mention.interpretations = heading.interpretations
     clauses[heading.clause].mentions = []
     return plots
+
+
+def lend_heading_category(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
+    """'Vegetables: three different crops in long strips': a category named alone before a
+    colon, then fields of no crop and no category in that sentence, is their category, not
+    a field of its own. Return the fields left."""
+    kept: list[Mention] = []
+    for position, heading in enumerate(mentions):
+        listed = _category_list(clauses, heading, mentions[position + 1 :])
+        if not listed:
+            kept.append(heading)
+            continue
+        names = [h for h in heading.heads if h.role == "head"]
+        for mention in listed:
+            mention.category = heading.category
+            mention.heads.extend(names)
+            mention.items.extend(names)
+        clauses[heading.clause].mentions = []
+    return kept
+
+
+def _category_list(
+    clauses: Sequence[Clause], heading: Mention, later: Sequence[Mention]
+) -> list[Mention]:
+    """The fields of no crop and no category ``heading``, a category alone before a colon,
+    heads in its sentence ([] when it heads none)."""
+    colon = heading.clause + 1
+    if (
+        heading.has_crop
+        or heading.category is None
+        or heading.plot is not None
+        or (heading.count or 1) != 1
+        or heading.refinements
+        or colon >= len(clauses)
+        or link_norm(clauses[colon]) != ":"
+        or clauses[heading.clause].mentions[-1:] != [heading]
+        or clauses[colon].mentions[:1] != list(later[:1])
+    ):
+        return []
+    end = next(
+        (c.index for c in clauses[colon + 1 :] if link_norm(c) in SENTENCE_MARKS), len(clauses)
+    )
+    listed = [m for m in later if m.clause < end]
+    if any(
+        m.has_crop
+        or m.category is not None
+        or (m.plot is not None and m.plot["options"])
+        or any(r.has_crop or r.category is not None for r in m.refinements)
+        for m in listed
+    ):
+        return []
+    return listed

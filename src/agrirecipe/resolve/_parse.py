@@ -79,6 +79,7 @@ from agrirecipe.resolve._headings import (
     drop_plural_headings,
     drop_titles,
     fill_counted_lists,
+    lend_heading_category,
     lend_heading_crop,
     name_counted_plots,
 )
@@ -280,7 +281,7 @@ class PromptReader(FieldReading):
         share_leading_attributes(clauses)
         share_trailing_attributes(clauses)
         mentions = apply_refinements(clauses, self.crop_categories, builder)
-        mentions = share_counted_fields(mentions)
+        mentions = lend_heading_category(clauses, share_counted_fields(mentions))
         mentions = drop_forward_summaries(
             clauses, drop_joint_headings(clauses, mentions, self.crop_categories)
         )

@@ -376,6 +376,22 @@ def apply_refinements(
                     stage="resolve",
                     hint="make the count match the list, or drop the count",
                 )
+            if (
+                share_of is not None
+                and len(clause.items) == 3
+                and (
+                    parent.implied_count
+                    or (parent.quantity is not None and parent.count == parent.quantity)
+                )
+                and not parent.refinements
+                and clauses[clause.index - 1].mentions[-1:] == [parent]
+            ):
+                # "a patchwork of small fruit fields, five or six of them, each ...",
+                # "some veg fields, three of them, all young": a vague or unsaid number of
+                # fields said again as a count, not a share of them
+                parent.count = share_of
+                clause.loose, clause.refined_parent = [], parent
+                continue
             if (is_reference or listed) and fits and has_room(parent):
                 sub.is_refinement = True
                 kind = first.data.get("value") if first is not None else "one"

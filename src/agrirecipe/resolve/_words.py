@@ -384,8 +384,8 @@ def _measured_differences(items: Sequence[Item]) -> None:
 
 
 def _counted_kinds(items: Sequence[Item]) -> None:
-    """'an orchard with 3 kinds of fruit trees', '3 varieties of apples': kinds counted
-    are different crops or varieties, one field each."""
+    """'an orchard with 3 kinds of fruit trees', '3 varieties of apples', 'three different
+    crops': kinds counted are different crops or varieties, one field each."""
     for index in range(1, len(items) - 1):
         number, kind, of = items[index - 1], items[index], items[index + 1]
         if (
@@ -396,6 +396,10 @@ def _counted_kinds(items: Sequence[Item]) -> None:
         ):
             kind.role = "distinct"
             number.data["counts_kinds"] = True  # ("3 kinds of fruit trees": not plants)
+    for number, different, plot in zip(items, items[1:], items[2:], strict=False):
+        # "the vegetable side is three different crops": different crops counted
+        if number.role == "number" and different.role == "distinct" and plot.role == "plot":
+            number.data["counts_kinds"] = number.norm not in ("a", "an", "one")
 
 
 def _variety_before_its_plot(items: Sequence[Item]) -> None:
