@@ -136,6 +136,11 @@ def expand_casual(prompt: str) -> str:
             lambda m: f"{m.group('lead')}{m.group('count')} {m.group('words')}{m.group('plots')}",
             text,
         )
+    # "some veg plots?? like 4 or 5, need it b4 monday", "a few fruit fields idk 2 or 3":
+    # a rough count after the plots, said as a count of them
+    text = _ROUGH_COUNT_AFTER.sub(r"\g<plots>, \g<count> of them", text)
+    # "on the 2nd of May": a day of the month, not two fields
+    text = _DAY_OF_MONTH.sub(r"\g<day> ", text)
     # "An acre and a half of chillies": one and a half acres
     text = _UNIT_AND_A_HALF.sub(lambda m: f"1.5 {m.group('unit')}s", text)
     # "Corn plot pair", "a lettuce strip trio": a count said after the plot noun
@@ -168,6 +173,15 @@ _COUNT_SAID_ROUGHLY = re.compile(
     r"(?P<plots>(?i:fields|plots|blocks|strips|beds|orchards|patches|paddocks))\s*,\s*"
     r"(?i:like|about|around|maybe|roughly|approx|say)\s+"
     r"(?P<count>\d+(?:\s+(?i:or|to|-)\s+\d+)?)(?=\s*(?:[,.!?;]|$))"
+)
+_DAY_OF_MONTH = re.compile(
+    r"\b(?P<day>[0-3]?\d)(?i:st|nd|rd|th)\s+(?i:of)\s+"
+    r"(?=(?i:jan|feb|mar|apr|may|jun|jul|aug|sep|sept|oct|nov|dec)[a-z]*\b)"
+)
+_ROUGH_COUNT_AFTER = re.compile(
+    r"(?P<plots>\b(?i:fields|plots|blocks|strips|orchards|patches|paddocks))"
+    r"(?:\s*[,?!]+\s*|\s+)(?:(?i:like|about|around|maybe|roughly|approx|say)\s+)?"
+    r"(?P<count>\d+)\s+(?i:or|to|-)\s+\d+(?![\d.,]\d)(?=\s*(?:[,.!?;]|$))"
 )
 _COUNT_OF_THEM = re.compile(
     r"(?P<lead>(?:^|(?<=[.;:!?])\s*)(?:(?i:the|our|my|some)\s+)?)"

@@ -158,6 +158,14 @@ def merge_coreferences(
             clause.mentions.remove(mention)
             merged.add(clause.index)
             continue
+        by_order = _named_in_order(kept, mention)
+        if by_order is not None:
+            # "Bintje, Agria and Fontane potatoes, ..., the sprayer boom folded up by the
+            # first field": the field named first
+            merged.add(clause.index)
+            by_order.items.extend(i for i in mention.items if i not in mention.heads)
+            clause.mentions[clause.mentions.index(mention)] = by_order
+            continue
         # "the carrots ...", "fire blight on the pears", "the Roma one"; "one big field
         # of it" (of the crop just named)
         it_is_a = _it_is_a(mention)
@@ -442,6 +450,32 @@ def merge_coreferences(
         else:
             clause.mentions.remove(mention)
     return kept
+
+
+#: Where an ordinal word points among the fields named in order.
+_ORDER_OF = {"the first": 0, "the second": 1, "the third": 2, "the fourth": 3, "the last": -1}
+
+
+def _named_in_order(kept: Sequence[Mention], mention: Mention) -> Mention | None:
+    """The field "the first field" / "the second plot" / "the last block" points at among
+    two or more fields named before, in the order named; None for any other mention."""
+    first = first_word(mention)
+    if (
+        first is None
+        or first.role != "reference"
+        or first.norm not in _ORDER_OF
+        or mention.has_crop
+        or mention.category is not None
+        or mention.count not in (None, 1)
+        or not mention.heads
+        or any(h.role != "plot" or h.data["value"].get("plural") for h in mention.heads)
+    ):
+        return None
+    fields = list({id(r): r for m in kept for r in (m.refinements or [m])}.values())
+    at = _ORDER_OF[first.norm]
+    if len(fields) < 2 or at >= len(fields):
+        return None
+    return fields[at]
 
 
 def _both_of_the_counted(kept: Sequence[Mention], mention: Mention) -> list[Mention]:

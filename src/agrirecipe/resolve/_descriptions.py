@@ -97,6 +97,7 @@ def dissolve_plant_parts(clauses: Sequence[Clause], crop_categories: dict[str, s
             or _held_by_scenery(clause, mention)
             or (others_before and _bare_part_after_with(clause, mention))
             or _crop_fruit_after_with(clause, mention, clauses[:position])
+            or _bare_part_after_a_dash(clauses, position, mention)
         )
         if any(i.role == "zone" for i in mention.items):
             continue  # "the vines are on the left and the orange grove on the right": placed
@@ -343,6 +344,26 @@ def _fruit_of_named_crop(mention: Mention, before: Sequence[Clause]) -> bool:
     crops = strong_crops(mention)
     named = {c for clause in before for m in clause.mentions for c in strong_crops(m)}
     return bool(crops) and crops <= named
+
+
+def _bare_part_after_a_dash(clauses: Sequence[Clause], position: int, mention: Mention) -> bool:
+    """ "these Beefsteak tomatoes - massive ribbed fruit, but ...": a bare word for the
+    fruit (no crop, no count, no plot) right after a dash or colon that follows a crop
+    named is that crop's fruit."""
+    clause = clauses[position]
+    link = clause.link
+    if (
+        position == 0
+        or link is None
+        or link.norm not in ("-", "–", "—", ":")
+        or mention.count is not None
+        or strong_crops(mention)
+        or not all(h.norm in plant_part_words() for h in mention.heads)
+        or any(i.role == "plot" for i in clause.items)
+    ):
+        return False
+    before = clauses[position - 1].mentions
+    return bool(before) and bool(strong_crops(before[-1]))
 
 
 def _part_of_named_crop(mention: Mention, before: Sequence[Clause]) -> bool:

@@ -514,15 +514,9 @@ def lend_heading_crop(clauses: Sequence[Clause], mentions: list[Mention]) -> lis
     if len(mentions) < 3:
         return mentions
     heading, plots = mentions[0], mentions[1:]
-    colon = heading.clause + 1
     if (
         not heading.has_crop
-        or heading.plot is not None
-        or (heading.count or 1) != 1
-        or heading.refinements
-        or colon >= len(clauses)
-        or link_norm(clauses[colon]) != ":"
-        or clauses[heading.clause].mentions[-1:] != [heading]
+        or not _alone_before_a_colon(clauses, heading)
         or any(
             m.has_crop or m.category is not None or m.plot is None or (m.count or 1) != 1
             for m in plots
@@ -574,12 +568,7 @@ def _category_list(
     if (
         heading.has_crop
         or heading.category is None
-        or heading.plot is not None
-        or (heading.count or 1) != 1
-        or heading.refinements
-        or colon >= len(clauses)
-        or link_norm(clauses[colon]) != ":"
-        or clauses[heading.clause].mentions[-1:] != [heading]
+        or not _alone_before_a_colon(clauses, heading)
         or clauses[colon].mentions[:1] != list(later[:1])
     ):
         return []
@@ -596,3 +585,17 @@ def _category_list(
     ):
         return []
     return listed
+
+
+def _alone_before_a_colon(clauses: Sequence[Clause], heading: Mention) -> bool:
+    """Whether ``heading``, one field of no plot word and no members, ends its clause
+    right before a colon ("Washington Navel: ...", "Vegetables: ...")."""
+    colon = heading.clause + 1
+    return (
+        heading.plot is None
+        and (heading.count or 1) == 1
+        and not heading.refinements
+        and colon < len(clauses)
+        and link_norm(clauses[colon]) == ":"
+        and clauses[heading.clause].mentions[-1:] == [heading]
+    )

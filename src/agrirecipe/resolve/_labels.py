@@ -329,12 +329,17 @@ def drop_list_numbers(text: str) -> str:
 
 # "plot 1 at 70,000 plants/ha, plot 2 at 100,000": two members told apart by number
 _MEMBER_LABEL = re.compile(
-    r"\b(?P<noun>(?i:plot|block|field|strip|bed|parcel))\s+(?P<label>[12]|[AB])\b(?P<colon>\s*[:=])?"
+    r"\b(?P<noun>(?i:plot|block|field|strip|bed|parcel|grove|orchard|vineyard|paddock))\s+"
+    r"(?P<label>[1-4]|[A-D])\b(?P<colon>\s*[:=])?"
 )
 # "Field B, east of A": a letter label referred to without its noun
 _BARE_MEMBER = re.compile(
     rf"\b(?i:{_BEFORE_REFERENCE})\s+(?P<at>(?:(?i:the)\s+)?)(?P<label>[AB])\b(?!\s*[:=])"
 )
+
+
+_ORDINALS = ("the first", "the second", "the third", "the fourth")
+_COUNT_WORDS = {2: "two", 3: "three", 4: "four"}
 
 
 def _numbered_members(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
@@ -353,14 +358,27 @@ def _numbered_members(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
     ):
         return text
     labels = [m.group("label").upper() for m in matches]
-    if not matches or set(labels) not in ({"1", "2"}, {"A", "B"}) or labels[0] not in "1A":
+    members = len(set(labels))
+    if not 2 <= members <= len(_ORDINALS) or set(labels) not in (
+        {str(n) for n in range(1, members + 1)},
+        {chr(ord("A") + n) for n in range(members)},
+    ):
         return text
     noun = matches[0].group("noun").lower()
     if any(m.group("noun").lower() != noun for m in matches):
         return text
-    counted = re.search(rf"\b(?i:two|2)\s+(?:[\w-]+\s+){{0,2}}(?i:{noun}s)\b", text)
+    count = _COUNT_WORDS[members]
+    counted = re.search(
+        rf"\b(?i:{count}|{members})\s+(?:[\w-]+\s+){{0,2}}(?i:{noun}s|{noun}es)\b", text
+    )
     if counted is None or counted.end() > matches[0].start():
         return text
+    # "two plots ... plot 1 ..., plot 2 ...": one and the other where first named; the
+    # members in order otherwise ("Strip 2 sits south of strip 1 and strip 3 south of
+    # strip 2", "grove 2 south of grove 1")
+    by_order = members > 2 or labels[0] not in "1A"
+    if by_order and any(_crop_phrase(text[m.end() :], tag) for m in matches):
+        return text  # ("plot 1 Cos, plot 2 Iceberg, plot 3 Lollo Rosso": labels defined)
     if labels[0] == "A":
         matches = sorted(
             [*matches, *(m for m in _BARE_MEMBER.finditer(text) if m.start() > matches[0].end())],
@@ -372,7 +390,9 @@ def _numbered_members(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
         first_said = all(
             m.group("label").upper() != label for m in matches if m.start() < match.start()
         )
-        if first_said:
+        if by_order:
+            word = _ORDINALS[int(label) - 1 if label.isdigit() else ord(label) - ord("A")]
+        elif first_said:
             word = "one" if label in "1A" else "the other"
         else:
             word = "the first" if label in "1A" else "the second"
@@ -405,7 +425,17 @@ _LEADING = re.compile(
     # is Grande Naine and the north block is Lady Finger")
     r"(?P<rest>(?!(?i:of|to|and|with|in|on|at|is|are)\b)[^\s,;.:()]"
     r"(?:(?!\s+(?i:and|but|while|whereas)\s+(?:(?i:the)\s+)?"
-    r"(?i:north|south|east|west|top|bottom|upper|lower)(?i:ern)?\s)[^,;.:()]|[.,](?=\d))*)"
+    r"(?i:north|south|east|west|top|bottom|upper|lower)(?i:ern)?\s)"
+    # ("top half corn bottom half wheat": to the next side's part, said without a mark)
+    r"(?!\s+(?P<next>(?:(?i:the)\s+)?(?i:north|south|east|west|top|bottom|upper|lower)(?i:ern)?"
+    r"\s+(?i:plot|block|field|one|part|half|strip|parcel|section|paddock|area)\b))"
+    r"[^,;.:()]|[.,](?=\d))*)"
+)
+
+
+_NEXT_SIDE = re.compile(
+    r"\s+(?:(?i:the)\s+)?(?i:north|south|east|west|top|bottom|upper|lower)(?i:ern)?\s+"
+    r"(?i:plot|block|field|one|part|half|strip|parcel|section|paddock|area)\b"
 )
 
 
@@ -421,7 +451,12 @@ _SIDE_MEMBER = re.compile(
 def place_leading_directions(text: str) -> str:
     """``text`` with "the east plot is X" written "X in the eastern block", and "X in the
     north orchard" written "X in the north block" (where X is, not one more field)."""
-    text = _LEADING.sub(_placed_on_its_side, text)
+    for _ in range(_MAX_UNMARKED_SIDES):
+        # (again after each, for the next side's part said without a mark)
+        placed = _LEADING.sub(_placed_on_its_side, text)
+        if placed == text:
+            break
+        text = placed
     if len({m.group("side").lower() for m in _SIDE_MEMBER.finditer(text)}) >= 2:
         # "the western block at 2.75 m between rows, the eastern block at 3 m": members
         # told apart by their sides, each said after its measures
@@ -435,15 +470,21 @@ def place_leading_directions(text: str) -> str:
     return _IN_SIDE_PLOT.sub(lambda m: f"{m.group('at')} the {m.group('side').lower()} block", text)
 
 
+#: How many sides' parts said one after another without a mark are read.
+_MAX_UNMARKED_SIDES = 4
+
+
 def _placed_on_its_side(match: re.Match[str]) -> str:
     """ "the east plot is X" as "X in the eastern block"; "the top field is X" as "X in the
     top field", a zone read with the farm's other zones ("...; below it maize; and at the
     bottom, carrots")."""
     side = match.group("side")
     rest = match.group("rest").rstrip()
+    # ("top half corn bottom half wheat": the next side's part begins)
+    mark = "," if _NEXT_SIDE.match(match.string, match.end()) else ""
     if side.lower() in _OPPOSITE_SIDES:
-        return f"{rest} in the {side.lower()}ern block"
-    return f"{rest} in the {side} {match.group('noun')}"
+        return f"{rest} in the {side.lower()}ern block{mark}"
+    return f"{rest} in the {side} {match.group('noun')}{mark}"
 
 
 # "Durondeau pears in the north orchard", "Cos on the north beds": where the pears are

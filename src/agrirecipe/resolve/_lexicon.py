@@ -20,6 +20,8 @@ from typing import TYPE_CHECKING, Any, Literal
 
 import yaml
 
+from agrirecipe.resolve._sounds import sound_key
+
 if TYPE_CHECKING:
     from agrirecipe.hierarchy import Hierarchy
     from agrirecipe.knowledge import KnowledgeBase
@@ -270,6 +272,7 @@ class Lexicon:
         self.max_words = 1
         self.fuzzy_choices: list[str] = []
         self._fuzzy_senses: dict[str, tuple[Sense, ...]] = {}
+        self._sounds: dict[str, list[str]] = {}
 
     def add(self, phrase: str, sense: Sense, *, derived: bool = False) -> None:
         """Add a sense to a phrase; a derived form (a plural) never shadows a real entry."""
@@ -330,6 +333,10 @@ class Lexicon:
                 choices[text] = kept
         self.fuzzy_choices = sorted(choices)
         self._fuzzy_senses = choices
+        self._sounds = {}
+        for text in self.fuzzy_choices:
+            if " " not in text and len(text) >= 5:
+                self._sounds.setdefault(text[0] + sound_key(text), []).append(text)
 
     def fuzzy(self, text: str) -> tuple[str, float, tuple[Sense, ...]] | None:
         """The phrase a possibly misspelt ``text`` most likely means, or None.
@@ -362,7 +369,7 @@ class Lexicon:
             limit=3,
         )
         if not matches:
-            return None
+            return self._sounds_like(text)
         phrase, score = str(matches[0][0]), 100.0 * float(matches[0][1])
         if text.startswith(phrase) and text[len(phrase) :] in _DERIVING_ENDINGS:
             return None  # "blocky" fruit is a word made from "block", not a misspelt one
@@ -385,6 +392,22 @@ class Lexicon:
                 continue
             return phrase, score, self._fuzzy_senses[phrase]
         return None
+
+    def _sounds_like(self, text: str) -> tuple[str, float, tuple[Sense, ...]] | None:
+        """The one phrase a word of five letters or more, spelt by ear, sounds like
+        ("lettus": lettuce), scored by its edit similarity; None when none or several."""
+        from rapidfuzz.distance import DamerauLevenshtein
+
+        if " " in text or len(text) < 5 or text.rstrip("s") in everyday_words():
+            return None
+        found = self._sounds.get(text[0] + sound_key(text), [])
+        # (two edits at most: "canes" sounds like no "cayenne")
+        found = [p for p in found if DamerauLevenshtein.distance(text, p) <= 2]
+        if len({self._fuzzy_senses[p] for p in found}) != 1:
+            return None
+        phrase = found[0]
+        score = 100.0 * DamerauLevenshtein.normalized_similarity(text, phrase)
+        return phrase, score, self._fuzzy_senses[phrase]
 
 
 _DOUBLE = re.compile(r"(.)\1+")

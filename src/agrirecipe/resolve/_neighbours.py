@@ -292,6 +292,18 @@ _BEYOND = re.compile(
 )
 
 
+# "a cherry orchard next to it with trees at 5 x 3 m": the placed field's own trees,
+# said after what it is placed against
+_PLACED_WITH_PLANTS = re.compile(
+    r"\b(?P<it>(?i:it|them))\s+(?=(?i:with)\s+(?:(?i:its|their)\s+)?"
+    r"(?i:trees|vines|plants|bushes|canes)\b)"
+)
+# "beyond them, to the south, two fields of potatoes": further on, on that side of them
+_BEYOND_TO_A_SIDE = re.compile(
+    r"\b(?i:beyond|past|behind|on\s+the\s+far\s+side\s+of|on\s+the\s+other\s+side\s+of)\s+"
+    r"(?P<thing>(?i:it|them))\s*,?\s*(?i:to|towards|on)\s+(?i:the)\s+"
+    r"(?P<side>(?i:north|south|east|west))(?i:ern)?(?:\s+(?i:side))?\b"
+)
 _FURTHER_PAST = re.compile(
     r"\b(?i:further|farther)\s+(?P<side>(?i:north|south|east|west))\s*,?\s+(?i:past|beyond)\s+"
     r"(?P<thing>(?i:the|our|my)\s+[A-Za-z][\w'-]*)"
@@ -342,6 +354,8 @@ def place_sides(text: str) -> str:
     text = _ONE_SIDE_AND_OTHER.sub(_between_sides, text)
     text = _FACING_NORTH.sub("", text)
     text = _beyond_as_faced(text)
+    text = _PLACED_WITH_PLANTS.sub(r"\g<it>, ", text)
+    text = _BEYOND_TO_A_SIDE.sub(lambda m: f"{m.group('side').lower()} of {m.group('thing')}", text)
     # "...; further north again, past the lane, there's wheat": further on than the field
     # before, the lane passed on the way
     text = _FURTHER_OPENING_PAST.sub(r"\g<further>,", text)

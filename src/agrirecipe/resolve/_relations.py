@@ -201,6 +201,25 @@ def read_relations(
                 )
             )
             continue
+        if (
+            link.role == "relation"
+            and clause.mentions
+            and position
+            and not clauses[position - 1].named
+            and any(i.scenery for i in clauses[position - 1].items)
+            and _not_placed(clauses[position - 1])
+            and all(
+                any(m is n for c in clauses[:position] for n in c.named) for m in clause.mentions
+            )
+        ):
+            # "..., with a tractor parked by the Bintje", "the sprayer boom folded up by the
+            # first field": scenery placed by a field named before, no field placed
+            trace.append(
+                TraceStep(
+                    stage="decompose", subject=link.raw, detail="relative to scenery: not used"
+                )
+            )
+            continue
         # each field once, where last named ("blood oranges (Moro)" names one twice)
         before = last_named([m for c in clauses[:position] for m in c.named])
         if _of_everything(clause) and before and position - 1 == before[-1].clause:
