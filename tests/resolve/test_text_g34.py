@@ -153,3 +153,100 @@ def test_scenery_placed_by_a_field_named_before() -> None:
     result = recipe("Bintje and Agria potatoes, with a tractor parked by the Bintje")
     assert len(result.fields) == 2
     assert result.relations == ()
+
+
+def test_a_backyard_swing_set_is_scenery_and_rusty_no_disease() -> None:
+    (corn,) = recipe(
+        "Photo of my backyard corn patch, roughly 50 ft by 80 ft, stalks taller than me with "
+        "tassels waving, a rusty swing set off to the side."
+    ).fields
+    assert (corn.crop, corn.stage, corn.health) == ("Maize", "Reproductive", "Healthy")
+    assert corn.geometry.size_m == pytest.approx((15.24, 24.384), rel=0.01)
+
+
+def test_a_plot_of_a_category_heading_fields_of_its_crops() -> None:
+    result = recipe(
+        "A photo of the veg field: capsicum on one side and chillies on the other, with a hose "
+        "reel and the compost heap in between."
+    )
+    assert [f.crop for f in result.fields] == ["Pepper", "Pepper"]
+    assert "between" not in {r.kind for r in result.relations}
+
+
+def test_each_members_side_said_before_it() -> None:
+    result = recipe(
+        "I'm standing between two fields in this photo: to the north, potatoes with mottled, "
+        "curling leaves; to the south, wheat that was just drilled and is barely showing."
+    )
+    potatoes, wheat = result.fields
+    assert (potatoes.crop, potatoes.health, wheat.crop, wheat.stage) == (
+        "Potato",
+        "Ill",
+        "Wheat",
+        "Vegetative",
+    )
+    assert ("north_of", potatoes.id, (wheat.id,)) in {
+        (r.kind, r.subject, r.objects) for r in result.relations
+    }
+
+
+def test_one_of_the_plots_counted_before_another_field() -> None:
+    first, second, maize = recipe(
+        "Blight-detection drone test: two potato plots with a maize plot between them, all rows "
+        "75 cm apart. One of the potato plots has late blight."
+    ).fields
+    assert (first.crop, second.crop, maize.crop) == ("Potato", "Potato", "Maize")
+    assert sorted((first.health, second.health)) == ["Healthy", "Ill"]
+    assert maize.health == "Healthy"
+
+
+def test_fields_on_either_side_of_the_one_they_are_with() -> None:
+    result = recipe(
+        "Wheat field with a maize plot to its east and a potato plot to its west, every plot "
+        "0.25 ha, for calibrating our row-detection drone."
+    )
+    wheat, maize, potatoes = result.fields
+    kinds = {(r.kind, r.subject, r.objects) for r in result.relations}
+    assert {("east_of", maize.id, (wheat.id,)), ("west_of", potatoes.id, (wheat.id,))} <= kinds
+    assert [f.geometry.area_m2 for f in result.fields] == pytest.approx([2500] * 3, rel=0.01)
+
+
+def test_one_plot_of_another_variety_after_a_counted_plural() -> None:
+    result = recipe(
+        "Two Chantenay carrot plots and one Danvers plot, all 20 x 30 m on beds 1.5 m "
+        "centre-to-centre, with the Danvers plot in between the Chantenay ones."
+    )
+    assert [f.variety for f in result.fields] == ["Chantenay", "Chantenay", "Danvers"]
+    one, two, danvers = result.fields
+    assert [(r.kind, r.subject, r.objects) for r in result.relations] == [
+        ("between", danvers.id, (one.id, two.id))
+    ]
+
+
+def test_all_and_everywhere_said_of_one_fields_plants() -> None:
+    elsanta, albion = recipe(
+        "Our two strawberry fields in one shot: Elsanta with ripe red berries everywhere, and "
+        "Albion still all flowers and no fruit."
+    ).fields
+    assert (elsanta.stage, albion.stage) == ("Maturation", "Reproductive")
+
+
+def test_each_a_block_of_rows_after_fields_counted() -> None:
+    fields = recipe(
+        "three different kinds of fruit tree for our orchard robot, each a block of 8 rows "
+        "with 4 m between the rows"
+    ).fields
+    assert len(fields) == 3
+    assert len({f.crop for f in fields}) == 3
+    assert {f.row_count for f in fields} == {8}
+    assert {f.agronomy.row_spacing_m for f in fields} == {4.0}
+
+
+def test_an_in_row_spacing_said_in_a_spec_sheet() -> None:
+    (corn,) = recipe(
+        "spec -> crop: sweetcorn | rows: 16 | row spacing: 0.76 m | in-row: 0.20 m | row "
+        "length: 80 m | bearing: 0 deg | headland: 6 m | use: LiDAR ground truth"
+    ).fields
+    assert (corn.variety, corn.row_count) == ("Sweet Corn", 16)
+    assert (corn.agronomy.row_spacing_m, corn.agronomy.in_row_spacing_m) == (0.76, 0.2)
+    assert corn.row_length_m == pytest.approx(80)

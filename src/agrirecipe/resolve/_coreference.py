@@ -179,6 +179,16 @@ def merge_coreferences(
         if it_is_a:
             # "Durum wheat, ears out ...; it's a 3 hectare field": the field named, its size
             mention.count = None
+        # "two potato plots with a maize plot between them ... One of the potato plots has
+        # late blight": one member of the fields counted, not all of them
+        one_member = (
+            is_definite
+            and mention.count == 1
+            and one_of_the(clause, mention)
+            and mention.plot is not None
+            and mention.plot["plural"]
+            and not mention.plot["individual"]
+        )
         if (
             is_definite
             and mention.count == 1
@@ -430,6 +440,16 @@ def merge_coreferences(
                 run = candidates
         if not run:
             kept.append(mention)
+            continue
+        if (
+            one_member
+            and len(run) == 1
+            and (run[0].count or 1) >= 2
+            and len(run[0].refinements) < (run[0].count or 1)
+        ):
+            run[0].refinements.append(mention)
+            mention.is_refinement = True
+            clause.refinement, clause.refined_parent = mention, run[0]
             continue
         merged.add(clause.index)
         attributes = [i for i in mention.items if i not in mention.heads]

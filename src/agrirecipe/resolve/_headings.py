@@ -44,7 +44,9 @@ def _heads_its_list(mention: Mention, later: Sequence[Mention]) -> bool:
     )
 
 
-def drop_list_headings(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
+def drop_list_headings(
+    clauses: Sequence[Clause], mentions: list[Mention], crop_categories: dict[str, str]
+) -> list[Mention]:
     """ "My allotment in one picture: a strawberry bed, a patch of sweetcorn": one plot
     naming no crop, ending its clause before a colon that lists two or more fields of
     named crops, is the list's heading, not another field. Return the fields left."""
@@ -91,6 +93,9 @@ def drop_list_headings(clauses: Sequence[Clause], mentions: list[Mention]) -> li
                 # "Citrus test site in Chile, July: a blood orange block next to a Valencia
                 # block": a crop heading the fields of that crop it lists
                 or _heads_its_list(mention, later)
+                # "the veg field: capsicum on one side and chillies on the other": a plot of
+                # a category heading two or more fields of crops of that category
+                or _heads_its_category(mention, later, crop_categories)
             )
             # ("sensor test strips: a capsicum strip between ...": a plural, not counted)
             and (
@@ -119,6 +124,23 @@ def drop_list_headings(clauses: Sequence[Clause], mentions: list[Mention]) -> li
             continue
         kept.append(mention)
     return kept
+
+
+def _heads_its_category(
+    mention: Mention, later: Sequence[Mention], crop_categories: dict[str, str]
+) -> bool:
+    return (
+        mention.plot is not None
+        and mention.category is not None
+        and not mention.has_crop
+        and (mention.count or 1) == 1
+        and len(later) >= 2
+        and all(
+            strong_crops(m)
+            and {crop_categories.get(c) for c in strong_crops(m)} == {mention.category}
+            for m in later
+        )
+    )
 
 
 def _counts_one(heading: Mention, later: Sequence[Mention]) -> bool:

@@ -298,6 +298,18 @@ _PLACED_WITH_PLANTS = re.compile(
     r"\b(?P<it>(?i:it|them))\s+(?=(?i:with)\s+(?:(?i:its|their)\s+)?"
     r"(?i:trees|vines|plants|bushes|canes)\b)"
 )
+# "two fields: to the north, potatoes ...; to the south, wheat ...": each member's side said
+# before it
+_SIDE_BEFORE_A_MEMBER = re.compile(
+    r"(?P<lead>[:;]\s*)(?i:to|in|on)\s+(?i:the)\s+(?P<side>(?i:north|south|east|west))(?i:ern)?"
+    r"(?:\s+(?i:side|end))?\s*,\s*(?P<rest>[^;.:]+?)(?=\s*(?:[;.]|$))"
+)
+# "a wheat field with a maize plot to its east and a potato plot to its west": each on
+# that side of "it", the field they are with
+_TO_ITS_SIDE = re.compile(
+    r"\b(?i:to)\s+(?P<its>(?i:its|their))\s+(?P<side>(?i:north|south|east|west))(?i:ern)?\b"
+)
+_IT_OF = {"its": "it", "their": "them"}
 # "beyond them, to the south, two fields of potatoes": further on, on that side of them
 _BEYOND_TO_A_SIDE = re.compile(
     r"\b(?i:beyond|past|behind|on\s+the\s+far\s+side\s+of|on\s+the\s+other\s+side\s+of)\s+"
@@ -355,6 +367,13 @@ def place_sides(text: str) -> str:
     text = _FACING_NORTH.sub("", text)
     text = _beyond_as_faced(text)
     text = _PLACED_WITH_PLANTS.sub(r"\g<it>, ", text)
+    text = _TO_ITS_SIDE.sub(
+        lambda m: f"{m.group('side').lower()} of {_IT_OF[m.group('its').lower()]}", text
+    )
+    if len({m.group("side").lower() for m in _SIDE_BEFORE_A_MEMBER.finditer(text)}) >= 2:
+        text = _SIDE_BEFORE_A_MEMBER.sub(
+            lambda m: f"{m.group('lead')}{m.group('rest')} to the {m.group('side').lower()}", text
+        )
     text = _BEYOND_TO_A_SIDE.sub(lambda m: f"{m.group('side').lower()} of {m.group('thing')}", text)
     # "...; further north again, past the lane, there's wheat": further on than the field
     # before, the lane passed on the way

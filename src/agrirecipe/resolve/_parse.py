@@ -287,7 +287,7 @@ class PromptReader(FieldReading):
         )
         mentions = merge_coreferences(clauses, mentions, builder)
         mentions = merge_appositive_plots(clauses, mentions)
-        mentions = drop_list_headings(clauses, mentions)
+        mentions = drop_list_headings(clauses, mentions, self.crop_categories)
         mentions = drop_counted_summaries(clauses, mentions)
         mentions = fill_counted_lists(clauses, mentions)
         mentions = drop_titles(clauses, mentions)

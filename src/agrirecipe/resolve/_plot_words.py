@@ -3,8 +3,9 @@
 "to compare planting systems" (inside a phrase of unknown words), "in the near field"
 (which plot, no placement), "golden and ready to strip" (a verb), "sheep in the paddock"
 (pasture), "brown corky scab patches" (damage), "a patch in the middle where the leaves
-have gone brown" (a part of a field), and "the same" said right after a crop ("Walla
-Walla the same": planted as the field before).
+have gone brown" (a part of a field), "the same" said right after a crop ("Walla
+Walla the same": planted as the field before), and "each a block of 8 rows" after fields
+counted (what each of them is).
 """
 
 from __future__ import annotations
@@ -27,6 +28,7 @@ def plot_words_of_other_things(items: Sequence[Item]) -> None:
     _the_same(items)
     _pastures(items)
     _damage_and_parts(items)
+    _each_a_plot(items)
 
 
 def _inside_unknown_phrases(items: Sequence[Item]) -> None:
@@ -145,3 +147,33 @@ def _where(after: Sequence[Item]) -> bool:
         if item.role in ("head", "plot", "category", "separator"):
             return False
     return False
+
+
+def _each_a_plot(items: Sequence[Item]) -> None:
+    """'three different kinds of fruit tree ..., each a block of 8 rows with 4 m between
+    the rows': "each a <plot>" after a count says what each field counted is (its rows
+    for every one), not one more field; unless a crop follows it in that clause."""
+    counted = False
+    for index, item in enumerate(items):
+        if item.role == "number" and float(item.data.get("value", 1)) >= 2:
+            counted = True
+        if item.role == "separator" and item.norm in (".", "!", "?", ";"):
+            counted = False
+        if (
+            not counted
+            or item.role != "all"
+            or item.norm != "each"
+            or index + 2 >= len(items)
+            or items[index + 1].norm not in ("a", "an")
+            or items[index + 2].role != "plot"
+        ):
+            continue
+        rest = []
+        for later in items[index + 3 :]:
+            if later.role in ("separator", "conjunction", "relation", "between", "trailer"):
+                break
+            rest.append(later)
+        if any(i.role in ("head", "weak_variety", "category", "plot") for i in rest):
+            continue
+        items[index + 1].role = "filler"
+        items[index + 2].role = "filler"

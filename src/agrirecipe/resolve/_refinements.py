@@ -706,12 +706,24 @@ def _names_varieties_of(sub: Mention, parent: Mention) -> bool:
 
 
 def _adds_a_field(clause: Clause, parent: Mention) -> bool:
-    """'... and one of chillies' after a plural that named its crop: one more field.
+    """'... and one of chillies' after a plural that named its crop, '... and one Danvers
+    plot' after a plural of another variety: one more field.
 
     "one of" followed by a crop or variety (not "them"), joined by "and" to a plural
     mention that already says what its fields are, counts a further field.
     """
     words = [i for i in clause.items if i.norm != "the"]
+    if (
+        len(words) >= 2
+        and words[0].role == "number"
+        and words[1].role == "head"
+        and clause.mentions
+        and names_a_variety(clause.mentions[0])
+        and names_a_variety(parent)
+        and not same_variety(parent, clause.mentions[0])
+    ):
+        # "Two Chantenay carrot plots and one Danvers plot": a field of another variety
+        return True
     if len(words) < 3 or words[0].role != "number" or words[1].role != "of":
         return False
     return words[2].role == "head" and bool(strong_crops(parent))

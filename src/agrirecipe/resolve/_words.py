@@ -533,6 +533,19 @@ def _all_as_intensifier(items: Sequence[Item]) -> None:
         beyond = items[index + 2] if index + 2 < len(items) else None
         if beyond is None or beyond.role not in ATTRIBUTE_ROLES:
             item.role = "filler"
+    for before, item, following in zip(items, items[1:], items[2:], strict=False):
+        # "Albion still all flowers and no fruit": all of its own plants, not every field
+        if (
+            item.role == "all"
+            and item.norm == "all"
+            and before.norm in ("still", "now", "already")
+            and following.role in ("stage", "cue")
+        ):
+            item.role = "filler"
+    for before, item in itertools.pairwise(items):
+        # "Elsanta with ripe red berries everywhere": all over its own field
+        if item.role == "all" and item.norm == "everywhere" and before.role in ("cue", "stage"):
+            item.role = "filler"
 
 
 def _each_row(items: Sequence[Item]) -> None:
