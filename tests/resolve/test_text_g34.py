@@ -250,3 +250,20 @@ def test_an_in_row_spacing_said_in_a_spec_sheet() -> None:
     assert (corn.variety, corn.row_count) == ("Sweet Corn", 16)
     assert (corn.agronomy.row_spacing_m, corn.agronomy.in_row_spacing_m) == (0.76, 0.2)
     assert corn.row_length_m == pytest.approx(80)
+
+
+def test_one_of_two_plots_named_by_its_side() -> None:
+    result = recipe(
+        "Two banana plots 15 m apart on an east-west line, both 3 x 3 m spacing. The western "
+        "plot has black Sigatoka streaks on the leaves."
+    )
+    western, eastern = result.fields
+    assert (western.health, eastern.health) == ("Ill", "Healthy")
+    assert [(r.kind, r.subject, r.objects) for r in result.relations] == [
+        ("west_of", western.id, (eastern.id,))
+    ]
+    # (both named by their sides: each its own)
+    west, east = recipe(
+        "Two banana plots. The western plot has Sigatoka, the eastern plot is healthy."
+    ).fields
+    assert (west.health, east.health) == ("Ill", "Healthy")

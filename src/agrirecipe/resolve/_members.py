@@ -1,7 +1,8 @@
 """Members of counted fields named again (issue 8): "one still vegetative, the other
 tasseling. The young planting is on the south side", "one at 30-inch rows, one at
 36-inch rows, the 30-inch plot west of the 36-inch plot", "the 70k plot lies north of the
-95k plot", "the Winter Wheat and Spring Wheat plots ..., the winter one much taller".
+95k plot", "the Winter Wheat and Spring Wheat plots ..., the winter one much taller", "Two banana
+plots ... The western plot has black Sigatoka".
 
 Before the prompt is read, such a reference is written as what it points at: "the
 first" / "the second" (the order the members were said in), or the variety's whole name.
@@ -23,7 +24,9 @@ _ORDINAL_WORDS = ("the first", "the second", "the third", "the fourth")
 def name_members_again(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
     """``text`` with members named again by a word of their variety, their look or their
     measure written as the member itself."""
-    return _members_by_measure(_members_by_look(_members_by_a_word(text, tag), tag))
+    return _member_by_its_side(
+        _members_by_measure(_members_by_look(_members_by_a_word(text, tag), tag))
+    )
 
 
 # "one still vegetative at about V5, the other tasseling. The young planting is on the
@@ -157,3 +160,32 @@ def valued_members(text: str) -> str:
     for match, value in reversed(list(zip(references, values, strict=True))):
         out = out[: match.start()] + _ORDINAL_WORDS[order.index(value)] + out[match.end() :]
     return out
+
+
+# "Two banana plots 15 m apart on an east-west line ... The western plot has black
+# Sigatoka": one of two members named by its side, as the subject of what it has
+_BY_ITS_SIDE = re.compile(
+    r"\b(?i:the)\s+(?P<side>(?i:north|south|east|west))(?i:ern)?\s+"
+    r"(?i:plot|block|field|one|strip|bed|patch)\s+"
+    r"(?=(?i:has|have|is|shows|looks|got|was)\b)"
+)
+_TWO_PLOTS = re.compile(
+    r"\b(?i:two|2)\s+(?:[\w-]+\s+){0,2}(?i:plots|blocks|fields|strips|beds|patches)\b"
+)
+
+
+def _member_by_its_side(text: str) -> str:
+    """``text`` with "The western plot has ..." written "One of them, west of the other,
+    has ..." after two plots counted, when no other member is named by a side."""
+    sides = list(_BY_ITS_SIDE.finditer(text))
+    if len(sides) != 1:
+        return text
+    counted = _TWO_PLOTS.search(text)
+    if counted is None or counted.end() > sides[0].start():
+        return text
+    side = sides[0].group("side").lower()
+    opposite = {"north": "south", "south": "north", "east": "west", "west": "east"}[side]
+    if re.search(rf"\b(?i:the)\s+{opposite}(?i:ern)?\s", text):
+        return text  # ("the western plot ..., the eastern plot ...": both named by side)
+    start, end = sides[0].span()
+    return f"{text[:start]}one of them, {side} of the other, {text[end:]}"
