@@ -16,6 +16,7 @@ from collections.abc import Sequence
 from agrirecipe.resolve._decompose import Clause, Mention, MentionBuilder
 from agrirecipe.resolve._descriptions import said_with_a_verb
 from agrirecipe.resolve._links import ARTICLES
+from agrirecipe.resolve._members import ORDINAL_WORDS
 from agrirecipe.resolve._placed_members import (
     in_another_zone,
     on_a_side_of_it,
@@ -473,7 +474,7 @@ def merge_coreferences(
 
 
 #: Where an ordinal word points among the fields named in order.
-_ORDER_OF = {"the first": 0, "the second": 1, "the third": 2, "the fourth": 3, "the last": -1}
+_ORDER_OF = {**{word: at for at, word in enumerate(ORDINAL_WORDS)}, "the last": -1}
 
 
 def _named_in_order(kept: Sequence[Mention], mention: Mention) -> Mention | None:

@@ -16,8 +16,9 @@ from __future__ import annotations
 import re
 from collections.abc import Callable, Sequence
 
+from agrirecipe.resolve._geometry import number_words
 from agrirecipe.resolve._lexicon import Item, tokenize, vocabulary
-from agrirecipe.resolve._members import name_members_again, valued_members
+from agrirecipe.resolve._members import ORDINAL_WORDS, name_members_again, valued_members
 
 __all__ = [
     "drop_list_numbers",
@@ -338,10 +339,6 @@ _BARE_MEMBER = re.compile(
 )
 
 
-_ORDINALS = ("the first", "the second", "the third", "the fourth")
-_COUNT_WORDS = {2: "two", 3: "three", 4: "four"}
-
-
 def _numbered_members(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
     """``text`` with the two members of "two maize plots" called "plot 1" and "plot 2"
     written "one" and "the other" where first named, "the first" and "the second" after
@@ -359,7 +356,7 @@ def _numbered_members(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
         return text
     labels = [m.group("label").upper() for m in matches]
     members = len(set(labels))
-    if not 2 <= members <= len(_ORDINALS) or set(labels) not in (
+    if not 2 <= members <= len(ORDINAL_WORDS) or set(labels) not in (
         {str(n) for n in range(1, members + 1)},
         {chr(ord("A") + n) for n in range(members)},
     ):
@@ -367,7 +364,7 @@ def _numbered_members(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
     noun = matches[0].group("noun").lower()
     if any(m.group("noun").lower() != noun for m in matches):
         return text
-    count = _COUNT_WORDS[members]
+    count = "|".join(w for w, v in number_words().items() if v == members and " " not in w)
     counted = re.search(
         rf"\b(?i:{count}|{members})\s+(?:[\w-]+\s+){{0,2}}(?i:{noun}s|{noun}es)\b", text
     )
@@ -391,7 +388,7 @@ def _numbered_members(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
             m.group("label").upper() != label for m in matches if m.start() < match.start()
         )
         if by_order:
-            word = _ORDINALS[int(label) - 1 if label.isdigit() else ord(label) - ord("A")]
+            word = ORDINAL_WORDS[int(label) - 1 if label.isdigit() else ord(label) - ord("A")]
         elif first_said:
             word = "one" if label in "1A" else "the other"
         else:
@@ -414,6 +411,11 @@ def _crop_phrase(following: str, tag: Callable[[str], Sequence[Item]]) -> str:
     return ""
 
 
+# "top half corn bottom half wheat": the next side's part, said after a field's words
+_SIDE_PART = (
+    r"\s+(?:(?i:the)\s+)?(?i:north|south|east|west|top|bottom|upper|lower)(?i:ern)?\s+"
+    r"(?i:plot|block|field|one|part|half|strip|parcel|section|paddock|area)\b"
+)
 # "the east plot is Bintje with late blight, ...": a field named by its compass position
 _LEADING = re.compile(
     r"(?<!in )(?<!on )(?<!of )(?<!at )(?<!to )"
@@ -427,16 +429,10 @@ _LEADING = re.compile(
     r"(?:(?!\s+(?i:and|but|while|whereas)\s+(?:(?i:the)\s+)?"
     r"(?i:north|south|east|west|top|bottom|upper|lower)(?i:ern)?\s)"
     # ("top half corn bottom half wheat": to the next side's part, said without a mark)
-    r"(?!\s+(?P<next>(?:(?i:the)\s+)?(?i:north|south|east|west|top|bottom|upper|lower)(?i:ern)?"
-    r"\s+(?i:plot|block|field|one|part|half|strip|parcel|section|paddock|area)\b))"
+    rf"(?!{_SIDE_PART})"
     r"[^,;.:()]|[.,](?=\d))*)"
 )
-
-
-_NEXT_SIDE = re.compile(
-    r"\s+(?:(?i:the)\s+)?(?i:north|south|east|west|top|bottom|upper|lower)(?i:ern)?\s+"
-    r"(?i:plot|block|field|one|part|half|strip|parcel|section|paddock|area)\b"
-)
+_NEXT_SIDE = re.compile(_SIDE_PART)
 
 
 # "the western block at 2.75 m between rows", "the eastern one at 3 m": a member named by

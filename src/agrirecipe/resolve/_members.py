@@ -14,11 +14,12 @@ import re
 from collections.abc import Callable, Sequence
 
 from agrirecipe.resolve._lexicon import Item, number_value, tokenize
+from agrirecipe.resolve._links import OPPOSITE
 
-__all__ = ["name_members_again", "valued_members"]
+__all__ = ["ORDINAL_WORDS", "name_members_again", "valued_members"]
 
 #: How the members said in order are named again.
-_ORDINAL_WORDS = ("the first", "the second", "the third", "the fourth")
+ORDINAL_WORDS = ("the first", "the second", "the third", "the fourth")
 
 
 def name_members_again(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
@@ -88,7 +89,7 @@ def _members_by_measure(text: str) -> str:
         measures.append((float(found.group("n")), found.group("unit")[:2].lower()))
     if (
         len(measures) < 2
-        or len(measures) > len(_ORDINAL_WORDS)
+        or len(measures) > len(ORDINAL_WORDS)
         or len(set(measures)) != len(measures)
     ):
         return text
@@ -96,7 +97,7 @@ def _members_by_measure(text: str) -> str:
 
     def rewrite(match: re.Match[str]) -> str:
         key = (float(match.group("n")), match.group("unit")[:2].lower())
-        return _ORDINAL_WORDS[measures.index(key)] if key in measures else match.group(0)
+        return ORDINAL_WORDS[measures.index(key)] if key in measures else match.group(0)
 
     return text[:start] + _BY_MEASURE.sub(rewrite, text[start:])
 
@@ -112,7 +113,7 @@ def _members_by_look(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
 
     said = list(_MEMBER_SAID.finditer(text))
     members = [looks(m.group("said")) for m in said]
-    if len(members) < 2 or len(members) > len(_ORDINAL_WORDS) or not all(members):
+    if len(members) < 2 or len(members) > len(ORDINAL_WORDS) or not all(members):
         return text
     start = said[-1].end()
 
@@ -122,10 +123,10 @@ def _members_by_look(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
         if len(fitting) != 1:
             return match.group(0)
         if match.group("placed") and len(members) == 2:
-            other = _ORDINAL_WORDS[1 - fitting[0]]
+            other = ORDINAL_WORDS[1 - fitting[0]]
             side = match.group("side").lower()
-            return f"{_ORDINAL_WORDS[fitting[0]]} is {side} of {other}"
-        return _ORDINAL_WORDS[fitting[0]] + (match.group("placed") or "")
+            return f"{ORDINAL_WORDS[fitting[0]]} is {side} of {other}"
+        return ORDINAL_WORDS[fitting[0]] + (match.group("placed") or "")
 
     # (only after the members are said: "one young, the other ripe")
     return text[:start] + _BY_LOOK.sub(rewrite, text[start:])
@@ -154,11 +155,11 @@ def valued_members(text: str) -> str:
         return text
     said = [_number_of(m.group()) for m in _NUMBER.finditer(text[: references[0].start()])]
     order = list(dict.fromkeys(x for x in said if x in values))
-    if len(order) != len(set(values)) or len(order) > len(_ORDINAL_WORDS):
+    if len(order) != len(set(values)) or len(order) > len(ORDINAL_WORDS):
         return text
     out = text
     for match, value in reversed(list(zip(references, values, strict=True))):
-        out = out[: match.start()] + _ORDINAL_WORDS[order.index(value)] + out[match.end() :]
+        out = out[: match.start()] + ORDINAL_WORDS[order.index(value)] + out[match.end() :]
     return out
 
 
@@ -184,7 +185,7 @@ def _member_by_its_side(text: str) -> str:
     if counted is None or counted.end() > sides[0].start():
         return text
     side = sides[0].group("side").lower()
-    opposite = {"north": "south", "south": "north", "east": "west", "west": "east"}[side]
+    opposite = OPPOSITE[f"{side}_of"].removesuffix("_of")
     if re.search(rf"\b(?i:the)\s+{opposite}(?i:ern)?\s", text):
         return text  # ("the western plot ..., the eastern plot ...": both named by side)
     start, end = sides[0].span()
