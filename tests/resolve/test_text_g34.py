@@ -267,3 +267,29 @@ def test_one_of_two_plots_named_by_its_side() -> None:
         "Two banana plots. The western plot has Sigatoka, the eastern plot is healthy."
     ).fields
     assert (west.health, east.health) == ("Ill", "Healthy")
+
+
+def test_a_bracket_of_measures_after_the_last_field_is_its_own() -> None:
+    result = recipe(
+        "Jonagored block (rows 3.2 m apart, trees 0.8 m) between two Fuji blocks (rows 3.5 m, "
+        "trees 1 m); rows NE-SW throughout."
+    )
+    jonagold, *fuji = result.fields
+    assert (jonagold.variety, [f.variety for f in fuji]) == ("Jonagold", ["Fuji", "Fuji"])
+    assert (jonagold.agronomy.row_spacing_m, jonagold.agronomy.in_row_spacing_m) == (3.2, 0.8)
+    assert {(f.agronomy.row_spacing_m, f.agronomy.in_row_spacing_m) for f in fuji} == {(3.5, 1.0)}
+    assert {f.row_bearing_deg for f in result.fields} == {45.0}
+
+
+def test_members_counted_in_a_count_are_on_no_side_of_each_other() -> None:
+    result = recipe(
+        "Four plots in a 2 x 2 grid, all 15 x 15 m with rows 30 cm apart: two lettuce plots on "
+        "the north side, two onion plots on the south side."
+    )
+    crops = {f.id: f.crop for f in result.fields}
+    assert sorted(crops.values()) == ["Lettuce", "Lettuce", "Onion", "Onion"]
+    for relation in result.relations:
+        assert crops[relation.subject] != crops[relation.objects[0]]
+    assert ("north_of", "Lettuce", "Onion") in {
+        (r.kind, crops[r.subject], crops[r.objects[0]]) for r in result.relations
+    }

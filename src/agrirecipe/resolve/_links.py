@@ -103,8 +103,17 @@ def field_relations(
         return [
             RelationIntent(kind="between", subject=subject_fields[0], objects=pair, text=link.raw)
         ]
-    # a field named twice ("Valencia oranges ... near Valencia") is not beside itself
-    pairs = [(s, o) for s in subject_fields for o in object_fields[0] if s != o]
+    # a field named twice ("Valencia oranges ... near Valencia") is not beside itself;
+    # members are on no side of themselves within the fields counted that hold them
+    # ("Four plots ...: two lettuce plots on the north side, two onion plots on the south
+    # side": not one lettuce plot north of the other)
+    within = kind != "next_to" and set(subject_fields) < set(object_fields[0])
+    pairs = [
+        (s, o)
+        for s in subject_fields
+        for o in object_fields[0]
+        if s != o and not (within and o in subject_fields)
+    ]
     if kind == "next_to" and len(pairs) > 2:
         # Groups side by side: one field can touch at most two in a row, so
         # "two orchards next to three fields" means the groups touch.

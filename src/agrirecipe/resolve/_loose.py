@@ -115,6 +115,9 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
             before
             and not after
             and (len(before) > 1 or any((m.count or 1) > 1 for m in before))
+            # (not inside the bracket of measures after the last field: "... between two
+            # Fuji blocks (rows 3.5 m, trees 1 m)" is the Fuji blocks')
+            and bracketed_by(clauses, position) is None
             and (
                 any(_says_all_plants(i) for i in others)
                 # "... 8 rows. Trees in bloom.": a sentence about the plants in general
