@@ -35,7 +35,7 @@ step  pass                                        module (data)
 10    weak variety names; mentions taken back    ``_weak_varieties``,
       (corrections, alternatives, choices left    ``_retractions``,
       open, negations); counts, shared            ``_structure``,
-      attributes; the members a plural lists;     ``_refinements``,
+      attributes; the members a plural lists;     ``_refinements``, ``_listing``,
       descriptions of plants named;               ``_descriptions``,
       back-references (and where a mention is     ``_coreference``,
       placed); plots said with a field;           ``_placed_members``,

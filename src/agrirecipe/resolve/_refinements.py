@@ -16,7 +16,18 @@ from agrirecipe._errors import PromptError
 from agrirecipe.resolve._decompose import Clause, Mention, MentionBuilder
 from agrirecipe.resolve._geometry import geometry_nouns
 from agrirecipe.resolve._lexicon import Item
-from agrirecipe.resolve._links import PRONOUNS, link_norm, listing
+from agrirecipe.resolve._links import link_norm, listing
+from agrirecipe.resolve._listing import (
+    adds_a_field,
+    listed_again,
+    listed_fields,
+    lists_exactly,
+    named_again,
+    names_again,
+    names_varieties_of,
+    placed_against,
+    placed_by_scenery,
+)
 from agrirecipe.resolve._structure import (
     EACH,
     POINTER_WORDS,
@@ -26,7 +37,6 @@ from agrirecipe.resolve._structure import (
     has_room,
     names_a_variety,
     per_bed,
-    pronoun_one,
     same_variety,
     strong_crops,
 )
@@ -100,7 +110,7 @@ def apply_refinements(
             and clause.link.role in ("relation", "between")
             and len(clause.mentions) == 1
             and definite_before_head(clause, clause.mentions[0])
-            and any(_named_again(clause.mentions[0], r) for r in parent.refinements)
+            and any(named_again(clause.mentions[0], r) for r in parent.refinements)
             # (not "Block B, directly east of the Conference pears: Jonagored apples": the
             # field it places comes after)
             and not (
@@ -110,7 +120,7 @@ def apply_refinements(
             # "three fields: wheat up by the woods, potatoes right next to the wheat, and
             # ...": the member a relation places against, named again; the listing goes on
             again = clause.mentions[0]
-            clause.mentions = [next(r for r in parent.refinements if _named_again(again, r))]
+            clause.mentions = [next(r for r in parent.refinements if named_again(again, r))]
             clause.refined_parent = parent
             clause.refinement = previous.refinement
             continue
@@ -150,12 +160,12 @@ def apply_refinements(
                         )
                         # "two blocks - Ladyfinger down near the river, Gros Michel up
                         # by the sheds": placed by the scenery
-                        or _placed_by_scenery(clause)
+                        or placed_by_scenery(clause)
                     )
                 )
                 # "two groves, Washington Navel on the north side of the packing shed and
                 # Valencia Late ...": a side of the scenery
-                or (clause.link.role == "trailer" and _placed_by_scenery(clause))
+                or (clause.link.role == "trailer" and placed_by_scenery(clause))
             )
         ):
             # "carrots (75 cm ridges, 2 rows per ridge), onions ...": the listed member's
@@ -208,7 +218,7 @@ def apply_refinements(
             and clauses[clause.index - 1].refined_parent is parent
             and len(clause.mentions) == 1
             and (
-                _names_varieties_of(clause.mentions[0], parent)
+                names_varieties_of(clause.mentions[0], parent)
                 # "two plots: a pear orchard, and north of it a strawberry field"
                 or (
                     enumerating
@@ -279,7 +289,7 @@ def apply_refinements(
                 and parent.count == parent.quantity
                 and not parent.refinements
                 and link.norm == ","
-                and len(vague := _listed(clauses, clause.index)) >= 2
+                and len(vague := listed_fields(clauses, clause.index)) >= 2
                 and all((m.count or 1) == 1 for m in vague)
             ):
                 # "A patchwork of veg beds ..., I can make out onions, carrots and lettuce":
@@ -290,15 +300,15 @@ def apply_refinements(
                 or link.norm in (":", "-", "—", "–")
                 # "two blocks, 150 cherry trees ... and 300 apple trees ...": as many
                 # fields as announced, listed after a comma
-                or (link.norm == "," and _lists_exactly(clauses, clause.index, parent.count))
+                or (link.norm == "," and lists_exactly(clauses, clause.index, parent.count))
                 # "... on two bed plots. Lollo Rosso: 4 beds ... Beside it, carrots: ..."
                 or (
                     link.norm in (".", "?", "!")  # ("... for our sim? Gala apples ...")
-                    and _lists_exactly(clauses, clause.index, parent.count, to_the_end=True)
+                    and lists_exactly(clauses, clause.index, parent.count, to_the_end=True)
                 )
             )
             lists_members = lists_members or (
-                _names_varieties_of(sub, parent) and (enumerating or link.role == "separator")
+                names_varieties_of(sub, parent) and (enumerating or link.role == "separator")
             )
             if (
                 link.norm in (".", "!", "?", ";")
@@ -318,13 +328,13 @@ def apply_refinements(
                         or (
                             link.role == "separator"
                             and not parent.distinct
-                            and _names_again(r, sub, placed=_placed_against(clauses, clause))
+                            and names_again(r, sub, placed=placed_against(clauses, clause))
                         )
                         for r in parent.refinements
                     )
                     # "3 blocks: maize | cabbage | maize again": a crop listed again is a
                     # member of its own while the count still has room for it
-                    and not _listed_again(clauses, clause, parent)
+                    and not listed_again(clauses, clause, parent)
                 )
                 # "centenary & albion strawberries, 2 fields, albion south of centenary":
                 # the count says again how many fields were named; the varieties after it
@@ -353,7 +363,7 @@ def apply_refinements(
                 is_reference
                 and link.role == "conjunction"
                 and follows_parent
-                and _adds_a_field(clause, parent)
+                and adds_a_field(clause, parent)
             ):
                 is_reference = False  # "three fields of sweet peppers and one of chillies"
             fits = _fits(sub, parent, crop_categories)
@@ -545,188 +555,6 @@ _MEMBER_DETAIL_ROLES = frozenset(
         "season",
     }
 )
-
-
-def _lists_exactly(
-    clauses: Sequence[Clause], start: int, count: int | None, *, to_the_end: bool = False
-) -> bool:
-    """Whether the clauses from ``start`` to the end of the sentence (or of the prompt)
-    name exactly ``count`` single fields, joined as a list (commas and "and")."""
-    named = _listed(clauses, start, to_the_end=to_the_end)
-    return (
-        count is not None
-        and count >= 2
-        and len(named) == count
-        and all((m.count or 1) == 1 for m in named)
-    )
-
-
-def _listed(clauses: Sequence[Clause], start: int, *, to_the_end: bool = False) -> list[Mention]:
-    """The fields of named crops the clauses from ``start`` name, to the end of the
-    sentence (or of the prompt), joined as a list (commas and "and")."""
-    named: list[Mention] = []
-    for clause in clauses[start:]:
-        link = clause.link
-        if (
-            not to_the_end
-            and clause.index > start
-            and link is not None
-            and not listing(link)
-            and (
-                link.norm in (".", "!", "?", ";")
-                # ("two 0.25 ha plots, carrots north of onions": the list placed in itself)
-                or (
-                    link.role == "relation"
-                    and not _bare_crop_first(clause)
-                    # ("two fields, wheat by the barn, maize near the river")
-                    and not _placed_by_scenery(clause)
-                    # ("... Conference pears ... and, north of them, Kordia cherries")
-                    and not (
-                        not clause.mentions
-                        and any(i.norm in PRONOUNS for i in clause.items)
-                        and all(i.norm in PRONOUNS or i.role == "filler" for i in clause.items)
-                    )
-                )
-            )
-        ):
-            break
-        # fields named again ("the Comice") or plot words alone ("Beds and ridges run
-        # NW-SE") name no new field
-        named.extend(
-            m for m in clause.mentions if m.has_crop and not definite_before_head(clause, m)
-        )
-    return named
-
-
-def _named_again(again: Mention, member: Mention) -> bool:
-    """Whether ``again`` ("the wheat") names ``member`` again: the same crop, and no other
-    variety ("between the Cos and the Bibb" after "Iceberg" names two more fields)."""
-    if not strong_crops(again) & strong_crops(member):
-        return False
-    said = {v for _, v, _ in again.interpretations or () if v}
-    return (
-        not said
-        or not names_a_variety(member)
-        or bool(said & {v for _, v, _ in member.interpretations or () if v})
-    )
-
-
-def _placed_by_scenery(clause: Clause) -> bool:
-    """'near the river', 'by the sheds': a relation to scenery, naming no field (not
-    "beside it", which points back at one)."""
-    return (
-        not clause.mentions
-        and bool(clause.items)
-        and (
-            all(i.role in ("filler", "non_agricultural") for i in clause.items)
-            # "of the packing shed": what scenery it is a side of
-            or (
-                clause.items[0].role == "of"
-                and all(i.role in ("of", "filler", "unknown") for i in clause.items)
-                and any("scenery" in i.data for i in clause.items)
-            )
-        )
-        and not any(i.norm in PRONOUNS for i in clause.items)
-    )
-
-
-def _bare_crop_first(clause: Clause) -> bool:
-    """Whether the clause opens with a crop named without an article ("onions")."""
-    return (
-        bool(clause.mentions)
-        and bool(clause.items)
-        and clause.items[0] in clause.mentions[0].heads
-        and clause.mentions[0].has_crop
-    )
-
-
-def _listed_again(clauses: Sequence[Clause], clause: Clause, parent: Mention) -> bool:
-    """Whether ``clause``, a crop of the list after ``parent``'s stated count named again,
-    is one more member: the count has room for it and the rest of the list, and it is
-    not placed against another field ("..., wheat north of the potatoes")."""
-    link = clause.link
-    room = (parent.count or 0) - len(parent.refinements)
-    return (
-        link is not None
-        and link.role == "separator"
-        and parent.count is not None
-        and not parent.implied_count
-        and room > 0
-        and len(_listed(clauses, clause.index)) <= room
-        and not _placed_against(clauses, clause)
-    )
-
-
-def _names_again(member: Mention, sub: Mention, *, placed: bool = False) -> bool:
-    """Whether ``sub`` (no count, no variety, no plot of its own) names ``member``'s crop.
-
-    A plot of its own is allowed when ``sub`` is placed against another field ("...,
-    chillies in 1 m rows, chilli plot west of the bananas")."""
-    crops = strong_crops(sub)
-    return (
-        sub.count is None
-        and bool(crops)
-        and crops == strong_crops(member)
-        and not names_a_variety(sub)
-        and (placed or not any(h.role == "plot" for h in sub.heads))
-    )
-
-
-def _placed_against(clauses: Sequence[Clause], clause: Clause) -> bool:
-    """Whether the clause after ``clause`` places it ("... west of the bananas")."""
-    following = clauses[clause.index + 1] if clause.index + 1 < len(clauses) else None
-    return (
-        following is not None
-        and following.link is not None
-        and following.link.role in ("relation", "between")
-    )
-
-
-def _names_varieties_of(sub: Mention, parent: Mention) -> bool:
-    """``sub`` names, without a count of its own, a variety of the crop ``parent`` names."""
-    crops = strong_crops(parent)
-    if not crops and parent.plot is not None and len(parent.plot["options"]) == 1:
-        crops = {parent.plot["options"][0]}  # "two vineyards, chardonnay ..."
-    named = {(c, v) for c, v, weak in sub.interpretations or () if v is not None and not weak}
-    # "3 cherry blocks: Lapins, Regina and Bing": "cherry" may also be a tomato variety;
-    # the crop the members name decides which reading the parent has
-    common = crops & {c for c, _ in named}
-    return (
-        (
-            sub.count is None
-            or (sub.count == 1 and pronoun_one(sub))
-            # ("two wheat plots: durum wheat north of a winter wheat plot")
-            or (sub.count == 1 and any(i.norm in ("a", "an") for i in sub.items))
-        )
-        and len(common) == 1
-        and bool(named)
-        and {c for c, _ in named} <= crops
-        and not any(v is not None for c, v, _ in parent.interpretations or () if c in common)
-    )
-
-
-def _adds_a_field(clause: Clause, parent: Mention) -> bool:
-    """'... and one of chillies' after a plural that named its crop, '... and one Danvers
-    plot' after a plural of another variety: one more field.
-
-    "one of" followed by a crop or variety (not "them"), joined by "and" to a plural
-    mention that already says what its fields are, counts a further field.
-    """
-    words = [i for i in clause.items if i.norm != "the"]
-    if (
-        len(words) >= 2
-        and words[0].role == "number"
-        and words[1].role == "head"
-        and clause.mentions
-        and names_a_variety(clause.mentions[0])
-        and names_a_variety(parent)
-        and not same_variety(parent, clause.mentions[0])
-    ):
-        # "Two Chantenay carrot plots and one Danvers plot": a field of another variety
-        return True
-    if len(words) < 3 or words[0].role != "number" or words[1].role != "of":
-        return False
-    return words[2].role == "head" and bool(strong_crops(parent))
 
 
 def _join_of_which(clauses: Sequence[Clause]) -> None:
