@@ -293,3 +293,18 @@ def test_members_counted_in_a_count_are_on_no_side_of_each_other() -> None:
     assert ("north_of", "Lettuce", "Onion") in {
         (r.kind, crops[r.subject], crops[r.objects[0]]) for r in result.relations
     }
+
+
+def test_a_plot_labelled_middle_between_one_side_and_the_other() -> None:
+    result = recipe(
+        "Orchard layout, three blocks, rows at 30 degrees from north in all of them. Middle "
+        "block: Kordia cherries, rows 4.6 m apart, trees 2.4 m. On one side Gala apples, 3.4 m "
+        "rows, trees at 1 m; on the other side Comice pears, 3.5 m rows, trees at 1 m."
+    )
+    cherries, apples, pears = result.fields
+    assert (cherries.variety, apples.variety, pears.crop) == ("Kordia", "Gala", "Pear")
+    assert [(r.kind, r.subject, r.objects) for r in result.relations] == [
+        ("between", cherries.id, (apples.id, pears.id))
+    ]
+    assert cherries.agronomy.row_spacing_m == 4.6
+    assert {f.row_bearing_deg for f in result.fields} == {30.0}

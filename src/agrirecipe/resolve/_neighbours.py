@@ -350,6 +350,13 @@ _SIDE_LABELS = {
 }
 
 
+# "Middle block: Kordia cherries ...": a plot labelled by its place in the middle
+_MIDDLE_LABEL = re.compile(
+    r"(?:^|(?<=[.;!?]\s))(?i:middle|centre|center|central)\s+"
+    r"(?i:block|plot|field|strip|bed|section)\s*:\s*(?=[A-Za-z])"
+)
+
+
 def place_sides(text: str) -> str:
     """``text`` with "X with A on one side and B on the other" written "X between A and
     B", "..., danvers one east" written "..., danvers one east of the other", "the
@@ -367,6 +374,7 @@ def place_sides(text: str) -> str:
     text = _FACING_NORTH.sub("", text)
     text = _beyond_as_faced(text)
     text = _PLACED_WITH_PLANTS.sub(r"\g<it>, ", text)
+    text = _MIDDLE_LABEL.sub("In the middle, ", text)
     text = _TO_ITS_SIDE.sub(
         lambda m: f"{m.group('side').lower()} of {_IT_OF[m.group('its').lower()]}", text
     )

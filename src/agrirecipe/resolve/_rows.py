@@ -23,6 +23,7 @@ from agrirecipe.resolve._links import (
     field_relations,
     fields_of,
     following_list,
+    link_norm,
     says,
 )
 
@@ -220,7 +221,27 @@ def one_side_and_the_other(
     if any({r.subject, *r.objects} == pair for r in relations):
         return []
     side = next(i for i in one.items if i.norm == "side")
+    middle = _said_in_the_middle(clauses, (one, other))
+    if middle is not None and len(members.get(id(middle), [])) == 1:
+        # "In the middle, Kordia cherries ... On one side Gala apples ...; on the other
+        # side Comice pears": the one in the middle is between the two sides
+        return field_relations("between", middle, (one, other), members, side, trace)
     return field_relations("next_to", other, (one,), members, side, trace)
+
+
+def _said_in_the_middle(clauses: Sequence[Clause], sides: Sequence[Mention]) -> Mention | None:
+    """The field a clause opening "in the middle" names (in it or right after its comma),
+    when it is none of ``sides``."""
+    for index, clause in enumerate(clauses):
+        link = clause.link
+        if link is None or link.role != "trailer" or link.data.get("value") != "middle":
+            continue
+        after = clauses[index + 1] if index + 1 < len(clauses) else None
+        right_after = not clause.items and after is not None and link_norm(after) == ","
+        named = clause.mentions or (after.mentions if right_after and after is not None else [])
+        if named and all(named[0] is not m for m in sides):
+            return named[0]
+    return None
 
 
 def adjacent_rows(
