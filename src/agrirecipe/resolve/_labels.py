@@ -16,9 +16,13 @@ from __future__ import annotations
 import re
 from collections.abc import Callable, Sequence
 
-from agrirecipe.resolve._geometry import number_words
 from agrirecipe.resolve._lexicon import Item, tokenize, vocabulary
-from agrirecipe.resolve._members import ORDINAL_WORDS, name_members_again, valued_members
+from agrirecipe.resolve._members import (
+    ORDINAL_WORDS,
+    counted_plots,
+    name_members_again,
+    valued_members,
+)
 
 __all__ = [
     "drop_list_numbers",
@@ -364,10 +368,7 @@ def _numbered_members(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
     noun = matches[0].group("noun").lower()
     if any(m.group("noun").lower() != noun for m in matches):
         return text
-    count = "|".join(w for w, v in number_words().items() if v == members and " " not in w)
-    counted = re.search(
-        rf"\b(?i:{count}|{members})\s+(?:[\w-]+\s+){{0,2}}(?i:{noun}s|{noun}es)\b", text
-    )
+    counted = counted_plots(text, members, (noun,))
     if counted is None or counted.end() > matches[0].start():
         return text
     # "two plots ... plot 1 ..., plot 2 ...": one and the other where first named; the

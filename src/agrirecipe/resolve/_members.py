@@ -13,10 +13,11 @@ from __future__ import annotations
 import re
 from collections.abc import Callable, Sequence
 
+from agrirecipe.resolve._geometry import number_words
 from agrirecipe.resolve._lexicon import Item, number_value, tokenize
 from agrirecipe.resolve._links import OPPOSITE
 
-__all__ = ["ORDINAL_WORDS", "name_members_again", "valued_members"]
+__all__ = ["ORDINAL_WORDS", "counted_plots", "name_members_again", "valued_members"]
 
 #: How the members said in order are named again.
 ORDINAL_WORDS = ("the first", "the second", "the third", "the fourth")
@@ -170,9 +171,6 @@ _BY_ITS_SIDE = re.compile(
     r"(?i:plot|block|field|one|strip|bed|patch)\s+"
     r"(?=(?i:has|have|is|shows|looks|got|was)\b)"
 )
-_TWO_PLOTS = re.compile(
-    r"\b(?i:two|2)\s+(?:[\w-]+\s+){0,2}(?i:plots|blocks|fields|strips|beds|patches)\b"
-)
 
 
 def _member_by_its_side(text: str) -> str:
@@ -181,7 +179,7 @@ def _member_by_its_side(text: str) -> str:
     sides = list(_BY_ITS_SIDE.finditer(text))
     if len(sides) != 1:
         return text
-    counted = _TWO_PLOTS.search(text)
+    counted = counted_plots(text, 2, ("plot", "block", "field", "strip", "bed", "patch"))
     if counted is None or counted.end() > sides[0].start():
         return text
     side = sides[0].group("side").lower()
@@ -190,3 +188,13 @@ def _member_by_its_side(text: str) -> str:
         return text  # ("the western plot ..., the eastern plot ...": both named by side)
     start, end = sides[0].span()
     return f"{text[:start]}one of them, {side} of the other, {text[end:]}"
+
+
+def counted_plots(text: str, count: int, nouns: Sequence[str]) -> re.Match[str] | None:
+    """Where ``text`` first counts ``count`` plots of one of ``nouns`` ("two maize plots",
+    "3 wheat strips"), the count in digits or in geometry.yaml's words; None if nowhere."""
+    said = "|".join(
+        [str(count), *(w for w, v in number_words().items() if v == count and " " not in w)]
+    )
+    plurals = "|".join(f"{n}s|{n}es" for n in nouns)
+    return re.search(rf"\b(?i:{said})\s+(?:[\w-]+\s+){{0,2}}(?i:{plurals})\b", text)

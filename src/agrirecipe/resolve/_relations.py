@@ -174,7 +174,18 @@ def read_relations(
             continue
         if (
             link.role in ("trailer", "relation")
-            and not clause.mentions
+            and (
+                not clause.mentions
+                # "..., with a tractor parked by the Bintje", "the sprayer boom folded up by
+                # the first field": scenery placed by a field named before
+                or (
+                    link.role == "relation"
+                    and all(
+                        any(m is n for c in clauses[:position] for n in c.named)
+                        for m in clause.mentions
+                    )
+                )
+            )
             and position
             and not clauses[position - 1].mentions
             and any(i.scenery for i in clauses[position - 1].items)
@@ -195,25 +206,6 @@ def read_relations(
         ):
             # "..., with the village road running along the east side", "Rain covers
             # rolled up above both": the scenery is placed, not a field
-            trace.append(
-                TraceStep(
-                    stage="decompose", subject=link.raw, detail="relative to scenery: not used"
-                )
-            )
-            continue
-        if (
-            link.role == "relation"
-            and clause.mentions
-            and position
-            and not clauses[position - 1].named
-            and any(i.scenery for i in clauses[position - 1].items)
-            and _not_placed(clauses[position - 1])
-            and all(
-                any(m is n for c in clauses[:position] for n in c.named) for m in clause.mentions
-            )
-        ):
-            # "..., with a tractor parked by the Bintje", "the sprayer boom folded up by the
-            # first field": scenery placed by a field named before, no field placed
             trace.append(
                 TraceStep(
                     stage="decompose", subject=link.raw, detail="relative to scenery: not used"
