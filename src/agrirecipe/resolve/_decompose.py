@@ -348,7 +348,9 @@ class MentionBuilder:
                     and (
                         (current.count or 1) >= 2
                         or (
-                            item.role == "plot"
+                            # ("South of the grove a banana block": a crop named after
+                            # the plot named again)
+                            (item.role == "plot" or not current.has_crop)
                             and _opens_definite(current)
                             # (not "The only crop we have is a small block of ...")
                             and not any(p.norm in ("is", "are", "was", "were") for p in pending)

@@ -111,6 +111,8 @@ def dissolve_plant_parts(clauses: Sequence[Clause], crop_categories: dict[str, s
             continue  # "pear trees beyond them and the vines on the hill": the grapes
         if definite and _relation_object_named_before(clauses, position, mention):
             continue  # "the cherries between the vines and the pears": the vineyard named
+        if definite and _placed_again(clauses, position, mention, crop_categories):
+            continue  # "a vineyard and an orange grove, with the vines to the north"
         if definite and _named_so_before(clauses[:position], mention):
             # "Half the farm is fruit and half is veg, ..., with the fruit on the east side":
             # the field named by that word before, named again
@@ -132,7 +134,13 @@ def dissolve_plant_parts(clauses: Sequence[Clause], crop_categories: dict[str, s
             for before, i in itertools.pairwise(ordered)
         )
         if (
-            not (own_fruit or all(h.norm in words for h in mention.heads))
+            not (
+                own_fruit
+                or all(h.norm in words for h in mention.heads)
+                # ("six little plots, each a different veg": a category word the fields
+                # before are each a different crop of)
+                or (mention.distinct and mention.category is not None and not mention.has_crop)
+            )
             or ones
             or (
                 mention.count is not None
@@ -598,6 +606,26 @@ def _a_different(mention: Mention) -> bool:
         a.role == "number" and a.norm in ("a", "an") and b.role == "distinct"
         for a, b in itertools.pairwise(items)
     )
+
+
+def _placed_again(
+    clauses: Sequence[Clause], position: int, mention: Mention, crop_categories: dict[str, str]
+) -> bool:
+    """Whether "the vines" (a word for the plants of a crop) is placed by the words right
+    after it ("to the north") and names the crop of exactly one field named before: that
+    field, named again to place it."""
+    following = clauses[position + 1] if position + 1 < len(clauses) else None
+    crops = strong_crops(mention)
+    if (
+        not crops
+        or following is None
+        or following.link is None
+        or following.link.role != "trailer"
+        or following.items
+    ):
+        return False
+    earlier = [m for c in clauses[:position] for m in c.mentions]
+    return sum(1 for m in earlier if _may_hold(m, crop_categories) & crops) == 1
 
 
 def _named_so_before(clauses: Sequence[Clause], mention: Mention) -> bool:

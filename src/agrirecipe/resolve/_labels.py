@@ -335,8 +335,19 @@ def drop_list_numbers(text: str) -> str:
 # "plot 1 at 70,000 plants/ha, plot 2 at 100,000": two members told apart by number
 _MEMBER_LABEL = re.compile(
     r"\b(?P<noun>(?i:plot|block|field|strip|bed|parcel|grove|orchard|vineyard|paddock))\s+"
-    r"(?P<label>[1-4]|[A-D])\b(?P<colon>\s*[:=])?"
+    r"(?P<label>[1-4]|[A-D]|(?i:one|two|three|four)(?!\s+(?i:ha|hectares?|acres?|m|metres?|meters?)\b))"
+    r"\b(?P<colon>\s*[:=])?"
 )
+# "plot one ..., plot two ...": a member's number said as a word
+_LABEL_WORDS = {"ONE": "1", "TWO": "2", "THREE": "3", "FOUR": "4"}
+
+
+def _member_label(match: re.Match[str]) -> str:
+    """The label of a member ("plot 2", "Field B", "plot two"), as a digit or capital."""
+    label = match.group("label").upper()
+    return _LABEL_WORDS.get(label, label)
+
+
 # "Field B, east of A": a letter label referred to without its noun
 _BARE_MEMBER = re.compile(
     rf"\b(?i:{_BEFORE_REFERENCE})\s+(?P<at>(?:(?i:the)\s+)?)(?P<label>[AB])\b(?!\s*[:=])"
@@ -358,7 +369,7 @@ def _numbered_members(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
         for m in matches
     ):
         return text
-    labels = [m.group("label").upper() for m in matches]
+    labels = [_member_label(m) for m in matches]
     members = len(set(labels))
     if not 2 <= members <= len(ORDINAL_WORDS) or set(labels) not in (
         {str(n) for n in range(1, members + 1)},
@@ -384,10 +395,8 @@ def _numbered_members(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
         )
     out = text
     for match in reversed(matches):
-        label = match.group("label").upper()
-        first_said = all(
-            m.group("label").upper() != label for m in matches if m.start() < match.start()
-        )
+        label = _member_label(match)
+        first_said = all(_member_label(m) != label for m in matches if m.start() < match.start())
         if by_order:
             word = ORDINAL_WORDS[int(label) - 1 if label.isdigit() else ord(label) - ord("A")]
         elif first_said:
@@ -445,9 +454,19 @@ _SIDE_MEMBER = re.compile(
 )
 
 
+# "Upper block (north): Riesling": a block named by where it is, then its compass side
+_SIDE_IN_BRACKETS = re.compile(
+    r"\b(?i:upper|lower|top|bottom|left|right|front|back|near|far)\s+"
+    r"(?P<noun>(?i:plot|block|field|strip|parcel|section|paddock|area))\s*"
+    r"\(\s*(?P<side>(?i:north|south|east|west))(?i:ern)?(?:\s+(?i:side|end|half))?\s*\)"
+    r"(?=\s*[:\-–—])"
+)
+
+
 def place_leading_directions(text: str) -> str:
     """``text`` with "the east plot is X" written "X in the eastern block", and "X in the
     north orchard" written "X in the north block" (where X is, not one more field)."""
+    text = _SIDE_IN_BRACKETS.sub(lambda m: f"{m.group('side').lower()} {m.group('noun')}", text)
     for _ in range(_MAX_UNMARKED_SIDES):
         # (again after each, for the next side's part said without a mark)
         placed = _LEADING.sub(_placed_on_its_side, text)

@@ -118,7 +118,34 @@ def spread_value_lists(text: str) -> str:
     text = _SIZE_EACH_OF.sub(lambda m: f"{m.group('list')}, {m.group('size')} each", text)
     # "Three different vegetables, each a 20 x 30 m plot with 0.75 m rows": what each
     # field is, not one more plot
-    return _EACH_A_PLOT.sub(lambda m: f"each {m.group('said')}", text)
+    text = _EACH_A_PLOT.sub(lambda m: f"each {m.group('said')}", text)
+    # "with exactly the same row spacing, tree spacing and row length": each the same
+    return _SAME_LIST.sub(_each_the_same, text)
+
+
+#: What a field may have "the same" of as the one before ("the same row spacing").
+_SAME_MEASURES = (
+    r"(?:(?:row|tree|plant|vine|in[- ]row|bed|bush)\s+)?(?:spacings?|length|width|count)"
+    r"|number\s+of\s+rows|(?:row\s+)?(?:direction|orientation|bearing)|rows\s+per\s+bed"
+)
+_SAME_LIST = re.compile(
+    rf"\b(?P<same>(?:the\s+)?same)\s+(?P<first>{_SAME_MEASURES})"
+    rf"(?P<rest>(?:\s*,\s*(?:{_SAME_MEASURES}))*,?\s+(?:and|&)\s+(?:{_SAME_MEASURES}))\b",
+    re.IGNORECASE,
+)
+
+
+def _each_the_same(match: re.Match[str]) -> str:
+    """ "the same row spacing, tree spacing and row length" as "the same row spacing, the
+    same tree spacing and the same row length"."""
+    same = match.group("same")
+    rest = re.sub(
+        rf"(,\s*|,?\s+(?:and|&)\s+)(?={_SAME_MEASURES})",
+        lambda m: f"{m.group(1)}{same} ",
+        match.group("rest"),
+        flags=re.IGNORECASE,
+    )
+    return f"{same} {match.group('first')}{rest}"
 
 
 # "two potato fields of 3 ha and 1.5 ha": as many areas as plots counted, one each

@@ -219,6 +219,10 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
             # "Padrón peppers whose leaves are spotted and whose fruit has raised
             # scabby spots": a relative clause about the field named last
             targets = [before[-1]]
+        elif (placed := _placed_with(clauses, position)) is not None:
+            # "cabbages in the middle with caterpillar holes chewed through the leaves":
+            # a "with" after the placement of the field just named is that field's
+            targets = [placed]
         elif carried is not None and carried[0] == position - 1 and _goes_on(clause):
             # "the Ladyfinger block next to them has yellowing, mottled leaves and some
             # plants wilting": the description goes on for the field it was about
@@ -365,6 +369,23 @@ def _closes_a_with_list(clauses: Sequence[Clause], position: int) -> Mention | N
         ):
             return None
     return None
+
+
+def _placed_with(clauses: Sequence[Clause], position: int) -> Mention | None:
+    """The field a "with" clause goes on about right after the placement ("in the
+    middle") that ended the field's own clause."""
+    clause = clauses[position]
+    previous = clauses[position - 1] if position else None
+    if (
+        previous is None
+        or not previous.mentions
+        or clause.link is None
+        or clause.link.role != "trailer"
+        or not clause.items
+        or clause.items[0].norm != "with"
+    ):
+        return None
+    return previous.mentions[-1]
 
 
 def _continues_a_description(clauses: Sequence[Clause], position: int) -> bool:

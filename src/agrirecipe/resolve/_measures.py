@@ -376,36 +376,36 @@ _SPACINGS = (
 )
 
 
+def _same_keys(word: Item) -> tuple[str, ...]:
+    """The row measures one "same" phrase copies from the field before."""
+    norm = word.norm
+    direction = any(w in norm for w in ("direction", "orientation", "bearing", "heading")) or (
+        norm.startswith(("rows", "with rows")) and "way" in norm
+    )
+    # "6 beds of 200-ft rows, and the same layout of Sonata": the whole planting again
+    if any(w in norm for w in ("layout", "spec", "setup", "set up")):
+        return (*_SPACINGS, "rows", "beds", "row_length_m", "plants_per_row", "row_bearing_deg")
+    # "same row count and spacing": how many rows, with or without their spacing
+    # ("2 beds of the same width and row count": the rows on each bed)
+    if "count" in norm or "number of rows" in norm or "per bed" in norm:
+        return ("rows", "rows_per_bed", *(_SPACINGS if "spacing" in norm else ()))
+    if "width" in norm:  # "10 beds of the same width", "the same bed width"
+        return ("bed_width_m",)
+    if direction:
+        return ("row_bearing_deg",)
+    if "length" in norm or "long" in norm:
+        return ("row_length_m",)
+    return _SPACINGS
+
+
 def same_spacing(intent: FieldIntent, before: FieldIntent, words: Sequence[Item]) -> FieldIntent:
     """'Kordia, 10 rows at 4.6 m ...; Regina, same spacing, 8 rows': the spacings of the
     field before, except those this field states itself; 'rows in the same direction':
     its rows' bearing; '16 rows of the same length': its rows' length."""
     if before.rows is None:
         return intent
-    direction = any(
-        w in i.norm for i in words for w in ("direction", "orientation", "bearing", "heading")
-    ) or any(i.norm.startswith(("rows", "with rows")) and "way" in i.norm for i in words)
-    length = any(w in i.norm for i in words for w in ("length", "long"))
-    # "6 beds of 200-ft rows, and the same layout of Sonata": the whole planting again
-    layout = any(w in i.norm for i in words for w in ("layout", "spec", "setup", "set up"))
-    # "same row count and spacing": how many rows, with or without their spacing
-    count = any("count" in i.norm or "number of rows" in i.norm for i in words)
-    spaced = any("spacing" in i.norm for i in words)
-    # "10 beds of the same width", "the same bed width": the beds' width alone
-    width = any("width" in i.norm for i in words)
-    keys = (
-        ("rows", *(_SPACINGS if spaced else ()))
-        if count
-        else ("bed_width_m",)
-        if width
-        else ("row_bearing_deg",)
-        if direction
-        else ("row_length_m",)
-        if length
-        else (*_SPACINGS, "rows", "beds", "row_length_m", "plants_per_row", "row_bearing_deg")
-        if layout
-        else _SPACINGS
-    )
+    # ("the same row spacing, the same tree spacing and the same row length": each word's)
+    keys = tuple(dict.fromkeys(k for word in words for k in _same_keys(word)))
     copied = {k: getattr(before.rows, k) for k in keys if getattr(before.rows, k) is not None}
     if not copied:
         return intent

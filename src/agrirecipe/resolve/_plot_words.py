@@ -5,11 +5,13 @@
 (pasture), "brown corky scab patches" (damage), "a patch in the middle where the leaves
 have gone brown" (a part of a field), "the same" said right after a crop ("Walla
 Walla the same": planted as the field before), and "each a block of 8 rows" after fields
-counted (what each of them is).
+counted (what each of them is), and "allotment-style" (a plot word that says what
+something is like).
 """
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Sequence
 
 from agrirecipe.resolve._lexicon import Item, reader_words
@@ -24,6 +26,7 @@ def plot_words_of_other_things(items: Sequence[Item]) -> None:
     """Run this module's passes over a prompt's items, in order."""
     _inside_unknown_phrases(items)
     _near_and_far(items)
+    _likenesses(items)
     _verbs(items)
     _the_same(items)
     _pastures(items)
@@ -44,6 +47,21 @@ def _near_and_far(items: Sequence[Item]) -> None:
     "the" and a plot word says which plot, no placement."""
     for the, item, plot in zip(items, items[1:], items[2:], strict=False):
         if the.norm == "the" and item.norm in ("near", "far") and plot.role == "plot":
+            item.role = "filler"
+
+
+#: Words after a plot word that make it say what something is like ("allotment-style").
+_LIKE = frozenset({"style", "styled", "type", "like"})
+
+
+def _likenesses(items: Sequence[Item]) -> None:
+    """'The allotment-style corner of the farm: six little plots': a plot word before
+    "style" or "type" describes what follows, it asks for no field."""
+    for index, (item, after) in enumerate(itertools.pairwise(items)):
+        following = items[index + 2] if index + 2 < len(items) else None
+        # (not "the allotment-style plots", which are the plots themselves)
+        plots = following is not None and following.role == "plot"
+        if item.role == "plot" and after.norm in _LIKE and not plots:
             item.role = "filler"
 
 

@@ -26,6 +26,7 @@ from agrirecipe.resolve._links import (
     link_norm,
     says,
 )
+from agrirecipe.resolve._measures import sentence_start
 
 __all__ = [
     "TOWARDS",
@@ -157,6 +158,9 @@ def directed_row(
             start = [m for c in clauses[:position] for m in c.mentions][-1:]
         fields = fields_of(start + following_list(clauses, position, own), members)
     if len(fields) < 2:
+        # "Block 1 Fuji. Block 2 ... The blocks go west to east in that order."
+        fields = fields_of(_all_named_before(clauses, position), members)
+    if len(fields) < 2:
         warnings.append(f"ignored {link.raw!r}: it needs two or more fields before it")
         return []
     if link.norm.startswith("looking") and any(
@@ -177,6 +181,27 @@ def directed_row(
         RelationIntent(kind=kind, subject=a, objects=(b,), text=link.raw)
         for a, b in itertools.pairwise(fields)
     ]
+
+
+def _all_named_before(clauses: Sequence[Clause], position: int) -> list[Mention]:
+    """The fields named before a sentence that opens with "the blocks" (a plural plot
+    word and no crop) and is placed by the row word at ``position``: every one of them,
+    in the order named."""
+    start = sentence_start(clauses, position)
+    words = [i for c in clauses[start:position] for i in c.items]
+    plural = [
+        i
+        for i in words
+        if i.role == "plot" and isinstance(v := i.data.get("value"), dict) and v.get("plural")
+    ]
+    if (
+        not words
+        or words[0].norm not in ("the", "all", "these", "those")
+        or not plural
+        or any(i.role in ("head", "category", "weak_variety") for i in words)
+    ):
+        return []
+    return list({id(m): m for c in clauses[:start] for m in c.mentions}.values())
 
 
 def listed_middle(

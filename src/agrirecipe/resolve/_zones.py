@@ -380,7 +380,8 @@ def complete_orders(
     """Orders the words imply but do not say, on each axis.
 
     "the onions in between them" with the potatoes north and the carrots south of
-    the onions puts the potatoes north of the carrots; "Gala along the top, pears
+    the onions puts the potatoes north of the carrots (and with only the potatoes
+    placed, the carrots south of the onions); "Gala along the top, pears
     below them, at the bottom Granny" puts the pears north of the Granny (a field
     placed next to the top zone lies above the bottom zone, and vice versa).
     """
@@ -415,6 +416,16 @@ def complete_orders(
                 path = (first, middle) in edges[axis] and (middle, last) in edges[axis]
                 if path and not related(axis, first, last):
                     added.append((axis, first, last))
+                # "Cos sandwiched between onions and potatoes; onions on the north side":
+                # one end placed, the other end lies on the far side of the middle one
+                if (first, middle) in edges[axis] and not related(axis, middle, last):
+                    added.append((axis, middle, last))
+                # ("...; potatoes on the west side": the ends placed, the middle between)
+                if (first, last) in edges[axis]:
+                    if not related(axis, first, middle):
+                        added.append((axis, first, middle))
+                    if not related(axis, middle, last):
+                        added.append((axis, middle, last))
     for axis, (high, low) in (("ns", ("north", "south")), ("ew", ("west", "east"))):
         tops = [i for i, z in zones.items() if z == high]
         bottoms = [i for i, z in zones.items() if z == low]
