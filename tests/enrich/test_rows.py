@@ -134,3 +134,25 @@ def test_density_and_in_row_spacing_set_the_bed_spacing_of_double_rows(
     assert result.in_row_spacing_m == pytest.approx(2.25)
     density = 10_000 * 2 / (result.row_spacing_m * result.in_row_spacing_m)
     assert density == pytest.approx(1840, rel=1e-3)
+
+
+def test_a_count_of_plants_fills_the_area_said(knowledge: KnowledgeBase) -> None:
+    row_plan = plan_rows(
+        {"row_spacing_m": 3.4, "plant_count": 2900},
+        knowledge.crop_file("Apple"),
+        label="gala",
+        size_m=None,
+        area_m2=10_000.0,
+        default_size_m=knowledge.default_field_size_m("Apple"),
+        default_headland_m=knowledge.default_headland_m("Apple"),
+    )
+    width, length = row_plan.size_m
+    assert width * length == pytest.approx(10_000.0, rel=1e-6)
+    headland = row_plan.headland_m
+    inner_w, inner_l = width - 2 * headland, length - 2 * headland
+    # every tree stands inside the headland, rows 3.4 m apart
+    beds = math.floor(inner_w / 3.4 + 0.5)
+    per_row = math.ceil(2900 / beds)
+    assert (per_row - 0.5) * row_plan.in_row_spacing_m <= inner_l + 1e-6
+    assert beds * per_row >= 2900
+    assert row_plan.plant_count == 2900

@@ -172,3 +172,30 @@ def test_the_same_of_several_measures() -> None:
         "2 beds of the same width and row count."
     ).fields
     assert danvers.agronomy.rows_per_bed == imperator.agronomy.rows_per_bed == 4
+
+
+def test_a_count_of_trees_filling_an_area() -> None:
+    gala, agria = recipe(
+        "Royal Gala orchard, 1 ha, 3.4 m rows, 2,900 trees. East of it a 0.6 ha Agria potato "
+        "field, rows 75 cm apart."
+    ).fields
+    width, length = gala.geometry.size_m
+    assert width * length == pytest.approx(10_000.0, rel=1e-6)
+    assert gala.agronomy.row_spacing_m == 3.4
+    assert gala.geometry.plant_count == 2900
+    assert gala.nominal_plant_count == 2900
+    assert agria.agronomy.row_spacing_m == 0.75
+
+
+def test_a_drill_spacing_and_a_fields_own_size_before_other_sizes() -> None:
+    wheat, spelt, corn = recipe(
+        "Spring Wheat 1 ha at 12.5 cm drill spacing south of a 1 ha Spelt plot at 15 cm, with a "
+        "10 m wide block of Sweet Corn (rows 75 cm) between them."
+    ).fields
+    assert (wheat.variety, spelt.variety, corn.variety) == ("Spring Wheat", "Spelt", "Sweet Corn")
+    for field in (wheat, spelt):
+        width, length = field.geometry.size_m
+        assert width * length == pytest.approx(10_000.0, rel=1e-6)
+    spacings = (wheat.agronomy.row_spacing_m, spelt.agronomy.row_spacing_m)
+    assert spacings == (0.125, 0.15)
+    assert corn.agronomy.row_spacing_m == 0.75

@@ -237,6 +237,27 @@ def plan_rows(
     per_row = stated.get("plants_per_row")
     if in_row is None and per_row is not None and length_rows is not None and per_row > 1:
         in_row = length_rows / (per_row - 1)
+    if (
+        in_row is None
+        and "plant_count" in stated
+        and area_m2 is not None
+        and size_m is None
+        and rows is None
+        and beds is None
+        and length_rows is None
+        and per_row is None
+    ):
+        # "Royal Gala orchard, 1 ha, 3.4 m rows, 2,900 trees": the trees fill the area
+        # said (the field's, headland included) at the rows' spacing
+        size_m, beds, in_row = _count_in_area(
+            int(stated["plant_count"]),
+            area_m2,
+            spacing,
+            bed_span,
+            rows_per_bed,
+            default_size_m,
+            default_headland_m,
+        )
     if in_row is None:
         in_row = planting.in_row_spacing_m.value
     _check_spacing(label, crop, spacing, in_row, rows_per_bed, stated, warnings)
@@ -381,6 +402,26 @@ def _outer_size(
             scale = math.sqrt(area_m2 / (width * length))
             width, length = width * scale, length * scale
     return width, length
+
+
+def _count_in_area(
+    count: int,
+    area_m2: float,
+    spacing: float,
+    bed_span: float,
+    rows_per_bed: int,
+    default_size_m: tuple[float, float],
+    headland_m: float,
+) -> tuple[tuple[float, float], float, float]:
+    """The field (shaped like the crop's usual one), its beds and the in-row spacing at
+    which ``count`` plants fill ``area_m2`` inside the headland, rows ``spacing`` apart."""
+    width, length = _outer_size(None, None, None, area_m2, default_size_m)
+    inner_w, inner_l = width - 2 * headland_m, length - 2 * headland_m
+    if inner_w <= bed_span + spacing / 2 or inner_l <= 0:
+        return (width, length), 1.0, inner_l / max(count - 0.5, 0.5)
+    beds = max(1, math.floor((inner_w - bed_span) / spacing + 0.5))
+    per_row = math.ceil(count / (beds * rows_per_bed))
+    return (width, length), float(beds), inner_l / (per_row - 0.5) if per_row > 1 else inner_l
 
 
 def _split_count(

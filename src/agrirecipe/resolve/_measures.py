@@ -39,10 +39,13 @@ __all__ = [
 ]
 
 
-def _area(item: Item) -> float:
+def _area(item: Item) -> float | None:
+    """The area a size says, None for one side alone ("10 m wide")."""
     size = item.data["size"]
     if size.area_m2 is not None:
         return float(size.area_m2)
+    if size.width_m is None or size.length_m is None:
+        return None
     return float(size.width_m * size.length_m)
 
 
@@ -55,11 +58,16 @@ def drop_total_sizes(items: Sequence[Item]) -> list[str]:
     dropped: list[str] = []
     for position, index in enumerate(sizes):
         later = sizes[position + 1 :]
-        if len(later) < 2 or any(i.role == "head" for i in items[index + 1 : later[0]]):
-            continue
+        if len(later) < 2 or any(i.role == "head" for i in items[: later[0]]):
+            continue  # (said before any crop: "Spring Wheat 1 ha ..." is the wheat's)
         total, added = _area(items[index]), 0.0
+        if total is None:
+            continue
         for count, other in enumerate(later, start=1):
-            added += _area(items[other])
+            area = _area(items[other])
+            if area is None:
+                break  # ("..., with a 10 m wide block of Sweet Corn": no area to add)
+            added += area
             if count >= 2 and math.isclose(added, total, rel_tol=0.01):
                 items[index].role = "filler"
                 items[index].data["scenery"] = "total"
