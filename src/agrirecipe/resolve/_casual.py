@@ -48,6 +48,19 @@ def _crop_pictures() -> re.Pattern[str]:
     return re.compile(f"[{re.escape(str(data['crop_pictures']))}]\ufe0f?")
 
 
+#: "with a few chillies mixed in", "with the odd lettuce dotted among them".
+_MIXED_IN = re.compile(
+    r"\s+(?i:with)\s+(?i:a\s+few|some|a\s+couple\s+of|the\s+odd|a\s+handful\s+of)\s+"
+    r"[A-Za-z-]+(?:\s+[A-Za-z-]+)?\s+(?i:mixed|dotted|scattered)\s+(?i:in|among\s+them|through)\b"
+)
+#: ", all in one block", "all in a single field": the one plot a crop is grown in.
+_ALL_IN_ONE = re.compile(r"\s*,?\s+(?i:all)\s+(?i:in)\s+(?=(?i:one|a\s+single)\s)")
+#: "minus 2", "negative 3": a sign said as a word before a number.
+_MINUS = re.compile(r"\b(?i:minus|negative)\s+(?=\d)")
+#: An arrow written between two words ("west→east", "wheat -> maize").
+_ARROW = re.compile(r"\s*(?:-+>|→|⟶|⇒)\s*")
+
+
 def expand_casual(prompt: str) -> str:
     """``prompt`` with every texting form replaced by its words."""
     pattern, forms = _forms()
@@ -69,6 +82,15 @@ def expand_casual(prompt: str) -> str:
     text = _a_couple().sub("a couple of", text)
     # "cab south of the pinot": the wine trade's short name (not a tractor's cab)
     text = _CAB.sub("cabernet", text)
+    # "3 plots side by side west→east": an arrow between two places is "to"
+    text = _ARROW.sub(" to ", text)
+    # "bell types with a few chillies mixed in": a few plants among the field's own crop,
+    # no field of their own
+    text = _MIXED_IN.sub("", text)
+    # "just cereals this year, all in one big 60 ha block": the plot the crop is in
+    text = _ALL_IN_ONE.sub(" in ", text)
+    # "rows at minus 2 metres spacing": a negative number said in words (refused later)
+    text = _MINUS.sub("-", text)
     text = pattern.sub(replace, text)
     text = lower.sub(lambda match: lower_forms[match.group(0)], text)
     # "sweet corn next to cherry tomatoes, ripe, aug, both": what was said before a
@@ -139,6 +161,9 @@ def expand_casual(prompt: str) -> str:
     # "some veg plots?? like 4 or 5, need it b4 monday", "a few fruit fields idk 2 or 3":
     # a rough count after the plots, said as a count of them
     text = _ROUGH_COUNT_AFTER.sub(r"\g<plots>, \g<count> of them", text)
+    # "some fields of fruit trees w/ fire blight, like 2 or 3": a rough count closing the
+    # sentence of one plural plot word counts those plots
+    text = _ROUGH_COUNT_LATER.sub(r"\g<count> \g<plots>\g<rest>", text)
     # "on the 2nd of May": a day of the month, not two fields
     text = _DAY_OF_MONTH.sub(r"\g<day> ", text)
     # "An acre and a half of chillies": one and a half acres
@@ -182,6 +207,13 @@ _ROUGH_COUNT_AFTER = re.compile(
     r"(?P<plots>\b(?i:fields|plots|blocks|strips|orchards|patches|paddocks))"
     r"(?:\s*[,?!]+\s*|\s+)(?:(?i:like|about|around|maybe|roughly|approx|say)\s+)?"
     r"(?P<count>\d+)\s+(?i:or|to|-)\s+\d+(?![\d.,]\d)(?=\s*(?:[,.!?;]|$))"
+)
+_ROUGH_COUNT_LATER = re.compile(
+    r"(?:(?<=^)|(?<=[.;!?]\s))(?:(?i:some|a\s+few|several|a\s+couple\s+of)\s+)?"
+    r"(?P<plots>(?i:fields|plots|blocks|strips|orchards|patches|paddocks))"
+    r"(?P<rest>(?:\s+(?!(?i:fields|plots|blocks|strips|orchards|patches|paddocks)\b)"
+    r"[A-Za-z/'-]+){1,8}?)\s*,\s*(?i:like|about|around|maybe|roughly|approx|say)\s+"
+    r"(?P<count>\d+)\s+(?i:or|to|-)\s+\d+(?![\d.,]\d)\s*(?=[.!?;]|$)"
 )
 _COUNT_OF_THEM = re.compile(
     r"(?P<lead>(?:^|(?<=[.;:!?])\s*)(?:(?i:the|our|my|some)\s+)?)"

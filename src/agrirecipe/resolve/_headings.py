@@ -477,6 +477,12 @@ def fill_counted_lists(clauses: Sequence[Clause], mentions: list[Mention]) -> li
             ),
             len(clauses),
         )
+        if any(
+            i.role == "reference" and i.norm == "the other"
+            for c in clauses[heading.clause + 1 : ends]
+            for i in c.items
+        ):
+            continue  # ("Two veg plots, one north of the other, and a wheat field": both said)
         later = [
             m
             for m in mentions[mentions.index(heading) + 1 :]

@@ -37,13 +37,14 @@ def lists_exactly(
     clauses: Sequence[Clause], start: int, count: int | None, *, to_the_end: bool = False
 ) -> bool:
     """Whether the clauses from ``start`` to the end of the sentence (or of the prompt)
-    name exactly ``count`` single fields, joined as a list (commas and "and")."""
+    name exactly ``count`` fields, joined as a list (commas and "and"): single fields, or
+    members counted that add up to it ("4 plots, 2 of potatoes and 2 of onions")."""
     named = listed_fields(clauses, start, to_the_end=to_the_end)
     return (
         count is not None
         and count >= 2
-        and len(named) == count
-        and all((m.count or 1) == 1 for m in named)
+        and len(named) >= 2
+        and sum(m.count or 1 for m in named) == count
     )
 
 

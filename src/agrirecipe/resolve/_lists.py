@@ -119,8 +119,18 @@ def spread_value_lists(text: str) -> str:
     # "Three different vegetables, each a 20 x 30 m plot with 0.75 m rows": what each
     # field is, not one more plot
     text = _EACH_A_PLOT.sub(lambda m: f"each {m.group('said')}", text)
+    # "Spring Wheat in one field and dinkel in the other": two members, listed
+    text = _ONE_AND_THE_OTHER.sub(r"\g<a> and \g<b>", text)
     # "with exactly the same row spacing, tree spacing and row length": each the same
     return _SAME_LIST.sub(_each_the_same, text)
+
+
+#: (not "on one side ... on the other": the sides of what lies between them)
+_PART = r"(?:field|plot|block|bed|strip|one|paddock|patch)"
+_ONE_AND_THE_OTHER = re.compile(
+    rf"(?P<a>\b[^,.;:()]+?)\s+(?i:in)\s+(?i:one)(?:\s+(?i:{_PART}))?\s*,?\s+(?i:and)\s+"
+    rf"(?P<b>[^,.;:()]+?)\s+(?i:in)\s+(?i:the)\s+(?i:other)(?:\s+(?i:{_PART}))?\b"
+)
 
 
 #: What a field may have "the same" of as the one before ("the same row spacing").

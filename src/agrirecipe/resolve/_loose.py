@@ -372,8 +372,9 @@ def _closes_a_with_list(clauses: Sequence[Clause], position: int) -> Mention | N
 
 
 def _placed_with(clauses: Sequence[Clause], position: int) -> Mention | None:
-    """The field a "with" clause goes on about right after the placement ("in the
-    middle") that ended the field's own clause."""
+    """The field a "with" clause (or one opened by a verb: "have fire blight") goes on
+    about right after the placement ("in the middle", "next door") that ended the field's
+    own clause."""
     clause = clauses[position]
     previous = clauses[position - 1] if position else None
     if (
@@ -382,10 +383,15 @@ def _placed_with(clauses: Sequence[Clause], position: int) -> Mention | None:
         or clause.link is None
         or clause.link.role != "trailer"
         or not clause.items
-        or clause.items[0].norm != "with"
+        # ("the Williams pears next door have fire blight": or a verb saying how it is)
+        or clause.items[0].norm not in ("with", *_DESCRIBING_VERBS)
     ):
         return None
     return previous.mentions[-1]
+
+
+#: Verbs that open what a field is like ("have fire blight", "are fine").
+_DESCRIBING_VERBS = frozenset({"have", "has", "are", "is", "look", "looks", "show", "shows"})
 
 
 def _continues_a_description(clauses: Sequence[Clause], position: int) -> bool:
@@ -528,11 +534,14 @@ def _past_a_reference(
         # list whose member is named again to place it is the whole list's
         return listed
     subject = clauses[index - 1].mentions[-1] if clauses[index - 1].mentions else None
+    # "the maize field is south of the wheat, and you can see its rows run east-west":
+    # "its" is the sentence's subject, not the field it is placed against
+    possessive = any(i.norm in ("its", "their") for i in clauses[position].items)
     if (
         relation.link is not None
         and relation.link.role == "relation"
         and relation.mentions == [targets[0]]
-        and named_before
+        and (named_before or possessive)
         and subject is not None
         and subject is not targets[0]
     ):

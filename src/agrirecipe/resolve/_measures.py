@@ -391,8 +391,14 @@ def _same_keys(word: Item) -> tuple[str, ...]:
         norm.startswith(("rows", "with rows")) and "way" in norm
     )
     # "6 beds of 200-ft rows, and the same layout of Sonata": the whole planting again
-    if any(w in norm for w in ("layout", "spec", "setup", "set up")):
-        return (*_SPACINGS, "rows", "beds", "row_length_m", "plants_per_row", "row_bearing_deg")
+    # ("the Pinot Noir block ... is planted exactly the same way": likewise)
+    if any(w in norm for w in ("layout", "spec", "setup", "set up")) or (
+        "way" in norm and not direction
+    ):
+        return (
+            *_SPACINGS,
+            *("rows", "beds", "row_length_m", "plants_per_row", "row_bearing_deg", "headland_m"),
+        )
     # "same row count and spacing": how many rows, with or without their spacing
     # ("2 beds of the same width and row count": the rows on each bed)
     if "count" in norm or "number of rows" in norm or "per bed" in norm:

@@ -214,7 +214,8 @@ def apply_refinements(
         if (
             parent is not None
             and link is not None
-            and link.role == "relation"
+            # ("Three apple blocks: Fuji between Cripps Pink and Golden Delicious")
+            and link.role in ("relation", "between")
             and clauses[clause.index - 1].refined_parent is parent
             and len(clause.mentions) == 1
             and (
@@ -301,6 +302,14 @@ def apply_refinements(
                 # "two blocks, 150 cherry trees ... and 300 apple trees ...": as many
                 # fields as announced, listed after a comma
                 or (link.norm == "," and lists_exactly(clauses, clause.index, parent.count))
+                # "4 plots of 6 beds each, one per variety (Romaine, Iceberg, ...)"
+                or (
+                    link.norm == "("
+                    and (
+                        parent.distinct or (previous is not None and _all_distinct(previous.items))
+                    )
+                    and lists_exactly(clauses, clause.index, parent.count)
+                )
                 # "... on two bed plots. Lollo Rosso: 4 beds ... Beside it, carrots: ..."
                 or (
                     link.norm in (".", "?", "!")  # ("... for our sim? Gala apples ...")
@@ -463,6 +472,11 @@ def apply_refinements(
             # uncounted plural is as many fields as it lists, not one more of no crop
             mention.count = len(mention.refinements)
     return top
+
+
+def _all_distinct(items: Sequence[Item]) -> bool:
+    """Words that only say the fields before differ ("one per variety")."""
+    return bool(items) and all(i.role == "distinct" for i in items)
 
 
 def _bracketed_variety(clause: Clause, member: Mention) -> bool:

@@ -64,6 +64,15 @@ def then_chain(
             and clauses[position - 1].link.norm == "then"  # type: ignore[union-attr]
             and not clauses[position - 1].items
         )
+        # ("the Fuji trees, then the Pink Lady further back, and the Golden Delicious out
+        # on the far boundary": the last of a "then" list joined by "and")
+        follows = follows or (
+            link is not None
+            and link.norm == "and"
+            and len(chain) >= 2
+            and chain[-1].clause >= position - 2
+            and not any(c.link is not None and c.link.norm == "then" for c in clauses[position:])
+        )
         if follows and chain:
             if all(mention is not m for m in chain):
                 chain.append(mention)

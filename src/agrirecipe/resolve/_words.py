@@ -592,7 +592,10 @@ def _every_plot(items: Sequence[Item]) -> None:
         after = items[at + 1] if at + 1 < len(items) else None
         # ("each field of wheat", "every plot 2 carrots") name the crop of each field
         if after is not None and after.role in ("head", "weak_variety", "of", "number"):
-            continue
+            # ("each strip with a 3 m headland": what every field has, not its crop)
+            said = next((i for i in items[at + 2 :] if i.role not in ("number", "filler")), None)
+            if not (after.norm == "with" and said is not None and said.role == "geometry"):
+                continue
         plot.role = "filler"
 
 

@@ -283,6 +283,7 @@ def zone_relations(fields: Sequence[Sequence[Item]]) -> list[RelationIntent]:
                 RelationIntent(kind="between", subject=middle, objects=(rows[0][0], rows[2][0]))
                 for middle in rows[1]
             )
+    relations.extend(_across_the_others(places))
     for index, zone in zones.items():
         # "veg on the east side, grapes on the west side and a bit of wheat in between":
         # between the two fields named right before it, however they were placed
@@ -295,6 +296,30 @@ def zone_relations(fields: Sequence[Sequence[Item]]) -> list[RelationIntent]:
             relations.append(
                 RelationIntent(kind="between", subject=index, objects=(index - 2, index - 1))
             )
+    return relations
+
+
+def _across_the_others(places: dict[int, dict[str, int]]) -> list[RelationIntent]:
+    """'vegetables on the left, fruit on the right, and cereals across the whole bottom':
+    the one field placed on one axis, beside two or more placed only on the other, lies on
+    its side of each of them."""
+    relations: list[RelationIntent] = []
+    sides: tuple[tuple[str, str, RelationKind, RelationKind], ...] = (
+        ("ns", "ew", "north_of", "south_of"),
+        ("ew", "ns", "west_of", "east_of"),
+    )
+    for axis, across, kind, opposite in sides:
+        alone = [i for i, place in places.items() if set(place) == {axis}]
+        others = [i for i, place in places.items() if set(place) == {across}]
+        if len(alone) != 1 or len(others) < 2 or len({places[o][across] for o in others}) < 2:
+            continue
+        if any(axis in place for i, place in places.items() if i not in alone):
+            continue
+        (subject,) = alone
+        side: RelationKind = kind if places[subject][axis] == 0 else opposite
+        relations.extend(
+            RelationIntent(kind=side, subject=subject, objects=(other,)) for other in others
+        )
     return relations
 
 
