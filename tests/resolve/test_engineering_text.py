@@ -303,7 +303,7 @@ def test_measures_after_each_stay_with_every_field() -> None:
 
 
 def test_a_field_named_by_its_compass_position() -> None:
-    from agrirecipe.resolve._labels import place_leading_directions
+    from agrirecipe.resolve._sides import place_leading_directions
 
     assert place_leading_directions("the east plot is Bintje, the west plot Fontane") == (
         "Bintje in the eastern block, Fontane in the western block"

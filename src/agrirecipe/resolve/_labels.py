@@ -6,9 +6,7 @@ label. Before the prompt is read, each label that introduces a field ("Block A:"
 2") becomes a definite reference to the crop named after the label ("north of the
 Jonagored apples"), which the reader already resolves to that field.
 
-A compass position used as a label ("the east plot is Bintje, the west plot
-Fontane") is moved after what it names ("Bintje in the eastern block"), where the
-reader places fields by a trailing direction.
+Compass positions used as labels are :mod:`agrirecipe.resolve._sides`'.
 """
 
 from __future__ import annotations
@@ -24,15 +22,7 @@ from agrirecipe.resolve._members import (
     valued_members,
 )
 
-__all__ = [
-    "drop_list_numbers",
-    "open_ordered_lists",
-    "place_compass_members",
-    "place_leading_directions",
-    "place_trailing_directions",
-    "place_walked_orders",
-    "resolve_labels",
-]
+__all__ = ["NAMING", "drop_list_numbers", "open_ordered_lists", "resolve_labels"]
 
 _NOUNS = r"(?:block|plot|field|parcel|area|section|strip|zone|bay|compartment|trial plot)"
 # "Field one: Russet potatoes ... Field two, south of field one: Fontane": a number word
@@ -87,7 +77,8 @@ _REFERRED = re.compile(rf"\b(?i:{_BEFORE_REFERENCE})\s+(?:(?i:the)\s+)?$")
 #: What comes before a label that opens a sentence.
 _SENTENCE_START = re.compile(r"(?:^|[.;:!?])\s*$")
 #: The items a crop phrase keeps ("Jonagored apples"): crop, variety and category words.
-_NAMING = ("crop", "variety", "category")
+#: The senses of a word that name what a field grows.
+NAMING = ("crop", "variety", "category")
 
 
 # "Iceberg lettuce in field A, Red Express cabbage in field B": a crop put in a labelled
@@ -105,7 +96,7 @@ def _crops_in_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
         m
         for m in _CROP_IN_LABEL.finditer(text)
         if (items := [i for i in tag(m.group("crop")) if i.role != "separator"])
-        and all(i.has(*_NAMING) for i in items)
+        and all(i.has(*NAMING) for i in items)
     ]
     if len(found) < 2:
         return text
@@ -159,7 +150,7 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
             ):
                 continue
             first = tag(text[match.end() :].split(",")[0])
-            if first and first[0].has(*_NAMING):
+            if first and first[0].has(*NAMING):
                 definitions.append(match)
         definitions.sort(key=lambda m: m.start())
     names: dict[str, str] = {}
@@ -305,7 +296,7 @@ def open_ordered_lists(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
     def colon(match: re.Match[str]) -> str:
         following = text[match.end() :].split(",")[0].split(".")[0]
         first = tag(following)
-        if first and first[0].has(*_NAMING):
+        if first and first[0].has(*NAMING):
             return f"{match.group('order')}: "
         return match.group(0)
 
@@ -415,282 +406,7 @@ def _crop_phrase(following: str, tag: Callable[[str], Sequence[Item]]) -> str:
     for clause in sentence.split(","):
         if not tokenize(clause):
             continue
-        words = [item.raw for item in tag(clause) if item.has(*_NAMING)]
+        words = [item.raw for item in tag(clause) if item.has(*NAMING)]
         if words:
             return " ".join(words)
     return ""
-
-
-# "top half corn bottom half wheat": the next side's part, said after a field's words
-_SIDE_PART = (
-    r"\s+(?:(?i:the)\s+)?(?i:north|south|east|west|top|bottom|upper|lower)(?i:ern)?\s+"
-    r"(?i:plot|block|field|one|part|half|strip|parcel|section|paddock|area)\b"
-)
-# "the east plot is Bintje with late blight, ...": a field named by its compass position
-_LEADING = re.compile(
-    r"(?<!in )(?<!on )(?<!of )(?<!at )(?<!to )"
-    r"(?:\b(?i:the)\s+|(?:^|(?<=[,;.:]\s)))(?P<side>(?i:north|south|east|west|top|bottom|upper|lower))(?i:ern)?\s+"
-    r"(?P<noun>(?i:plot|block|field|one|part|half|strip|parcel|section|paddock|area))\b\s*"
-    r"(?:(?i:is|are|has|holds|gets|grows|has got)\s+|[:\-–—]\s*)?"
-    # (the rest runs to a mark, past a decimal point or a thousands comma: "drilled in
-    # 12.5 cm rows", "at 80,000 plants/ha"; or to the next side's plot: "the south block
-    # is Grande Naine and the north block is Lady Finger")
-    r"(?P<rest>(?!(?i:of|to|and|with|in|on|at|is|are)\b)[^\s,;.:()]"
-    r"(?:(?!\s+(?i:and|but|while|whereas)\s+(?:(?i:the)\s+)?"
-    r"(?i:north|south|east|west|top|bottom|upper|lower)(?i:ern)?\s)"
-    # ("top half corn bottom half wheat": to the next side's part, said without a mark)
-    rf"(?!{_SIDE_PART})"
-    r"[^,;.:()]|[.,](?=\d))*)"
-)
-_NEXT_SIDE = re.compile(_SIDE_PART)
-
-
-# "the western block at 2.75 m between rows", "the eastern one at 3 m": a member named by
-# its side, then its measures (to a mark, past a decimal point)
-_SIDE_MEMBER = re.compile(
-    r"\b(?i:the)\s+(?P<side>(?i:north|south|east|west))(?i:ern)?\s+"
-    r"(?P<noun>(?i:block|plot|field|strip|one|half|part|section|parcel|bed))\s+"
-    r"(?P<rest>(?i:at|with|on|of)\s+\d(?:[^,;.:()]|[.,](?=\d))*)"
-)
-
-
-# "Upper block (north): Riesling": a block named by where it is, then its compass side
-_SIDE_IN_BRACKETS = re.compile(
-    r"\b(?i:upper|lower|top|bottom|left|right|front|back|near|far)\s+"
-    r"(?P<noun>(?i:plot|block|field|strip|parcel|section|paddock|area))\s*"
-    r"\(\s*(?P<side>(?i:north|south|east|west))(?i:ern)?(?:\s+(?i:side|end|half))?\s*\)"
-    r"(?=\s*[:\-–—])"
-)
-
-
-def place_leading_directions(text: str) -> str:
-    """``text`` with "the east plot is X" written "X in the eastern block", and "X in the
-    north orchard" written "X in the north block" (where X is, not one more field)."""
-    text = _SIDE_IN_BRACKETS.sub(lambda m: f"{m.group('side').lower()} {m.group('noun')}", text)
-    for _ in range(_MAX_UNMARKED_SIDES):
-        # (again after each, for the next side's part said without a mark)
-        placed = _LEADING.sub(_placed_on_its_side, text)
-        if placed == text:
-            break
-        text = placed
-    if len({m.group("side").lower() for m in _SIDE_MEMBER.finditer(text)}) >= 2:
-        # "the western block at 2.75 m between rows, the eastern block at 3 m": members
-        # told apart by their sides, each said after its measures
-        text = _SIDE_MEMBER.sub(
-            lambda m: (
-                f"the {m.group('noun')} {m.group('rest').rstrip()} on the "
-                f"{m.group('side').lower()} side"
-            ),
-            text,
-        )
-    return _IN_SIDE_PLOT.sub(lambda m: f"{m.group('at')} the {m.group('side').lower()} block", text)
-
-
-#: How many sides' parts said one after another without a mark are read.
-_MAX_UNMARKED_SIDES = 4
-
-
-def _placed_on_its_side(match: re.Match[str]) -> str:
-    """ "the east plot is X" as "X in the eastern block"; "the top field is X" as "X in the
-    top field", a zone read with the farm's other zones ("...; below it maize; and at the
-    bottom, carrots")."""
-    side = match.group("side")
-    rest = match.group("rest").rstrip()
-    # ("top half corn bottom half wheat": the next side's part begins)
-    mark = "," if _NEXT_SIDE.match(match.string, match.end()) else ""
-    if side.lower() in _OPPOSITE_SIDES:
-        return f"{rest} in the {side.lower()}ern block{mark}"
-    return f"{rest} in the {side} {match.group('noun')}{mark}"
-
-
-# "Durondeau pears in the north orchard", "Cos on the north beds": where the pears are
-_IN_SIDE_PLOT = re.compile(
-    r"\b(?P<at>(?i:in|on))\s+(?i:the)\s+(?P<side>(?i:north|south|east|west))(?i:ern)?\s+"
-    r"(?i:orchard|vineyard|paddock|grove|plantation|patch|strip|beds|rows|terraces)\b"
-    r"(?!\s+(?i:of|is|has|are|with)\b)"
-)
-
-
-# "The north block has downy mildew, the south block is clean": two members told apart
-# by their side, described, not named
-_COMPASS_MEMBER = re.compile(
-    # "the north block has ...", "in the west plot the leaves are ..."
-    r"\b(?P<at>(?i:in)\s+)?(?P<the>(?i:the))\s+(?P<side>(?i:north|south|east|west))(?i:ern)?\s+"
-    r"(?i:block|plot|field|one|strip|vineyard|orchard|half|bed|paddock|grove|patch)\b"
-    r"(?=(?(at)\s*|\s+(?i:has|is|shows|looks|was|carries|got|has got|with)\b)(?P<rest>[^,;.]*))"
-)
-_OPPOSITE_SIDES = {"north": "south", "south": "north", "east": "west", "west": "east"}
-
-
-def place_compass_members(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
-    """``text`` with "the north block has X, the south block is Y" written "one to the
-    north has X, the other to the south is Y" when X and Y name no crop (two members of a
-    counted plot, told apart by side; "the east plot is Bintje" is left to name a field)."""
-    matches = list(_COMPASS_MEMBER.finditer(text))
-    if len(matches) != 2:
-        return text
-    first, second = matches
-    sides = first.group("side").lower(), second.group("side").lower()
-    if _OPPOSITE_SIDES[sides[0]] != sides[1]:
-        return text
-    if any(item.has(*_NAMING) for m in matches for item in tag(m.group("rest"))):
-        return text
-    one = "One" if (first.group("at") or first.group("the"))[0].isupper() else "one"
-    other = "The other" if (second.group("at") or second.group("the"))[0].isupper() else "the other"
-    return (
-        text[: first.start()]
-        + f"{one} to the {sides[0]}"
-        + text[first.end() : second.start()]
-        + f"{other} to the {sides[1]}"
-        + text[second.end() :]
-    )
-
-
-# "the top field", "the bottom plot": north and south, as zones read them
-_SIDES = {
-    "north": "north",
-    "south": "south",
-    "east": "east",
-    "west": "west",
-    "top": "north",
-    "upper": "north",
-    "bottom": "south",
-    "lower": "south",
-}
-
-
-# "carrots north, potatoes south": a compass word alone after what it places
-_TRAILING = re.compile(
-    r"\b(?P<word>[A-Za-z][\w'-]*)\s+(?P<side>(?i:north|south|east|west))\b(?=\s*(?:[,.;]|$))"
-)
-#: Words after which a compass word is a direction, not a place ("rows running north").
-_NOT_PLACED = frozenset(
-    {
-        "run",
-        "runs",
-        "running",
-        "facing",
-        "face",
-        "faces",
-        "going",
-        "heading",
-        "looking",
-        "look",
-        "due",
-        "to",
-        "the",
-        "of",
-        "from",
-        "towards",
-        "toward",
-        "pointing",
-        "lying",
-        "aligned",
-        "oriented",
-        "orientated",
-        "far",
-        "up",
-        "down",
-        "back",
-        "out",
-        "and",
-    }
-)
-
-
-# "two apple blocks: Granny (west) and Fuji (east)": a side in brackets after a field
-_BRACKETED_SIDE = re.compile(
-    r"\(\s*(?P<side>(?i:north|south|east|west))(?i:ern)?(?:\s+(?i:side|end|half))?\s*\)"
-)
-
-
-def place_trailing_directions(text: str) -> str:
-    """``text`` with "carrots north, potatoes south" written "carrots in the north,
-    potatoes in the south" (two or more such places, not all the same), and likewise
-    "Granny (west) and Fuji (east)"."""
-    sides = {m.group("side").lower() for m in _BRACKETED_SIDE.finditer(text)}
-    if len(sides) >= 2:
-        # ("Zone 1 (north end): Bing cherries": a zone before its field, as "At the top:")
-        text = _BRACKETED_SIDE.sub(
-            lambda m: (
-                f"at the {m.group('side').lower()} end"
-                if text[m.end() :].lstrip().startswith(":")
-                else f"in the {m.group('side').lower()}"
-            ),
-            text,
-        )
-    matches = [m for m in _TRAILING.finditer(text) if m.group("word").lower() not in _NOT_PLACED]
-    if len(matches) < 2 or len({m.group("side").lower() for m in matches}) < 2:
-        return text
-    for match in reversed(matches):
-        start, end = match.span("side")
-        text = f"{text[:start]}in the {match.group('side')}{text[end:]}"
-    return text
-
-
-#: The side words a walk across the farm starts and ends at, with the side opposite.
-_WALK_SIDES = {
-    "bottom": "top",
-    "top": "bottom",
-    "north": "south",
-    "south": "north",
-    "east": "west",
-    "west": "east",
-    "left": "right",
-    "right": "left",
-}
-_SIDE = "|".join(_WALK_SIDES)
-# "Starting at the bottom of the farm by the road and working up to the top: onions,
-# then carrots, then potatoes", "from the bottom of the farm up to the top: ...": an
-# order said as a walk from one side to the opposite one
-_WALKED = re.compile(
-    rf"\b(?:(?i:starting|beginning|start|begin)\s+(?i:at|from)|(?i:from))\s+(?i:the)\s+"
-    rf"(?P<start>(?i:{_SIDE}))(?:\s+(?i:end|side|edge))?\b"
-    r"(?P<between>[^:;.,!?]{0,60}?)"
-    r"\s+(?:(?i:and)\s+)?(?:(?i:working|going|moving|heading|walking|coming|running)\s+)?"
-    r"(?:(?i:up|down|across|over|along|back)\s+)?(?i:to|towards|toward)\s+(?i:the)\s+"
-    rf"(?P<end>(?i:{_SIDE}))(?:\s+(?i:end|side|edge))?\b"
-)
-
-
-def place_walked_orders(text: str) -> str:
-    """``text`` with "starting at the bottom ... and working up to the top" written
-    "from bottom to top" (an order of the fields named after it), when the walk ends at
-    the side opposite where it starts."""
-
-    def order(match: re.Match[str]) -> str:
-        start, end = match.group("start").lower(), match.group("end").lower()
-        if _WALK_SIDES[start] != end:
-            return match.group(0)
-        return f"from {start} to {end}"
-
-    text = _WALKED.sub(order, text)
-    # "Top to bottom on our hillside farm in Madeira: ...": the place said first, so the
-    # order stands right before the list it orders
-    text = _ORDER_THEN_PLACE.sub(
-        lambda m: (
-            f"{m.group('place')}, {m.group('order').lower()}:"
-            if _WALK_SIDES[m.group("a").lower()] == m.group("b").lower()
-            else m.group(0)
-        ),
-        text,
-    )
-    return _EACH_FURTHER.sub(
-        lambda m: f", laid out {_WALK_SIDES[m.group('side').lower()]} to {m.group('side').lower()}",
-        text,
-    )
-
-
-_ORDER_THEN_PLACE = re.compile(
-    rf"(?:^|(?<=[.;!?]\s))(?P<order>(?:(?i:from)\s+)?(?P<a>(?i:{_SIDE}))\s+(?i:to)\s+"
-    rf"(?P<b>(?i:{_SIDE})))\s+(?P<place>(?i:on|at|in|across)\s+[^:;.,]{{1,60}}?)\s*:"
-)
-
-
-# "first the Hamlin grove, then the Navel, then the Moro, each one further north": the
-# fields in the order named, from the opposite side to that one
-_EACH_FURTHER = re.compile(
-    r",?\s*\b(?i:each|every)\s+(?:(?i:one|block|field|plot|strip|orchard|grove)\s+)?"
-    r"(?i:further|farther|a bit further|a little further)\s+(?P<side>(?i:north|south|east|west))\b"
-    r"(?:\s+(?i:than the last|again))?"
-)

@@ -15,8 +15,8 @@ step  pass                                        module (data)
 ====  ==========================================  ===============================
 1     texting forms become words; value lists     ``_casual`` (casual.yaml),
       and counts said once; labels, members       ``_lists`` (value_lists.yaml),
-      named again, walks and sides said in        ``_labels``, ``_members``,
-      other words; plots said to touch            ``_neighbours``
+      named again, walks and sides said in        ``_labels``, ``_sides``,
+      other words; plots said to touch            ``_members``, ``_neighbours``
 2     words, numbers and marks                    ``_lexicon.tokenize``
 3     stated row geometry (and measures no        ``_geometry`` (geometry.yaml)
       recipe holds, as not used)
@@ -89,15 +89,7 @@ from agrirecipe.resolve._intent import (
     SceneIntent,
     TraceStep,
 )
-from agrirecipe.resolve._labels import (
-    drop_list_numbers,
-    open_ordered_lists,
-    place_compass_members,
-    place_leading_directions,
-    place_trailing_directions,
-    place_walked_orders,
-    resolve_labels,
-)
+from agrirecipe.resolve._labels import drop_list_numbers, open_ordered_lists, resolve_labels
 from agrirecipe.resolve._lexicon import (
     Item,
     Lexicon,
@@ -137,6 +129,12 @@ from agrirecipe.resolve._retractions import (
     drop_negated,
 )
 from agrirecipe.resolve._scan import assign_roles, read_heights, read_latitude, read_sizes
+from agrirecipe.resolve._sides import (
+    place_compass_members,
+    place_leading_directions,
+    place_trailing_directions,
+    place_walked_orders,
+)
 from agrirecipe.resolve._structure import (
     apply_each_side,
     apply_plural_counts,
