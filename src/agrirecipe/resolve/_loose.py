@@ -23,6 +23,7 @@ from agrirecipe.resolve._fields import (
 from agrirecipe.resolve._lexicon import (
     Item,
     reader_words,
+    vocabulary,
 )
 from agrirecipe.resolve._links import PRONOUNS, coordinated, link_norm
 from agrirecipe.resolve._measures import (
@@ -384,14 +385,14 @@ def _placed_with(clauses: Sequence[Clause], position: int) -> Mention | None:
         or clause.link.role != "trailer"
         or not clause.items
         # ("the Williams pears next door have fire blight": or a verb saying how it is)
-        or clause.items[0].norm not in ("with", *_DESCRIBING_VERBS)
+        or (
+            clause.items[0].norm != "with"
+            and clause.items[0].norm not in {str(w) for w in vocabulary()["describing_verbs"]}
+        )
     ):
         return None
     return previous.mentions[-1]
 
-
-#: Verbs that open what a field is like ("have fire blight", "are fine").
-_DESCRIBING_VERBS = frozenset({"have", "has", "are", "is", "look", "looks", "show", "shows"})
 
 
 def _continues_a_description(clauses: Sequence[Clause], position: int) -> bool:
