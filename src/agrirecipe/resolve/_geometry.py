@@ -243,6 +243,8 @@ def find_geometry(
                 continue  # ended inside a token
             first = token_at(match.start())
             last = token_at(match.end() - 1) + 1
+            if tokens[first].raw in _MINUS and first + 1 < last and not _negated(tokens, first + 1):
+                first += 1  # ("Padrón - 6 beds each": a dash between words, no minus sign)
             if any(claimed[first:last]):
                 continue
             if pattern.near_rows and not any(

@@ -44,6 +44,10 @@ def _heads_its_list(mention: Mention, later: Sequence[Mention]) -> bool:
     )
 
 
+#: The marks that end a sentence (a semicolon goes on with a list).
+_FULL_STOPS = (".", "!", "?")
+
+
 def drop_list_headings(
     clauses: Sequence[Clause], mentions: list[Mention], crop_categories: dict[str, str]
 ) -> list[Mention]:
@@ -57,10 +61,15 @@ def drop_list_headings(
             (
                 c
                 for c in clauses[mention.clause + 1 :]
-                if c.mentions or (c.link is not None and c.link.norm in (":", "-", "–", "—"))
+                if c.mentions
+                or (c.link is not None and c.link.norm in (":", "-", "–", "—", *_FULL_STOPS))
             ),
             None,
         )
+        if following is not None and link_norm(following) in _FULL_STOPS:
+            # ("Northwest: orchard. Northeast: vineyard.": the colon after the full stop is
+            # another sentence's)
+            following = None
         # (right after the heading's colon, a plot that names its crops is a field of them:
         # "Sensor rig field: a vineyard ... south of a strawberry field")
         right_after = following is not None and following.index == mention.clause + 1

@@ -309,8 +309,12 @@ def following_list(
         # the colon of the heading's own clause)
         colon = index == position + 1 and link == ":"
         if group and not listing(clause.link) and not colon:
-            if not clause.mentions and all(i.role == "filler" for i in clause.items):
-                continue  # "potatoes closest to me, then the wheat": placed by the viewer
+            if not clause.mentions and all(
+                i.role in ("filler", "non_agricultural") for i in clause.items
+            ):
+                # "potatoes closest to me, then the wheat": placed by the viewer; "an
+                # orchard by the road, then a maize field": by scenery on the way
+                continue
             break
         if (
             not group

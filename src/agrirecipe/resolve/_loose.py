@@ -226,8 +226,9 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
             targets = [placed]
         elif carried is not None and carried[0] == position - 1 and _goes_on(clause):
             # "the Ladyfinger block next to them has yellowing, mottled leaves and some
-            # plants wilting": the description goes on for the field it was about
-            targets = carried[1]
+            # plants wilting": the description goes on for the field it was about (unless
+            # it names another crop's plants: "the cherries are ripe, the vines in flower")
+            targets = _described_crop(clause, before) or carried[1]
         else:
             targets = coordinated(clauses, position)
             targets = _past_a_reference(clauses, position, targets)
@@ -394,7 +395,6 @@ def _placed_with(clauses: Sequence[Clause], position: int) -> Mention | None:
     return previous.mentions[-1]
 
 
-
 def _continues_a_description(clauses: Sequence[Clause], position: int) -> bool:
     """'..., the bananas still small and just planted': words joined by "and" to a
     sentence about a field named before ("the bananas ...") go on describing it."""
@@ -458,7 +458,21 @@ def _described_crop(clause: Clause, before: Sequence[Mention]) -> list[Mention]:
         crops |= set(item.data.get("describes", ()))
     if not crops:
         return []
-    fields = [m for m in before if strong_crops(m) & crops]
+    # (a field named by its plot alone: "Vineyard and cherry orchard ..., the vines are in
+    # flower" are the vineyard's)
+    fields = [
+        m
+        for m in before
+        if (
+            strong_crops(m)
+            or (
+                set(m.plot["options"])
+                if m.plot is not None and len(m.plot["options"]) == 1
+                else set()
+            )
+        )
+        & crops
+    ]
     return fields[-1:]
 
 
@@ -466,11 +480,27 @@ def _goes_on_saying_all(clauses: Sequence[Clause], position: int, said_all: int)
     """ "winter wheat next to durum, both still green and young": words joined by "and" to
     words said of every field are said of every field too."""
     clause = clauses[position]
+    # ("each gets 10 beds 1.2 m wide (centre to centre) with 3 rows per bed and heads every
+    # 30 cm": past a bracket of words that say nothing, the measures go on)
+    before = position - 1
+    while (
+        before > said_all
+        and not clauses[before].mentions
+        and not any(i.role in ATTRIBUTE_ROLES for i in clauses[before].items)
+    ):
+        before -= 1
+    joined = clause.link is not None and (
+        clause.link.norm == "and"
+        or (
+            clause.link.norm in (")", ",")
+            and before < position - 1
+            and any(i.role == "geometry" for i in clause.items)
+        )
+    )
     return (
-        said_all == position - 1
+        said_all == before
         and said_all >= 0
-        and clause.link is not None
-        and clause.link.norm == "and"
+        and joined
         and not clause.mentions
         and not any(c.mentions for c in clauses[position + 1 :])
     )

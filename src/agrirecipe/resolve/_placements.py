@@ -338,6 +338,8 @@ def placements(clauses: Sequence[Clause], members: dict[int, list[int]]) -> dict
             if len(following) == 1 and id(following[0]) in members:
                 placed[position] = following[0]
             continue
+        if not before.items and link_norm(before) in (".", "!", "?"):
+            continue  # ("... 14 rows. To the south, a Navel block": it places what follows)
         previous = clauses[_past_a_bracket(clauses, position - 1)].named
         if len(previous) == 1 and id(previous[0]) in members:
             placed[position] = previous[0]

@@ -66,10 +66,18 @@ def _likenesses(items: Sequence[Item]) -> None:
 
 
 def _verbs(items: Sequence[Item]) -> None:
-    """'golden and ready to strip': a plot word after "ready to" is a verb."""
+    """'golden and ready to strip': a plot word after "ready to" is a verb; 'workers
+    walking the strip between a wheat field and a potato field': a plot walked (or driven)
+    along is a way through the fields."""
     for first, to, item in zip(items, items[1:], items[2:], strict=False):
-        if item.role == "plot" and to.norm == "to" and first.norm in _BEFORE_A_VERB:
+        if (item.role == "plot" and to.norm == "to" and first.norm in _BEFORE_A_VERB) or (
+            item.role == "plot" and to.norm == "the" and first.norm in _ALONG_A_WAY
+        ):
             item.role = "filler"
+
+
+#: Verbs of going along a way ("walking the strip between ...").
+_ALONG_A_WAY = frozenset({"walking", "walk", "walks", "walked", "driving", "drive", "drives"})
 
 
 def _the_same(items: Sequence[Item]) -> None:
@@ -112,7 +120,7 @@ def _pastures(items: Sequence[Item]) -> None:
 def _damage_and_parts(items: Sequence[Item]) -> None:
     """'brown corky scab patches': patches right after a disease or a look are the damage,
     not plots; 'a patch in the middle where the leaves have gone brown': a part of a field
-    named before."""
+    named before; 'Patches of the wheat have yellow rust': parts of the field named."""
     named = False
     for index, item in enumerate(items):
         earlier = items[index - 1] if index else None
@@ -154,6 +162,16 @@ def _damage_and_parts(items: Sequence[Item]) -> None:
             item.role = "filler"
             if earlier is not None and earlier.role == "number":
                 earlier.role = "filler"
+        elif (
+            item.role == "plot"
+            and item.norm in ("patch", "patches", "parts", "areas", "bits")
+            and later is not None
+            and later.norm == "of"
+            and index + 2 < len(items)
+            and items[index + 2].norm in ("the", "our", "my", "this", "that")
+        ):
+            # "Patches of the wheat have yellow rust": parts of a field, not fields
+            item.role = "filler"
         named = named or item.role in ("head", "plot", "category")
 
 

@@ -31,6 +31,7 @@ from agrirecipe.resolve._links import (
     field_relations,
     following_list,
     last_named,
+    link_norm,
     listed_after,
     own_mentions,
 )
@@ -666,6 +667,9 @@ def _attached(clauses: Sequence[Clause], position: int) -> bool:
     clauses that only describe it ("Navel oranges, ripe and being picked, on the north
     side; Valencia Late on the south side")."""
     index, described = position - 1, False
+    previous = clauses[index]
+    if not previous.items and link_norm(previous) in _FULL_STOPS:
+        return False  # ("... 14 rows. To the south, a Navel block": it opens a sentence)
     while index > 0 and not clauses[index].named:
         clause = clauses[index]
         if (

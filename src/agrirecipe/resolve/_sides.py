@@ -51,11 +51,18 @@ _NEXT_SIDE = re.compile(_SIDE_PART)
 
 # "the western block at 2.75 m between rows", "the eastern one at 3 m": a member named by
 # its side, then its measures (to a mark, past a decimal point)
+# ("the left one about a hectare and the right one half a hectare": a size said plainly)
 _SIDE_MEMBER = re.compile(
-    r"\b(?i:the)\s+(?P<side>(?i:north|south|east|west))(?i:ern)?\s+"
+    r"\b(?i:the)\s+(?P<side>(?i:north|south|east|west|left|right))(?i:ern)?\s+"
     r"(?P<noun>(?i:block|plot|field|strip|one|half|part|section|parcel|bed))\s+"
-    r"(?P<rest>(?i:at|with|on|of)\s+\d(?:[^,;.:()]|[.,](?=\d))*)"
+    r"(?P<rest>(?:(?i:at|with|on|of)\s+\d"
+    r"|(?:(?i:about|around|roughly|approximately|nearly|almost|some)\s+)?"
+    r"(?:\d|(?:(?i:half|a\s+quarter|quarter)\s+(?:(?i:of)\s+)?)?"
+    r"(?i:a|an|one|two|three|four)\s+(?i:hectares?|ha|acres?)\b))"
+    r"(?:(?!\s+(?i:and|but)\s+(?i:the)\s)[^,;.:()]|[.,](?=\d))*)"
 )
+#: Left and right in a picture, as the compass sides zones read them.
+_SIDE_WORDS = {"left": "west", "right": "east"}
 
 
 # "Upper block (north): Riesling": a block named by where it is, then its compass side
@@ -83,7 +90,7 @@ def place_leading_directions(text: str) -> str:
         text = _SIDE_MEMBER.sub(
             lambda m: (
                 f"the {m.group('noun')} {m.group('rest').rstrip()} on the "
-                f"{m.group('side').lower()} side"
+                f"{_SIDE_WORDS.get(m.group('side').lower(), m.group('side').lower())} side"
             ),
             text,
         )

@@ -566,11 +566,14 @@ def _each_row(items: Sequence[Item]) -> None:
 
 def _every_plot(items: Sequence[Item]) -> None:
     """'Blight has hit every field - the potatoes, ...', 'each plot gets a 4 m headland',
-    'all the strips are 50 m': "every"/"each" before one plot word, or "all (the)" before
-    a plural one, says something of every field; the plot word asks for none."""
+    'all the strips are 50 m', 'Rows run E-W in both blocks': "every"/"each" before one
+    plot word, or "all (the)" or "both" before a plural one, says something of every
+    field; the plot word asks for none."""
     for index, item in enumerate(items):
-        if item.role != "all" or item.norm not in ("every", "each", "all"):
+        if item.role != "all" or item.norm not in ("every", "each", "all", "both"):
             continue
+        if item.norm == "both" and not _named_in_a_sentence_before(items, index):
+            continue  # ("grapes ripening in both blocks. Chardonnay: ...": the two named after)
         at = index + 1
         if item.norm == "all" and at < len(items) and items[at].norm == "the":
             at += 1
@@ -586,7 +589,9 @@ def _every_plot(items: Sequence[Item]) -> None:
         spec = plot.data.get("value") if plot is not None and plot.role == "plot" else None
         if plot is None or not isinstance(spec, dict):
             continue
-        if bool(spec.get("plural")) != (item.norm == "all") and not spec.get("individual"):
+        # ("Rows run E-W in both blocks": "both" before a plural, like "all")
+        plural_word = item.norm in ("all", "both")
+        if bool(spec.get("plural")) != plural_word and not spec.get("individual"):
             continue
         # ("it's on nearly every vine", "every tree has fruit": the plants of the fields)
         after = items[at + 1] if at + 1 < len(items) else None
@@ -597,6 +602,12 @@ def _every_plot(items: Sequence[Item]) -> None:
             if not (after.norm == "with" and said is not None and said.role == "geometry"):
                 continue
         plot.role = "filler"
+
+
+def _named_in_a_sentence_before(items: Sequence[Item], index: int) -> bool:
+    """Whether a crop was named in a sentence that ended before ``items[index]``."""
+    ends = [k for k, i in enumerate(items[:index]) if i.norm in SENTENCE_MARKS]
+    return bool(ends) and any(i.role == "head" for i in items[: ends[-1]])
 
 
 def _plot_numbers_are_names(items: Sequence[Item]) -> None:
