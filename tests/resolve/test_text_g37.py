@@ -130,3 +130,15 @@ def test_a_strip_walked_along_is_no_field() -> None:
         "and a potato field."
     ).fields
     assert [f.crop for f in fields] == ["Wheat", "Potato"]
+
+
+def test_a_plot_of_a_category_titling_the_plots_listed_after_it() -> None:
+    fields = recipe(
+        "Veg block for the drone. Three plots in a line, north to south: cabbages (rows 75 cm "
+        "apart, 45 cm between heads), then onions (30 cm rows, 10 cm in row), then carrots on "
+        "75 cm ridges. Every plot is 20 m x 50 m."
+    ).fields
+    assert [f.crop for f in fields] == ["Cabbage", "Onion", "Carrot"]
+    # (a plot of the category is still a field when the list names another category)
+    fields = recipe("A veg garden. Three plots: cabbages, onions and apples.").fields
+    assert len(fields) == 4

@@ -361,12 +361,16 @@ def _ends_sentence(clause: Clause) -> bool:
     return clause.link is not None and clause.link.norm in SENTENCE_MARKS
 
 
-def drop_titles(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
+def drop_titles(
+    clauses: Sequence[Clause], mentions: list[Mention], crop_categories: dict[str, str]
+) -> list[Mention]:
     """'Bananas from my trip to Tenerife! A plantation of banana plants behind an old
     stone wall, ...': a crop named alone, with no plot or count, in a first sentence of
     its own (or before a colon: "salad dataset: two lettuce plots, ..."), then one field of
     that crop in the next (or one plot listing fields of only that crop), is that field's
-    title. Its words go to the field. Return the fields left."""
+    title. Its words go to the field. So is a plot of a category alone ("Veg block for the
+    drone. Three plots in a line: cabbages, ..., then onions, ..., then carrots ...")
+    before one plot listing fields of only its crops. Return the fields left."""
     if len(mentions) < 2:
         return mentions
     title, field = mentions[0], mentions[1]
@@ -374,9 +378,14 @@ def drop_titles(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Ment
     # ("Just a spud farm, honestly. One big field of spuds, ...": the farm named by its
     # crop is a title too)
     farm = any(i.norm == "farm" for i in title.items)
+    category = title.category if not title.has_crop and title.plot is not None else None
+    if category is not None:
+        crops = {crop for crop, of in crop_categories.items() if of == category}
+        if not _lists_only(field, crops):
+            return mentions
     if (
         not crops
-        or (title.plot is not None and not farm)
+        or (title.plot is not None and not farm and category is None)
         or (title.count is not None and not (farm and title.count == 1))
         or title.refinements
         or names_a_variety(title)

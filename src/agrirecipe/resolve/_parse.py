@@ -288,7 +288,7 @@ class PromptReader(FieldReading):
         mentions = drop_list_headings(clauses, mentions, self.crop_categories)
         mentions = drop_counted_summaries(clauses, mentions)
         mentions = fill_counted_lists(clauses, mentions)
-        mentions = drop_titles(clauses, mentions)
+        mentions = drop_titles(clauses, mentions, self.crop_categories)
         mentions = drop_trailing_summaries(clauses, drop_plural_headings(clauses, mentions))
         mentions = drop_restated_counts(clauses, mentions)
         mentions = lend_heading_crop(clauses, name_counted_plots(clauses, mentions))
