@@ -8,15 +8,15 @@ mention into words for the field(s) it describes (the words are data:
 
 from __future__ import annotations
 
-import functools
 import itertools
 from collections.abc import Sequence
 
 from agrirecipe.resolve._decompose import Clause, Mention
-from agrirecipe.resolve._lexicon import Item, reader_words, vocabulary
+from agrirecipe.resolve._lexicon import Item, reader_words
 from agrirecipe.resolve._structure import (
     definite_before_head,
     definite_words,
+    describing_verbs,
     descriptive_words,
     names_a_variety,
     plant_part_words,
@@ -571,7 +571,7 @@ def _ends_with_of(owner: Mention) -> bool:
 def said_with_a_verb(clause: Clause, mention: Mention) -> bool:
     """Whether a describing verb follows the mention's head in its clause."""
     head = max(h.end for h in mention.heads)
-    verbs = _describing_verbs()
+    verbs = describing_verbs()
     return any(i.start >= head and i.norm in verbs for i in clause.items)
 
 
@@ -591,11 +591,6 @@ def _after_a_look(previous: Clause, clause: Clause, mention: Mention) -> bool:
             for i in previous.items
         )
     )
-
-
-@functools.lru_cache(maxsize=1)
-def _describing_verbs() -> frozenset[str]:
-    return frozenset(str(word) for word in vocabulary()["describing_verbs"])
 
 
 def _a_different(mention: Mention) -> bool:

@@ -23,7 +23,6 @@ from agrirecipe.resolve._fields import (
 from agrirecipe.resolve._lexicon import (
     Item,
     reader_words,
-    vocabulary,
 )
 from agrirecipe.resolve._links import PRONOUNS, coordinated, link_norm
 from agrirecipe.resolve._measures import (
@@ -40,6 +39,7 @@ from agrirecipe.resolve._measures import (
 )
 from agrirecipe.resolve._structure import (
     attribute_of,
+    describing_verbs,
     per_bed,
     strong_crops,
 )
@@ -386,10 +386,7 @@ def _placed_with(clauses: Sequence[Clause], position: int) -> Mention | None:
         or clause.link.role != "trailer"
         or not clause.items
         # ("the Williams pears next door have fire blight": or a verb saying how it is)
-        or (
-            clause.items[0].norm != "with"
-            and clause.items[0].norm not in {str(w) for w in vocabulary()["describing_verbs"]}
-        )
+        or (clause.items[0].norm != "with" and clause.items[0].norm not in describing_verbs())
     ):
         return None
     return previous.mentions[-1]

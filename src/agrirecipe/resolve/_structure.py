@@ -34,6 +34,7 @@ __all__ = [
     "count_plots_of_a_list",
     "definite_before_head",
     "definite_words",
+    "describing_verbs",
     "descriptive_words",
     "first_word",
     "has_room",
@@ -561,13 +562,20 @@ def share_counted_fields(mentions: Sequence[Mention]) -> list[Mention]:
 
 
 @functools.lru_cache(maxsize=1)
-@functools.lru_cache(maxsize=1)
 def plant_part_words() -> frozenset[str]:
     """Words for the fruit of a crop ("fruit", "berries", "the first hands")."""
     return frozenset(str(word) for word in vocabulary()["plant_part_words"])
 
 
+@functools.lru_cache(maxsize=1)
+def describing_verbs() -> frozenset[str]:
+    """Verbs that say what plants look like or do ("have", "are", "wilting")."""
+    return frozenset(str(word) for word in vocabulary()["describing_verbs"])
+
+
+@functools.lru_cache(maxsize=1)
 def descriptive_words() -> frozenset[str]:
+    """Words for the plants of a field or their parts ("fruit", "vines", "leaves")."""
     vocab = vocabulary()
     return frozenset(
         str(word) for word in (*vocab["plant_part_words"], *vocab["descriptive_heads"])
