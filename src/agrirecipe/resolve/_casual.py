@@ -20,7 +20,7 @@ import yaml
 from agrirecipe.resolve._geometry import number_words
 from agrirecipe.resolve._lexicon import DATA_DIR, Item, vocabulary
 
-__all__ = ["count_said_after_crop", "expand_casual"]
+__all__ = ["count_said_after_crop", "end_reciprocals", "expand_casual"]
 
 
 @functools.cache
@@ -55,6 +55,58 @@ _MIXED_IN = re.compile(
 )
 #: ", all in one block", "all in a single field": the one plot a crop is grown in.
 _ALL_IN_ONE = re.compile(r"\s*,?\s+(?i:all)\s+(?i:in)\s+(?=(?i:one|a\s+single)\s)")
+#: "one big orchard but 3 blocks": one plot said, then the blocks it is split into.
+_ONE_PLOT_BUT = re.compile(
+    r"\b(?P<one>(?i:one|a single)\s+(?:(?i:big|large|small|long)\s+)?"
+    r"(?i:orchard|field|plot|block|vineyard|grove|farm|site))\s*,?\s+"
+    r"(?i:but|split into|divided into|cut into|in|with)\s+"
+    r"(?P<blocks>(?:\d+|(?i:two|three|four|five|six))\s+(?i:blocks|plots|sections|parts|fields|strips))\b"
+)
+#: "A 100-acre farm", "the farm is 40 ha": the size of the whole holding.
+_FARM_TOTAL = re.compile(
+    r"\b(?P<n>\d+(?:\.\d+)?)[\s-]*(?P<unit>(?i:acres?|ha|hectares?))[\s-]+"
+    r"(?i:farm|holding|property|estate|smallholding)\b"
+    r"|\b(?i:farm|holding|property|estate)\s+(?i:is|of)\s+(?:(?i:about|around|some)\s+)?"
+    r"(?P<n2>\d+(?:\.\d+)?)\s*(?P<unit2>(?i:acres?|ha|hectares?))\b"
+)
+#: "half in wheat", "a third of it under potatoes": a share of the farm given to a crop.
+_FARM_SHARE = re.compile(
+    r"(?<!(?i:other) )\b(?P<share>(?i:half|a half|one half|a third|one third|a quarter|"
+    r"one quarter|two thirds|three quarters))(?:\s+(?i:of it|of that|of the farm|of the land))?"
+    r"\s+(?P<said>(?:(?i:is|are)\s+)?(?i:in|under|down to|planted with|planted to|sown to|"
+    r"sown with|given to|given over to)\s+)"
+)
+_SHARES = {
+    "half": 0.5,
+    "a half": 0.5,
+    "one half": 0.5,
+    "a third": 1 / 3,
+    "one third": 1 / 3,
+    "a quarter": 0.25,
+    "one quarter": 0.25,
+    "two thirds": 2 / 3,
+    "three quarters": 0.75,
+}
+_UNIT_PLURALS = {"acre": "acres", "hectare": "hectares"}
+
+
+def _farm_shares(text: str) -> str:
+    """``text`` with "half in wheat" written "50 acres in wheat" after "a 100-acre farm":
+    a share of the farm's stated size, as an area of the field."""
+    total = _FARM_TOTAL.search(text)
+    if total is None:
+        return text
+    size = float(total.group("n") or total.group("n2"))
+    unit = (total.group("unit") or total.group("unit2")).lower()
+    unit = _UNIT_PLURALS.get(unit, unit)
+
+    def area(match: re.Match[str]) -> str:
+        value = round(size * _SHARES[re.sub(r"\s+", " ", match.group("share").lower())], 4)
+        return f"{value:g} {unit} {match.group('said')}"
+
+    return text[: total.end()] + _FARM_SHARE.sub(area, text[total.end() :])
+
+
 #: "minus 2", "negative 3": a sign said as a word before a number.
 _MINUS = re.compile(r"\b(?i:minus|negative)\s+(?=\d)")
 #: An arrow written between two words ("west→east", "wheat -> maize").
@@ -87,6 +139,10 @@ def expand_casual(prompt: str) -> str:
     # "bell types with a few chillies mixed in": a few plants among the field's own crop,
     # no field of their own
     text = _MIXED_IN.sub("", text)
+    # "..., one big orchard but 3 blocks pls": three blocks, in the one orchard
+    text = _ONE_PLOT_BUT.sub(r"\g<blocks> in \g<one>", text)
+    # "A 100-acre farm: half in wheat, ...": a share of the farm's size, as an area
+    text = _farm_shares(text)
     # "just cereals this year, all in one big 60 ha block": the plot the crop is in
     text = _ALL_IN_ONE.sub(" in ", text)
     # "rows at minus 2 metres spacing": a negative number said in words (refused later)
@@ -428,6 +484,26 @@ _PLOTS_SAID_AFTER = re.compile(
 
 # "a wheat field with yellow rust and a healthy one next to it": one more field of the
 # crop just named, told apart by a word of its own
+#: "vineyards nxt to each other grapes ripening": the word after a reciprocal.
+_RECIPROCAL = re.compile(r"\b(?i:each\s+other|one\s+another)\s+(?P<word>[A-Za-z][\w'-]*)")
+
+
+def end_reciprocals(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
+    """``text`` with a comma after "each other" or "one another" where a crop follows
+    without one ("riesling & chardonnay vineyards nxt to each other grapes ripening"):
+    the placement ends there, and the crop after it is a new clause (here one about the
+    grapes already named), not a field joined to the placement."""
+
+    def comma(match: re.Match[str]) -> str:
+        items = [i for i in tag(match.group("word")) if i.role != "separator"]
+        if not items or not items[0].has("crop", "variety", "category"):
+            return match.group(0)
+        start = match.start("word") - match.start()
+        return f"{match.group(0)[:start].rstrip()}, {match.group(0)[start:]}"
+
+    return _RECIPROCAL.sub(comma, text)
+
+
 _ONE_MORE = re.compile(
     r"(?P<lead>(?:\b(?i:and)|,|&)\s+(?i:a|an|another)\s+)(?P<said>(?:[A-Za-z][\w-]*\s+){1,2}?)"
     r"(?i:one)\b(?=\s+(?i:next|beside|by|near|north|south|east|west|alongside|behind|across)\b)"

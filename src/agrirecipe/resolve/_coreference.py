@@ -67,6 +67,17 @@ def _counted_host(
     return host if heads and all(builder.compatible(host, h) for h in heads) else None
 
 
+def _labels_its_sentence(clauses: Sequence[Clause], clause: Clause) -> bool:
+    """Whether ``clause`` opens a sentence and a colon follows it ("... . Granny Smith:")."""
+    return (
+        clause.link is not None
+        and clause.link.norm in (".", "!", "?", ";")
+        and clause.index + 1 < len(clauses)
+        and clauses[clause.index + 1].link is not None
+        and clauses[clause.index + 1].link.norm == ":"  # type: ignore[union-attr]
+    )
+
+
 #: The words that say what "it" is ("it's a 3 hectare field", "it is a 2 ha block").
 _IT_IS = (("it s",), ("it", "is"), ("its",), ("it", "s"))
 
@@ -329,6 +340,9 @@ def merge_coreferences(
                 # ("Two fields either side of the concrete farm track. Left of it is our
                 # Bintje, ...; right of it the Nantes carrots")
                 or (bare and on_a_side_of_it(mention))
+                # ("Two-block orchard for the mapping robot. Granny Smith: 15 rows, ...
+                # Conferance pears: 15 rows, ...": each member under its own label)
+                or (bare and _labels_its_sentence(clauses, clause))
             )
             and not summary
             and (first is None or first.norm not in EACH)

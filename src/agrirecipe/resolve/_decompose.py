@@ -86,6 +86,9 @@ class Mention:
     borrowed: list[Item] = field(default_factory=list)
     rest: Mention | None = None
     is_refinement: bool = False
+    #: A member held open before one said by its place ("The middle one has blight"):
+    #: the others said later ("the other two look fine") fill it.
+    unsaid: bool = False
 
     @property
     def text(self) -> str:
@@ -153,7 +156,11 @@ def _interpretations(item: Item) -> list[Interpretation]:
         elif sense.kind == "variety" and sense.crop is not None:
             # a weak name promoted to its clause's head ("west to east: Lollo, then ...")
             # names its variety wherever the field is merged
-            weak = sense.weak and not item.data.get("promoted")
+            # ("grove outside Valencia, navel trees": "navel" made the head of its plot)
+            weak = sense.weak and not (
+                item.data.get("promoted")
+                or (item.role == "head" and not item.has("crop", "category"))
+            )
             result.append((sense.crop, str(sense.value), weak))
     return result
 

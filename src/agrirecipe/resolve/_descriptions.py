@@ -519,8 +519,11 @@ def _dissolve_described_after_of(clause: Clause, words: frozenset[str]) -> list[
 def _a_look_on(owner: Mention) -> bool:
     """ "strawberries ... have grey mould on the fruit": the mention ends with a disease
     or a look and "on"/"in", so the plant part after it is where that shows (also with a
-    word or two between: "dark scabby spots on the fruit")."""
+    word or two between: "dark scabby spots on the fruit"; "on a lot of the fruit": a
+    share of it)."""
     ordered = sorted(owner.items, key=lambda i: i.start)
+    while ordered and ordered[-1].role in ("quantity", "fraction"):
+        ordered.pop()
     return (
         len(ordered) >= 2
         and ordered[-1].norm in ("on", "in", "over", "across", "along")

@@ -638,6 +638,12 @@ _SINGLE_CROP_ROW = re.compile(
 )
 
 
+#: "albion 8 beds side by side": a crop's beds, then where its field lies.
+_CROP_BEDS_SIDE_BY_SIDE = re.compile(
+    r"\b(?P<words>[A-Za-z][\w'’-]*)\s+(?P<beds>\d+\s+(?i:beds|ridges))\s+(?=(?i:side by side)\b)"
+)
+
+
 def hoist_counted_crops(text: str, tag: Callable[[str], Sequence[Any]]) -> str:
     """``text`` with counts said of a crop's rows or plants written so that the number
     counts rows or plants, not fields: "12 maize rows" is "maize in 12 rows", "6 rows of
@@ -711,7 +717,16 @@ def hoist_counted_crops(text: str, tag: Callable[[str], Sequence[Any]]) -> str:
             return match.group(0)
         return f"{match.group(0)} {match.group('unit')}"
 
+    def beds_then_placed(match: re.Match[str]) -> str:
+        # "sonata strawbs 10 beds & albion 8 beds side by side": the beds of the crop
+        # named right before them, and the fields side by side (not "two beds side by
+        # side", two plots)
+        if not names_a_crop(match.group("words")):
+            return match.group(0)
+        return f"{match.group('words')} {match.group('beds')}, "
+
     text = _CONVERTED.sub(r"\g<measure>", text)
+    text = _CROP_BEDS_SIDE_BY_SIDE.sub(beds_then_placed, text)
     text = _ELLIPTIC_WITH.sub(same_unit_with, text)
     for _ in range(8):  # ("120 Gala trees, 80 Fuji and 60 Jonagold": each in turn)
         text, before = _ELLIPTIC_PLANTS.sub(same_plants, text), text

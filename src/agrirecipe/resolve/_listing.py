@@ -82,9 +82,17 @@ def listed_fields(
         # fields named again ("the Comice") or plot words alone ("Beds and ridges run
         # NW-SE") name no new field
         named.extend(
-            m for m in clause.mentions if m.has_crop and not definite_before_head(clause, m)
+            m
+            for m in clause.mentions
+            if (m.has_crop or _plot_of_a_crop(m)) and not definite_before_head(clause, m)
         )
     return named
+
+
+def _plot_of_a_crop(mention: Mention) -> bool:
+    """Whether ``mention`` is one plot whose noun names its crops ("a vineyard")."""
+    plot = mention.plot
+    return mention.count == 1 and plot is not None and not plot["plural"] and bool(plot["options"])
 
 
 def named_again(again: Mention, member: Mention) -> bool:

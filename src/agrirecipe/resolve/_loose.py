@@ -483,7 +483,9 @@ def _goes_on_saying_all(clauses: Sequence[Clause], position: int, said_all: int)
     while (
         before > said_all
         and not clauses[before].mentions
-        and not any(i.role in ATTRIBUTE_ROLES for i in clauses[before].items)
+        # (nor past a member named since: "two adjacent plots, rows 50 m long in both.
+        # Bintje potatoes, 30 rows at 75 cm. ...": the Bintje's own rows)
+        and not any(i.role in (*ATTRIBUTE_ROLES, "head") for i in clauses[before].items)
     ):
         before -= 1
     joined = clause.link is not None and (

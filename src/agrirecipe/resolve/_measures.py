@@ -58,10 +58,23 @@ def drop_total_sizes(items: Sequence[Item]) -> list[str]:
     dropped: list[str] = []
     for position, index in enumerate(sizes):
         later = sizes[position + 1 :]
-        if len(later) < 2 or any(i.role == "head" for i in items[: later[0]]):
+        if (
+            (len(later) < 2 and not _the_farms(items, index))
+            or not later
+            or any(i.role == "head" for i in items[: later[0]])
+        ):
             continue  # (said before any crop: "Spring Wheat 1 ha ..." is the wheat's)
         total, added = _area(items[index]), 0.0
         if total is None:
+            continue
+        if _the_farms(items, index) and any(
+            (area := _area(items[other])) is not None and area < total * 0.99 for other in later
+        ):
+            # "A 100-acre farm: 50 acres of wheat, the rest maize and potatoes": the farm's
+            # size, and the fields in it smaller
+            items[index].role = "filler"
+            items[index].data["scenery"] = "total"
+            dropped.append(items[index].raw)
             continue
         for count, other in enumerate(later, start=1):
             area = _area(items[other])
@@ -76,6 +89,20 @@ def drop_total_sizes(items: Sequence[Item]) -> list[str]:
             if added > total * 1.01:
                 break
     return dropped
+
+
+#: The words for the whole holding whose size a total is ("a 100-acre farm").
+_HOLDINGS = frozenset({"farm", "holding", "property", "estate", "smallholding"})
+
+
+def _the_farms(items: Sequence[Item], index: int) -> bool:
+    """Whether the size at ``index`` is said of the farm: "a 100-acre farm", "the farm is
+    40 ha", "a farm of 12 hectares"."""
+    after = items[index + 1].norm if index + 1 < len(items) else ""
+    before = [i.norm for i in items[max(0, index - 2) : index]]
+    return after in _HOLDINGS or (
+        len(before) == 2 and before[0] in _HOLDINGS and before[1] in ("is", "of", "covers")
+    )
 
 
 def sentence_fields(clauses: Sequence[Clause], position: int) -> list[Mention]:
@@ -436,13 +463,19 @@ def parallel_spacing(
     intent: FieldIntent,
     items: Sequence[Item],
     others: Sequence[tuple[FieldIntent, Sequence[Item]]],
+    ranges: dict[str, tuple[float, float]] | None = None,
 ) -> FieldIntent:
     """'Riesling at 1.8 m row spacing and Spätburgunder at 2.0 m', 'tomato rows 1.5 m
     apart, capsicum 0.9 m, maize 0.75 m': a bare 'at 2.0 m' or '0.9 m' after a crop's
-    name is the spacing the field whose measure was said last before it stated."""
+    name is the spacing the field whose measure was said last before it stated. With no
+    such field ("10 rows in each: apples at 3.5 m, pears at 3.5 m, cherries at 4.6 m"),
+    "at" right after the crop's name is the spacing whose sourced range (``ranges``, by
+    key) holds the value: the only one, or the rows' when both do and rows are counted."""
     lengths = ("row_spacing_m", "in_row_spacing_m", "bed_width_m")
     ordered = sorted(items, key=lambda i: i.start)
-    for first, number, unit in zip(ordered, ordered[1:], ordered[2:], strict=False):
+    for at, (first, number, unit) in enumerate(
+        zip(ordered, ordered[1:], ordered[2:], strict=False)
+    ):
         if unit.role != "length_unit" or not (
             first.norm == "at" or (first.role == "head" and number.role == "filler")
         ):
@@ -456,7 +489,10 @@ def parallel_spacing(
             for before, other in others
             if any(i.role == "geometry" and i.start < number.start for i in other)
         ]
+        bare_at = first.norm == "at" and at > 0 and ordered[at - 1].role == "head"
         if not spoken:
+            if bare_at and ranges:
+                return _spacing_by_range(intent, value * factors[0], ranges)
             return intent
         before = max(spoken, key=lambda s: s[0])[1]
         own = intent.rows
@@ -468,6 +504,9 @@ def parallel_spacing(
             and (own is None or getattr(own, k) is None)
         ]
         if len(said) != 1:
+            if bare_at and ranges and not said:
+                # ("10 rows in each: apples at 3.5 m, ...": the fields before said no spacing)
+                return _spacing_by_range(intent, value * factors[0], ranges)
             return intent
         metres = round(value * factors[0], 6)
         text = f"{first.raw} {number.raw} {unit.raw}"
@@ -478,3 +517,24 @@ def parallel_spacing(
         )
         return intent.model_copy(update={"rows": rows})
     return intent
+
+
+def _spacing_by_range(
+    intent: FieldIntent, metres: float, ranges: dict[str, tuple[float, float]]
+) -> FieldIntent:
+    """``intent`` with a bare "at 3.5 m" said of it as the spacing whose range holds it."""
+    own = intent.rows
+    if own is not None and (own.row_spacing_m is not None or own.in_row_spacing_m is not None):
+        return intent
+    fits = [k for k, (low, high) in ranges.items() if low <= metres <= high]
+    if len(fits) > 1:
+        fits = ["row_spacing_m"] if own is not None and own.rows is not None else []
+    if len(fits) != 1:
+        return intent
+    metres = round(metres, 6)
+    rows = (
+        own.model_copy(update={fits[0]: metres})
+        if own is not None
+        else RowSpec(**{fits[0]: metres}, text=f"at {metres:g} m")
+    )
+    return intent.model_copy(update={"rows": rows})

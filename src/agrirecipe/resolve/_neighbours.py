@@ -166,6 +166,20 @@ def _dividers() -> tuple[re.Pattern[str], re.Pattern[str], re.Pattern[str]]:
     return between, separated, named
 
 
+@functools.cache
+def _two_either_side() -> re.Pattern[str]:
+    """ "Two fields of cereals either side of the farm road": two fields said at once,
+    one on each side of a track, ditch or hedge (not "four fields, two either side")."""
+    things = "|".join(re.escape(w) for w in scenery_words("boundaries", "ground", "trees"))
+    return re.compile(
+        r"(?P<lead>\b(?i:two|2|both|a pair of)\s+(?!(?i:either|each|both|on)\b)"
+        r"[A-Za-z][^,;:.!?]*?)\s+(?:(?i:on)\s+)?(?i:either|each|both)\s+(?i:sides?)\s+(?i:of)\s+"
+        + _A_DIVIDER.format(things=things)
+        # (not "... either side of the lane and an onion field past the pond")
+        + r"(?=\s*(?:[,.;:!?)]|$|(?i:with|but)\b))"
+    )
+
+
 def place_divided_plots(text: str) -> str:
     """``text`` with "two plots, side by side with a ditch between: ..." written "two
     plots, side by side: ...", and "wheat and maize with a hedge between them" written
@@ -173,9 +187,12 @@ def place_divided_plots(text: str) -> str:
     "between" that needs a field on each side (side by side only where it is said).
     "two wheat fields separated only by a hawthorn hedge" is "two wheat fields side by
     side", and "..., with a ditch between the wheat and the maize" is "..., the wheat
-    next to the maize": what divides them is scenery and they touch it on either side."""
+    next to the maize": what divides them is scenery and they touch it on either side;
+    so do "two wheat fields either side of the track"."""
     between, separated, named = _dividers()
     text = separated.sub(" side by side", text)
+    # "Two fields of cereals either side of the farm road": across it from each other
+    text = _two_either_side().sub(lambda m: f"{m.group('lead')} side by side", text)
     # "..., with a ditch between the wheat and the maize": the two fields it divides touch
     text = named.sub(lambda m: f", {m.group('a')} next to {m.group('b')}", text)
     return between.sub(lambda m: "side by side" if m.group("side") else "", text)

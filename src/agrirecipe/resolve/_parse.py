@@ -57,7 +57,7 @@ from collections.abc import Callable, Iterable, Sequence
 
 from agrirecipe._errors import PromptError, UnknownCropError
 from agrirecipe.resolve._appositives import merge_appositive_plots
-from agrirecipe.resolve._casual import count_said_after_crop, expand_casual
+from agrirecipe.resolve._casual import count_said_after_crop, end_reciprocals, expand_casual
 from agrirecipe.resolve._coreference import merge_coreferences
 from agrirecipe.resolve._decompose import (
     Clause,
@@ -148,6 +148,7 @@ from agrirecipe.resolve._structure import (
     take_the_lower_count,
 )
 from agrirecipe.resolve._summaries import (
+    drop_announced_plots,
     drop_counted_summaries,
     drop_forward_summaries,
     drop_restated_counts,
@@ -218,7 +219,7 @@ class PromptReader(FieldReading):
         def tag(phrase: str) -> list[Item]:
             return self.lexicon.tag(tokenize(phrase))
 
-        text, labels = resolve_labels(text, tag)
+        text, labels = resolve_labels(end_reciprocals(text, tag), tag)
         text = place_compass_members(open_ordered_lists(text, tag), tag)
         text = place_around_a_centre(text, tag)
         text = place_trailing_directions(place_leading_directions(text))
@@ -290,7 +291,7 @@ class PromptReader(FieldReading):
         mentions = fill_counted_lists(clauses, mentions)
         mentions = drop_titles(clauses, mentions, self.crop_categories)
         mentions = drop_trailing_summaries(clauses, drop_plural_headings(clauses, mentions))
-        mentions = drop_restated_counts(clauses, mentions)
+        mentions = drop_announced_plots(clauses, drop_restated_counts(clauses, mentions))
         mentions = lend_heading_crop(clauses, name_counted_plots(clauses, mentions))
         apply_each_side(clauses)
         for clause in clauses:
@@ -338,7 +339,9 @@ class PromptReader(FieldReading):
                 intents[index] = same_spacing(intents[index], intents[index - 1], same)
         for index, field in enumerate(fields):
             others = [(intents[j], f.items) for j, f in enumerate(fields) if j != index]
-            intents[index] = parallel_spacing(intents[index], field.items, others)
+            intents[index] = parallel_spacing(
+                intents[index], field.items, others, self._spacing_ranges(intents[index].crop)
+            )
         for index, intent in enumerate(intents):
             self.trace.append(
                 TraceStep(
@@ -393,6 +396,17 @@ class PromptReader(FieldReading):
             index = last
         items.extend(self.lexicon.tag(tokens[index:]))
         return items
+
+    def _spacing_ranges(self, crop: str | None) -> dict[str, tuple[float, float]]:
+        """The sourced ranges of ``crop``'s row and in-row spacing, by recipe key."""
+        if crop is None or crop not in self.context.hierarchy.crops:
+            return {}
+        planting = self.context.knowledge.crop_file(crop).planting
+        said = {
+            "row_spacing_m": planting.row_spacing_m,
+            "in_row_spacing_m": planting.in_row_spacing_m,
+        }
+        return {k: v.range for k, v in said.items() if v.range is not None}
 
     # --- unknown and non-agricultural requests ---
 

@@ -282,6 +282,15 @@ def apply_refinements(
                 if clause.mentions
                 else Mention(items=list(clause.loose), clause=clause.index)
             )
+            listed_members = list({id(r): r for r in parent.refinements}.values())
+            if _per_plot(sub) and parent.count is not None and len(listed_members) >= parent.count:
+                # "lettuce at 35 cm, cabbage at 75 cm and tomatoes at 150 cm, 12 rows per
+                # plot": after the full list, a measure of each listed plot
+                for member in listed_members:
+                    member.items.extend(i for i in sub.items if i.role == "geometry")
+                clause.mentions, clause.loose = [], []
+                clause.refined_parent = parent
+                continue
             # A generic plural mention followed by ':' lists its members; so does a
             # plural crop followed by its varieties ("two beds of lettuce, lollo rosso
             # and bibb").
@@ -387,6 +396,10 @@ def apply_refinements(
                 and listing(link)
                 and (sub.count or 1) > room
                 and parent.rest is None
+                # ("..., 12 rows per plot, plots laid out east to west": a measure of every
+                # plot, and the plots again)
+                and not _plots_again(sub)
+                and not _per_plot(sub)
             ):
                 # "two fields: sweetcorn, durum wheat and romaine lettuce"
                 raise PromptError(
@@ -421,6 +434,17 @@ def apply_refinements(
                     parent.refinements.extend([sub] * min(share_of, room))
                 elif kind == "rest":
                     parent.rest = sub
+                    # ("The middle one has blight, the other two look fine")
+                    parent.refinements = [sub if r.unsaid else r for r in parent.refinements]
+                elif (at := _place_said(first, parent)) is not None:
+                    # "Three potato fields in a line. The middle one has blight": the
+                    # member at that place, the ones before it held open
+                    while len(parent.refinements) < at:
+                        parent.refinements.append(Mention(clause=clause.index, unsaid=True))
+                    if at < len(parent.refinements):
+                        parent.refinements[at] = sub
+                    else:
+                        parent.refinements.append(sub)
                 elif kind in ("some", "half"):
                     # "five fields, some of them diseased": the first half of the members.
                     total = parent.count or 1
@@ -429,6 +453,9 @@ def apply_refinements(
                 elif listed and (sub.count or 1) > 1:
                     members, sub.count = sub.count or 1, None
                     parent.refinements.extend([sub] * members)
+                elif blank := next((r for r in parent.refinements if r.unsaid), None):
+                    # ("The last one has blight, the first one is fine")
+                    parent.refinements[parent.refinements.index(blank)] = sub
                 else:
                     parent.refinements.append(sub)
                 clause.mentions, clause.loose = [], []
@@ -587,6 +614,57 @@ def _join_of_which(clauses: Sequence[Clause]) -> None:
             for mention in clause.mentions:
                 mention.clause = clause.index
             following.items, following.loose = [], []
+
+
+#: Where a reference by place points among the members ("the second one").
+_PLACES = {
+    **{
+        f"{the}{word}{one}": at
+        for at, word in enumerate(("first", "second", "third", "fourth"))
+        for the in ("", "the ")
+        for one in ("", " one")
+    },
+}
+_MIDDLE = frozenset({"the middle one", "the centre one", "the center one", "the central one"})
+_LAST = frozenset({"the last", "the last one", "last", "last one"})
+
+
+def _place_said(first: Item | None, parent: Mention) -> int | None:
+    """The member (0-based) a reference said by its place points at ("the second one",
+    "the middle one" of three, "the last one"), once the count is known; else None."""
+    count = parent.count
+    if first is None or first.role != "reference" or count is None or count < 2:
+        return None
+    if first.norm in _MIDDLE:
+        return count // 2 if count % 2 else None
+    at = count - 1 if first.norm in _LAST else _PLACES.get(first.norm)
+    if at is None or at >= count:
+        return None
+    if at < len(parent.refinements) and not parent.refinements[at].unsaid:
+        return None  # (already said: "the first ..., the second ..." in order)
+    return at
+
+
+def _plots_again(mention: Mention) -> bool:
+    """A plural plot word of no crop and no count ("plots laid out east to west")."""
+    return (
+        not mention.has_crop
+        and mention.category is None
+        and mention.plot is not None
+        and bool(mention.plot["plural"])
+        and (mention.count is None or mention.implied_count)
+    )
+
+
+def _per_plot(mention: Mention) -> bool:
+    """A measure said of every plot ("12 rows per plot"), read as a plot of no crop."""
+    words = sorted(mention.items, key=lambda i: i.start)
+    return (
+        not mention.has_crop
+        and mention.category is None
+        and any(a.norm == "per" and b.role == "plot" for a, b in itertools.pairwise(words))
+        and any(i.role == "geometry" for i in words)
+    )
 
 
 def _counted_reference(items: Sequence[Item]) -> int | None:

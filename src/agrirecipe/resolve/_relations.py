@@ -99,10 +99,14 @@ def read_relations(
     # relations read between mentions, and those said "on the other side of" a field
     read: list[tuple[str, Mention, tuple[Mention, ...]]] = []
     beyond: list[tuple[Mention, Mention, Item]] = []
+    further: list[tuple[str, Mention, Mention, Item]] = []
     for position, subject, centre in placement_pairs(clauses, members, placed):
         link = clauses[position].link
         assert link is not None
         kind = link.data["value"]
+        if link.norm.split()[0] in _FURTHER:
+            further.append((kind, subject, centre, link))  # read once the others are
+            continue
         relations.extend(field_relations(kind, subject, (centre,), members, link, trace))
     landmarks: list[tuple[str, str, Mention, Item]] = []
     landmark_at: dict[int, str] = {}  # the landmark each relation clause placed against
@@ -423,6 +427,10 @@ def read_relations(
                 # one way: "north of it ..., north of it ...")
                 objects = (parallel[2],)
             parallel = (word, subject, objects[0], kind)
+        if link.role == "trailer" and link.norm.split()[0] in _FURTHER and len(objects) == 1:
+            # "strawberries east of the carrots, and cherries further east still": past
+            # the field furthest that way already, not the one it was placed against
+            objects = (_furthest(kind, subject, objects[0], read),)
         relations.extend(field_relations(kind, subject, objects, members, link, trace))
         read.append((kind, subject, objects))
         if _both_said(clauses, position) and len(before) >= 2 and subject is before[-1]:
@@ -439,6 +447,12 @@ def read_relations(
         ):
             # "Padron on the west side, Cayenne on the east side, and corn south of both"
             relations.extend(field_relations(kind, subject, (before[-3],), members, link, trace))
+    for kind, subject, centre, link in further:
+        # "strawberries east of the carrots, and cherries further east still": past the
+        # field furthest that way already, not the one it was placed against
+        objects = (_furthest(kind, subject, centre, read),)
+        relations.extend(field_relations(kind, subject, objects, members, link, trace))
+        read.append((kind, subject, objects))
     relations += _on_the_other_side(beyond, read, members, trace)
     relations += across_landmarks(landmarks, members, trace)
     related = {frozenset((r.subject, *r.objects)) for r in relations if len(r.objects) == 1}
@@ -456,6 +470,37 @@ def read_relations(
     for relation in relations:  # "in a line, in this order": one row
         unique.setdefault((relation.kind, relation.subject, relation.objects), relation)
     return list(unique.values())
+
+
+#: The words that place a field past the last one that way ("further east").
+_FURTHER = frozenset({"further", "farther", "furthest", "farthest"})
+
+
+def _furthest(
+    kind: str,
+    subject: Mention,
+    start: Mention,
+    read: Sequence[tuple[str, Mention, tuple[Mention, ...]]],
+) -> Mention:
+    """The field placed furthest ``kind`` of ``start`` by the relations read so far."""
+    seen = {id(start)}
+    current = start
+    while True:
+        past = next(
+            (
+                placed
+                for said, placed, objects in read
+                if said == kind
+                and objects == (current,)
+                and placed is not subject
+                and id(placed) not in seen
+            ),
+            None,
+        )
+        if past is None:
+            return current
+        seen.add(id(past))
+        current = past
 
 
 #: The marks that end a sentence for a placement's fields ("." and not ";").

@@ -170,9 +170,10 @@ _SIDES = {
 }
 
 
-# "carrots north, potatoes south": a compass word alone after what it places
+# "carrots north, potatoes south": a compass word alone after what it places ("carrots
+# (danvers) south": after its variety in brackets)
 _TRAILING = re.compile(
-    r"\b(?P<word>[A-Za-z][\w'-]*)\s+(?P<side>(?i:north|south|east|west))\b(?=\s*(?:[,.;]|$))"
+    r"\b(?P<word>[A-Za-z][\w'-]*)\)?\s+(?P<side>(?i:north|south|east|west))\b(?=\s*(?:[,.;]|$))"
 )
 #: Words after which a compass word is a direction, not a place ("rows running north").
 _NOT_PLACED = frozenset(

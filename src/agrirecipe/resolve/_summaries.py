@@ -23,6 +23,7 @@ from agrirecipe.resolve._words import SENTENCE_MARKS
 
 __all__ = [
     "SUMMARY_ROLES",
+    "drop_announced_plots",
     "drop_counted_summaries",
     "drop_forward_summaries",
     "drop_restated_counts",
@@ -112,6 +113,51 @@ def drop_forward_summaries(clauses: Sequence[Clause], mentions: list[Mention]) -
     return mentions
 
 
+def drop_announced_plots(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
+    """'Orchard plus vineyard for the drone. 120 cherry trees, ...; next to them 20 rows of
+    grapes at 2.5 m.': a plot whose noun names its crops (a vineyard) but no crop, in an
+    opening sentence that names no crop, is the one field after that sentence of those
+    crops; it is not one more field. The field takes the plot noun. Return the fields
+    left."""
+    if not mentions:
+        return mentions
+    _, end = _sentence_of(clauses, mentions[0].clause)
+    heading = [m for m in mentions if m.clause < end]
+    # (a heading names plots and what they are for: not "Vineyard for the pruning robot -
+    # rows 2.4 m apart ...", a field said with its measures)
+    if any(i.role in ("head", "geometry", "size") for c in clauses[:end] for i in c.items):
+        return mentions
+    for plot in heading:
+        if (
+            plot.plot is None
+            or plot.has_crop
+            or plot.category is not None
+            # (a plot with measures of its own is a field: "Vineyard for the pruning robot -
+            # rows 2.4 m apart ...")
+            or any(i.role in ("geometry", "size") for i in plot.items)
+            or plot.plot["plural"]
+            or not plot.plot["options"]
+            or plot.count not in (None, 1)
+            or plot.refinements
+        ):
+            continue
+        options = set(plot.plot["options"])
+        fitting = [
+            m
+            for m in mentions
+            if m.clause >= end
+            and any(strong_crops(r) and strong_crops(r) <= options for r in (*m.refinements, m))
+        ]
+        if len(fitting) != 1 or (fitting[0].count or 1) != 1 or fitting[0].refinements:
+            continue
+        field = fitting[0]
+        if field.plot is None:
+            field.plot = plot.plot
+        lend_and_drop(clauses, plot, [field])
+        return drop_announced_plots(clauses, [m for m in mentions if m is not plot])
+    return mentions
+
+
 def drop_restated_counts(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
     """'a cabbage field on either side of it (so 2 cabbage fields)', 'a wheat field, so 2
     wheat fields': a count said again with "so" after the crop it counts is that crop's
@@ -186,10 +232,18 @@ def drop_trailing_summaries(clauses: Sequence[Clause], mentions: list[Mention]) 
             or summary.has_crop
             or summary.category is not None
             or summary.plot is None
-            or not summary.plot["plural"]
             or summary.refinements
-            or not (summary.implied_count or summary.count == position)
         ):
+            continue
+        # ("jonagold n conferance pears n kordia cherries, one big orchard": the one plot
+        # they share)
+        one = summary.count == 1 and any(i.norm in _ONE for i in summary.items)
+        if not one and not (
+            summary.plot["plural"] and (summary.implied_count or summary.count == position)
+        ):
+            continue
+        options = set(summary.plot["options"])
+        if one and options and not all(strong_crops(m) <= options for m in mentions[:position]):
             continue
         start, end = _sentence_of(clauses, summary.clause)
         fields = mentions[:position]
@@ -216,6 +270,10 @@ def drop_trailing_summaries(clauses: Sequence[Clause], mentions: list[Mention]) 
             clause.mentions = [m for m in clause.mentions if m is not summary]
         return [m for m in mentions if m is not summary]
     return mentions
+
+
+#: The words that count a single plot ("one big orchard", "a single block").
+_ONE = frozenset({"one", "single"})
 
 
 def _sentence_of(clauses: Sequence[Clause], index: int) -> tuple[int, int]:

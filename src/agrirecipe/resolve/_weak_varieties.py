@@ -195,7 +195,19 @@ def _promote_into_plot(clauses: Sequence[Clause], clause: Clause, supported: set
             and ordered[index - 2].role == "plot"
             and (ordered[index - 1].norm.isdigit() or len(ordered[index - 1].norm) == 1)
         )
-        opens = (index == 0 and item.tokens[0].capitalised) or labelled
+        # ("sonata strawbs 10 beds & albion 8 beds": in lower case, listed right after a
+        # field of its crop)
+        listed = (
+            clause.index > 0
+            and clause.link is not None
+            and listing(clause.link)
+            and any(
+                s.crop in strong_crops(m)
+                for m in clauses[clause.index - 1].mentions[-1:]
+                for s in item.senses_of("variety")
+            )
+        )
+        opens = (index == 0 and (item.tokens[0].capitalised or listed)) or labelled
         if item.role not in ("weak_variety", "filler") or not (
             opens or (index > 0 and ordered[index - 1].role == "of")
         ):

@@ -107,6 +107,8 @@ _BEFORE_A_YEAR = frozenset({"in", "for", "since", "from", "until", "plan", "year
 _AFTER_A_YEAR = frozenset({"season", "seasons", "crop", "harvest", "plan", "plans", "growing"})
 
 #: Words before a month that make it a time to come ("not ready until November").
+#: Parts of a field: "in one corner of the carrots" names no field of its own.
+_PARTS = frozenset({"corner", "end", "edge", "side", "part"})
 _BEFORE_A_TIME_TO_COME = frozenset({"until", "till", "til", "by", "before"})
 
 #: Units of time after a number that make it an age or a time ("planted ten days ago").
@@ -162,6 +164,15 @@ def _measures_are_not_counts(items: Sequence[Item]) -> None:
             and word_before in ("in", "on", "at", "across")
             and word_after == "of"
             and word_after_next in ("them", "em", "those", "these")
+        ):
+            item.role = "filler"
+        # "In one corner of the carrots", "at one end of the wheat": a part of a field
+        # named, no count of fields
+        if (
+            item.role == "number"
+            and item.norm in ("one", "a")
+            and word_after in _PARTS
+            and word_after_next == "of"
         ):
             item.role = "filler"
         # "planted ten days ago", "10 year old trees": an age or a time, no count of fields
