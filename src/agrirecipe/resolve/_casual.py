@@ -107,6 +107,15 @@ def _farm_shares(text: str) -> str:
     return text[: total.end()] + _FARM_SHARE.sub(area, text[total.end() :])
 
 
+#: "All healthy apart from the onions, which have downy mildew": a look said of every
+#: field but one, named after it.
+_ALL_BUT = re.compile(
+    r"\b(?i:all|everything|all of them|all the rest|the rest)\s+(?:(?i:is|are|look|looks|seem|"
+    r"seems)\s+)?(?P<said>(?i:healthy|fine|clean|ok|okay|disease free|in good health))\s*,?\s+"
+    r"(?i:apart from|except for|except|other than|bar|save for|but for|but)\s+"
+    r"(?P<one>(?i:the)\s+[A-Za-z][\w'-]*(?:\s+[A-Za-z][\w'-]*)?)"
+    r"(?P<rest>[^.;!?]*)(?P<end>[.;!?]|$)"
+)
 #: "minus 2", "negative 3": a sign said as a word before a number.
 _MINUS = re.compile(r"\b(?i:minus|negative)\s+(?=\d)")
 #: An arrow written between two words ("west→east", "wheat -> maize").
@@ -141,6 +150,12 @@ def expand_casual(prompt: str) -> str:
     text = _MIXED_IN.sub("", text)
     # "..., one big orchard but 3 blocks pls": three blocks, in the one orchard
     text = _ONE_PLOT_BUT.sub(r"\g<blocks> in \g<one>", text)
+    # "All healthy apart from the onions, which have ...": the one named first, then
+    # the rest
+    text = _ALL_BUT.sub(
+        lambda m: f"{m.group('one')}{m.group('rest')}; the rest {m.group('said')}{m.group('end')}",
+        text,
+    )
     # "A 100-acre farm: half in wheat, ...": a share of the farm's size, as an area
     text = _farm_shares(text)
     # "just cereals this year, all in one big 60 ha block": the plot the crop is in

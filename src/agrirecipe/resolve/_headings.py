@@ -361,6 +361,39 @@ def _ends_sentence(clause: Clause) -> bool:
     return clause.link is not None and clause.link.norm in SENTENCE_MARKS
 
 
+#: Words that say what most of a farm grows ("Mostly grain on this farm: ...").
+_MOSTLY = frozenset({"mostly", "mainly", "largely", "predominantly", "primarily", "chiefly"})
+
+
+def _mostly(
+    clauses: Sequence[Clause],
+    title: Mention,
+    fields: Sequence[Mention],
+    crop_categories: dict[str, str],
+) -> bool:
+    """Whether ``title`` says what most fields grow: "mostly" and a crop or category, no
+    count or plot of its own, ended by a colon or a full stop, with a later field of it."""
+    words = sorted(title.items, key=lambda i: i.start)
+    if (
+        not words
+        or words[0].norm not in _MOSTLY
+        or title.count is not None
+        or title.plot is not None
+        or title.refinements
+    ):
+        return False
+    following = clauses[title.clause + 1] if title.clause + 1 < len(clauses) else None
+    if following is None or following.link is None or following.link.norm not in (":", "."):
+        return False
+    crops = strong_crops(title) or {
+        crop for crop, of in crop_categories.items() if of == title.category
+    }
+    return any(
+        strong_crops(m) & crops or (m.category is not None and m.category == title.category)
+        for m in fields
+    )
+
+
 def drop_titles(
     clauses: Sequence[Clause], mentions: list[Mention], crop_categories: dict[str, str]
 ) -> list[Mention]:
@@ -375,6 +408,11 @@ def drop_titles(
         return mentions
     title, field = mentions[0], mentions[1]
     crops = strong_crops(title)
+    if _mostly(clauses, title, mentions[1:], crop_categories):
+        # "Mostly grain on this farm: three cereal fields ..., plus one small strawberry
+        # patch": what most of the farm grows, said before its fields
+        lend_and_drop(clauses, title, mentions[1:2])
+        return mentions[1:]
     # ("Just a spud farm, honestly. One big field of spuds, ...": the farm named by its
     # crop is a title too)
     farm = any(i.norm == "farm" for i in title.items)

@@ -11,6 +11,7 @@ said of every field ("all", "everywhere") are returned for the whole scene.
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Sequence
 
 from agrirecipe.resolve._decompose import (
@@ -40,6 +41,7 @@ from agrirecipe.resolve._measures import (
 from agrirecipe.resolve._structure import (
     attribute_of,
     describing_verbs,
+    descriptive_words,
     per_bed,
     strong_crops,
 )
@@ -55,6 +57,7 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
     said_all = -1  # the last clause whose words were said of every field ("both ...")
     for position, clause in enumerate(clauses):
         _detach_trailing_all(clause)
+        _all_of_the_parts(clause)
         if position and mentions:
             _apply_group_words(clause.loose, coordinated(clauses, position))
         attributes = [i for i in clause.loose if i.role in ATTRIBUTE_ROLES]
@@ -214,11 +217,12 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
             # "carrots (...) and potatoes (...) in 25 x 60 m plots": the list's plots
             targets = sentence_fields(clauses, position)
         elif before and (
-            (clause.link is not None and clause.link.norm in ("whose", "which"))
+            (clause.link is not None and clause.link.norm in ("whose", "which", "that"))
             or (bool(clause.items) and clause.items[0].norm in ("whose", "which"))
         ):
             # "Padrón peppers whose leaves are spotted and whose fruit has raised
-            # scabby spots": a relative clause about the field named last
+            # scabby spots": a relative clause about the field named last ("plot 2 Red
+            # Baron onions that have caught downy mildew")
             targets = [before[-1]]
         elif (placed := _placed_with(clauses, position)) is not None:
             # "cabbages in the middle with caterpillar holes chewed through the leaves":
@@ -584,6 +588,22 @@ def _says_all_plants(item: Item) -> bool:
     words = item.norm.split()
     # "1.2 m between trees" is one field's spacing, not words about all the plants
     return item.role != "geometry" and len(words) > 1 and words[-1] in _ALL_PLANTS
+
+
+_WHOLE_PLANTS = frozenset(
+    {"trees", "tree", "plants", "plant", "vines", "vine", "bushes", "crop", "crops", "palms"}
+)
+
+
+def _all_of_the_parts(clause: Clause) -> None:
+    """'the older leaves all shrivelled': "all" right after the plants' parts is all of
+    those parts, not every field; it becomes a filler word."""
+    ordered = sorted(clause.loose, key=lambda i: i.start)
+    # (the parts, not the plants: "trees all white w blossom" is still every tree)
+    parts = descriptive_words() - _WHOLE_PLANTS
+    for before, item in itertools.pairwise(ordered):
+        if item.role == "all" and item.norm == "all" and before.norm in parts:
+            item.role = "filler"
 
 
 def _detach_trailing_all(clause: Clause) -> None:

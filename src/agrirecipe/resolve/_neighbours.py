@@ -374,12 +374,22 @@ _MIDDLE_LABEL = re.compile(
 )
 
 
+_SAID_AGAIN = re.compile(
+    r"\b(?:(?i:directly|just|right|immediately)\s+)?(?i:below|above|beneath|under|over|left of|"
+    r"right of|next to|beside)\s+(?i:it|them)\s*,?\s+(?i:so|i\.?e\.?|that is|meaning)\s+"
+    r"(?P<again>(?i:north|south|east|west)\s+(?i:of)\b)"
+)
+
+
 def place_sides(text: str) -> str:
     """``text`` with "X with A on one side and B on the other" written "X between A and
     B", "..., danvers one east" written "..., danvers one east of the other", "the
     cherries are east" written "the cherries are to the east", and "on the
     20 ha east field ..., on the 8 ha west field" written "in the east, 20 ha ..., in the
     west, 8 ha" (two or more sides, not all the same)."""
+    # "directly below it, so south of the maize, a field of cabbages": the side said
+    # again in compass words
+    text = _SAID_AGAIN.sub(r"\g<again>", text)
     text = _FURTHEST_THEN.sub(
         lambda m: (
             f"{m.group('lead')}going {_OPPOSITE[m.group('side').lower()]}, "
@@ -470,13 +480,24 @@ def place_flanks(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
 
     def around_a_field(match: re.Match[str]) -> str:
         # "onions on both sides of the potatoes": the potatoes, with onions on both sides
-        for said in (match.group("x"), match.group("y")):
+        # ("layout with cabbages on either side of a carrot plot": the crop word said last)
+        if re.search(r"(?i:\band|&|\bor)\s*$", match.string[: match.start()]):
+            return match.group(0)  # ("Durondeau and Williams pears on either side of ...")
+        x, lead = match.group("x"), ""
+        first, _, rest = x.partition(" ")
+        if (
+            rest
+            and first.lower() not in ("two", "2")
+            and not any(i.has("crop", "variety", "category", "plot") for i in tag(first))
+        ):
+            x, lead = rest, f"{first} "
+        for said in (x, match.group("y")):
             items = [i for i in tag(said) if i.role != "separator"]
             if not items or not all(i.has("crop", "variety", "category", "plot") for i in items):
                 return match.group(0)
             if not any(i.has("crop", "variety", "category") for i in items):
                 return match.group(0)
-        return f"{match.group('y')}, {match.group('x')} on both sides"
+        return f"{lead}{match.group('y')}, {x} on both sides"
 
     def side_of_a_field(match: re.Match[str]) -> str:
         # "On the north side of the onions, a cabbage plot": north of the onions (not "on
@@ -519,7 +540,7 @@ _SIDE_OF = re.compile(
 _AROUND_A_FIELD = re.compile(
     r"(?P<x>\b(?:(?i:two|2)\s+)?[A-Za-z][\w'-]*(?:\s+(?!(?i:on|both|either|each)\b)[A-Za-z][\w'-]*)?)\s+"
     r"(?:(?i:on)\s+)?"
-    r"(?i:both sides of|either side of|each side of)\s+(?:(?i:the)\s+)?"
+    r"(?i:both sides of|either side of|each side of)\s+(?:(?i:the|an?)\s+)?"
     r"(?P<y>[A-Za-z][\w'-]*(?:\s+[A-Za-z][\w'-]*)?)(?=\s*(?:[,.;:!?]|$))"
 )
 

@@ -27,6 +27,7 @@ __all__ = [
     "drop_counted_summaries",
     "drop_forward_summaries",
     "drop_restated_counts",
+    "drop_single_plot_counts",
     "drop_trailing_summaries",
     "lend_and_drop",
 ]
@@ -156,6 +157,40 @@ def drop_announced_plots(clauses: Sequence[Clause], mentions: list[Mention]) -> 
         lend_and_drop(clauses, plot, [field])
         return drop_announced_plots(clauses, [m for m in mentions if m is not plot])
     return mentions
+
+
+def drop_single_plot_counts(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
+    """'Only one field on the smallholding, a cabbage patch ...', 'veggies. any. just 1
+    field': one plot of no crop, counted "one", in a prompt whose other words ask for
+    exactly one field, says how many fields there are; it is not one more. Return the
+    fields left."""
+    for counted in mentions:
+        if (
+            counted.count != 1
+            or counted.has_crop
+            or counted.category is not None
+            or counted.plot is None
+            or counted.refinements
+            # (not "a vineyard on one slope": a plot whose noun names its crop)
+            or counted.plot["options"]
+            or not _counted_one(counted)
+            or any(i.role in ("size", "geometry") for i in counted.items)
+        ):
+            continue
+        others = [m for m in mentions if m is not counted]
+        if len(others) != 1 or (others[0].count or 1) != 1 or others[0].refinements:
+            continue
+        if not (others[0].has_crop or others[0].category is not None):
+            continue
+        lend_and_drop(clauses, counted, others)
+        return others
+    return mentions
+
+
+def _counted_one(mention: Mention) -> bool:
+    """Whether the mention's count is said "one", "1" or "single" before its plot word."""
+    head = min((h.start for h in mention.heads), default=0)
+    return any(i.norm in ("one", "1", "single") and i.start < head for i in mention.items)
 
 
 def drop_restated_counts(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
