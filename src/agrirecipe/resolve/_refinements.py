@@ -28,6 +28,13 @@ from agrirecipe.resolve._listing import (
     placed_against,
     placed_by_scenery,
 )
+from agrirecipe.resolve._member_refs import (
+    BACK_POINTERS,
+    counted_reference,
+    per_plot,
+    place_said,
+    plots_again,
+)
 from agrirecipe.resolve._structure import (
     EACH,
     POINTER_WORDS,
@@ -44,7 +51,6 @@ from agrirecipe.resolve._structure import (
 __all__ = ["apply_refinements"]
 
 #: Words after "<number> of" that point back at a plural mention ("two of them").
-_BACK_POINTERS = frozenset({"them", "which", "these", "those", "the fields", "the plots"})
 
 
 def _fits(sub: Mention, parent: Mention, crop_categories: dict[str, str]) -> bool:
@@ -201,7 +207,7 @@ def apply_refinements(
             clause.refinement = None if shared or ended else previous.refinement
             continue
         first = next((i for i in clause.items if i.norm != "the"), None)
-        share_of = _counted_reference(clause.items)
+        share_of = counted_reference(clause.items)
         is_reference = share_of is not None or (
             first is not None
             and (
@@ -283,7 +289,7 @@ def apply_refinements(
                 else Mention(items=list(clause.loose), clause=clause.index)
             )
             listed_members = list({id(r): r for r in parent.refinements}.values())
-            if _per_plot(sub) and parent.count is not None and len(listed_members) >= parent.count:
+            if per_plot(sub) and parent.count is not None and len(listed_members) >= parent.count:
                 # "lettuce at 35 cm, cabbage at 75 cm and tomatoes at 150 cm, 12 rows per
                 # plot": after the full list, a measure of each listed plot
                 for member in listed_members:
@@ -398,8 +404,8 @@ def apply_refinements(
                 and parent.rest is None
                 # ("..., 12 rows per plot, plots laid out east to west": a measure of every
                 # plot, and the plots again)
-                and not _plots_again(sub)
-                and not _per_plot(sub)
+                and not plots_again(sub)
+                and not per_plot(sub)
             ):
                 # "two fields: sweetcorn, durum wheat and romaine lettuce"
                 raise PromptError(
@@ -436,7 +442,7 @@ def apply_refinements(
                     parent.rest = sub
                     # ("The middle one has blight, the other two look fine")
                     parent.refinements = [sub if r.unsaid else r for r in parent.refinements]
-                elif (at := _place_said(first, parent)) is not None:
+                elif (at := place_said(first, parent)) is not None:
                     # "Three potato fields in a line. The middle one has blight": the
                     # member at that place, the ones before it held open
                     while len(parent.refinements) < at:
@@ -606,7 +612,7 @@ def _join_of_which(clauses: Sequence[Clause]) -> None:
             words == ["number", "of"]
             and not clause.mentions
             and following.link is not None
-            and following.link.norm in _BACK_POINTERS
+            and following.link.norm in BACK_POINTERS
         ):
             clause.items = [*clause.items, following.link, *following.items]
             clause.loose = [*clause.loose, following.link, *following.loose]
@@ -614,67 +620,3 @@ def _join_of_which(clauses: Sequence[Clause]) -> None:
             for mention in clause.mentions:
                 mention.clause = clause.index
             following.items, following.loose = [], []
-
-
-#: Where a reference by place points among the members ("the second one").
-_PLACES = {
-    **{
-        f"{the}{word}{one}": at
-        for at, word in enumerate(("first", "second", "third", "fourth"))
-        for the in ("", "the ")
-        for one in ("", " one")
-    },
-}
-_MIDDLE = frozenset({"the middle one", "the centre one", "the center one", "the central one"})
-_LAST = frozenset({"the last", "the last one", "last", "last one"})
-
-
-def _place_said(first: Item | None, parent: Mention) -> int | None:
-    """The member (0-based) a reference said by its place points at ("the second one",
-    "the middle one" of three, "the last one"), once the count is known; else None."""
-    count = parent.count
-    if first is None or first.role != "reference" or count is None or count < 2:
-        return None
-    if first.norm in _MIDDLE:
-        return count // 2 if count % 2 else None
-    at = count - 1 if first.norm in _LAST else _PLACES.get(first.norm)
-    if at is None or at >= count:
-        return None
-    if at < len(parent.refinements) and not parent.refinements[at].unsaid:
-        return None  # (already said: "the first ..., the second ..." in order)
-    return at
-
-
-def _plots_again(mention: Mention) -> bool:
-    """A plural plot word of no crop and no count ("plots laid out east to west")."""
-    return (
-        not mention.has_crop
-        and mention.category is None
-        and mention.plot is not None
-        and bool(mention.plot["plural"])
-        and (mention.count is None or mention.implied_count)
-    )
-
-
-def _per_plot(mention: Mention) -> bool:
-    """A measure said of every plot ("12 rows per plot"), read as a plot of no crop."""
-    words = sorted(mention.items, key=lambda i: i.start)
-    return (
-        not mention.has_crop
-        and mention.category is None
-        and any(a.norm == "per" and b.role == "plot" for a, b in itertools.pairwise(words))
-        and any(i.role == "geometry" for i in words)
-    )
-
-
-def _counted_reference(items: Sequence[Item]) -> int | None:
-    """The count of "<number> of them" / "two of which" opening a clause, else None."""
-    words = [i for i in items if i.norm != "the"]
-    if len(words) < 3 or words[0].role != "number" or words[1].role != "of":
-        return None
-    if words[2].norm not in _BACK_POINTERS:
-        return None
-    value = float(words[0].data.get("value", 0))
-    if value != int(value) or value < 1:
-        return None
-    return int(value)
