@@ -19,6 +19,7 @@ import yaml
 
 from agrirecipe.resolve._geometry import number_words
 from agrirecipe.resolve._lexicon import DATA_DIR, Item, vocabulary
+from agrirecipe.resolve._shares import read_shares
 
 __all__ = ["count_said_after_crop", "end_reciprocals", "expand_casual"]
 
@@ -55,67 +56,6 @@ _MIXED_IN = re.compile(
 )
 #: ", all in one block", "all in a single field": the one plot a crop is grown in.
 _ALL_IN_ONE = re.compile(r"\s*,?\s+(?i:all)\s+(?i:in)\s+(?=(?i:one|a\s+single)\s)")
-#: "one big orchard but 3 blocks": one plot said, then the blocks it is split into.
-_ONE_PLOT_BUT = re.compile(
-    r"\b(?P<one>(?i:one|a single)\s+(?:(?i:big|large|small|long)\s+)?"
-    r"(?i:orchard|field|plot|block|vineyard|grove|farm|site))\s*,?\s+"
-    r"(?i:but|split into|divided into|cut into|in|with)\s+"
-    r"(?P<blocks>(?:\d+|(?i:two|three|four|five|six))\s+(?i:blocks|plots|sections|parts|fields|strips))\b"
-)
-#: "A 100-acre farm", "the farm is 40 ha": the size of the whole holding.
-_FARM_TOTAL = re.compile(
-    r"\b(?P<n>\d+(?:\.\d+)?)[\s-]*(?P<unit>(?i:acres?|ha|hectares?))[\s-]+"
-    r"(?i:farm|holding|property|estate|smallholding)\b"
-    r"|\b(?i:farm|holding|property|estate)\s+(?i:is|of)\s+(?:(?i:about|around|some)\s+)?"
-    r"(?P<n2>\d+(?:\.\d+)?)\s*(?P<unit2>(?i:acres?|ha|hectares?))\b"
-)
-#: "half in wheat", "a third of it under potatoes": a share of the farm given to a crop.
-_FARM_SHARE = re.compile(
-    r"(?<!(?i:other) )\b(?P<share>(?i:half|a half|one half|a third|one third|a quarter|"
-    r"one quarter|two thirds|three quarters))(?:\s+(?i:of it|of that|of the farm|of the land))?"
-    r"\s+(?P<said>(?:(?i:is|are)\s+)?(?i:in|under|down to|planted with|planted to|sown to|"
-    r"sown with|given to|given over to)\s+)"
-)
-_SHARES = {
-    "half": 0.5,
-    "a half": 0.5,
-    "one half": 0.5,
-    "a third": 1 / 3,
-    "one third": 1 / 3,
-    "a quarter": 0.25,
-    "one quarter": 0.25,
-    "two thirds": 2 / 3,
-    "three quarters": 0.75,
-}
-_UNIT_PLURALS = {"acre": "acres", "hectare": "hectares"}
-
-
-def _farm_shares(text: str) -> str:
-    """``text`` with "half in wheat" written "50 acres in wheat" after "a 100-acre farm":
-    a share of the farm's stated size, as an area of the field."""
-    total = _FARM_TOTAL.search(text)
-    if total is None:
-        return text
-    size = float(total.group("n") or total.group("n2"))
-    unit = (total.group("unit") or total.group("unit2")).lower()
-    unit = _UNIT_PLURALS.get(unit, unit)
-
-    def area(match: re.Match[str]) -> str:
-        value = round(size * _SHARES[re.sub(r"\s+", " ", match.group("share").lower())], 4)
-        return f"{value:g} {unit} {match.group('said')}"
-
-    return text[: total.end()] + _FARM_SHARE.sub(area, text[total.end() :])
-
-
-#: "All healthy apart from the onions, which have downy mildew": a look said of every
-#: field but one, named after it.
-_ALL_BUT = re.compile(
-    r"\b(?i:all|everything|all of them|all the rest|the rest)\s+(?:(?i:is|are|look|looks|seem|"
-    r"seems)\s+)?(?P<said>(?i:healthy|fine|clean|ok|okay|disease free|in good health))\s*,?\s+"
-    r"(?i:apart from|except for|except|other than|bar|save for|but for|but)\s+"
-    r"(?P<one>(?i:the)\s+[A-Za-z][\w'-]*(?:\s+[A-Za-z][\w'-]*)?)"
-    r"(?P<rest>[^.;!?]*)(?P<end>[.;!?]|$)"
-)
 #: "minus 2", "negative 3": a sign said as a word before a number.
 _MINUS = re.compile(r"\b(?i:minus|negative)\s+(?=\d)")
 #: An arrow written between two words ("west→east", "wheat -> maize").
@@ -148,16 +88,9 @@ def expand_casual(prompt: str) -> str:
     # "bell types with a few chillies mixed in": a few plants among the field's own crop,
     # no field of their own
     text = _MIXED_IN.sub("", text)
-    # "..., one big orchard but 3 blocks pls": three blocks, in the one orchard
-    text = _ONE_PLOT_BUT.sub(r"\g<blocks> in \g<one>", text)
-    # "All healthy apart from the onions, which have ...": the one named first, then
-    # the rest
-    text = _ALL_BUT.sub(
-        lambda m: f"{m.group('one')}{m.group('rest')}; the rest {m.group('said')}{m.group('end')}",
-        text,
-    )
-    # "A 100-acre farm: half in wheat, ...": a share of the farm's size, as an area
-    text = _farm_shares(text)
+    # "A 100-acre farm: half in wheat", "All healthy apart from the onions", "one big
+    # orchard but 3 blocks": parts of a whole, said plainly
+    text = read_shares(text)
     # "just cereals this year, all in one big 60 ha block": the plot the crop is in
     text = _ALL_IN_ONE.sub(" in ", text)
     # "rows at minus 2 metres spacing": a negative number said in words (refused later)

@@ -133,9 +133,6 @@ def drop_announced_plots(clauses: Sequence[Clause], mentions: list[Mention]) -> 
             plot.plot is None
             or plot.has_crop
             or plot.category is not None
-            # (a plot with measures of its own is a field: "Vineyard for the pruning robot -
-            # rows 2.4 m apart ...")
-            or any(i.role in ("geometry", "size") for i in plot.items)
             or plot.plot["plural"]
             or not plot.plot["options"]
             or plot.count not in (None, 1)
@@ -188,7 +185,8 @@ def drop_single_plot_counts(clauses: Sequence[Clause], mentions: list[Mention]) 
 
 
 def _counted_one(mention: Mention) -> bool:
-    """Whether the mention's count is said "one", "1" or "single" before its plot word."""
+    """Whether the mention's count is said "one", "1" or "single" before its plot word
+    ("one big orchard", "just 1 field"; not "a field")."""
     head = min((h.start for h in mention.heads), default=0)
     return any(i.norm in ("one", "1", "single") and i.start < head for i in mention.items)
 
@@ -272,7 +270,7 @@ def drop_trailing_summaries(clauses: Sequence[Clause], mentions: list[Mention]) 
             continue
         # ("jonagold n conferance pears n kordia cherries, one big orchard": the one plot
         # they share)
-        one = summary.count == 1 and any(i.norm in _ONE for i in summary.items)
+        one = summary.count == 1 and _counted_one(summary)
         if not one and not (
             summary.plot["plural"] and (summary.implied_count or summary.count == position)
         ):
@@ -305,10 +303,6 @@ def drop_trailing_summaries(clauses: Sequence[Clause], mentions: list[Mention]) 
             clause.mentions = [m for m in clause.mentions if m is not summary]
         return [m for m in mentions if m is not summary]
     return mentions
-
-
-#: The words that count a single plot ("one big orchard", "a single block").
-_ONE = frozenset({"one", "single"})
 
 
 def _sentence_of(clauses: Sequence[Clause], index: int) -> tuple[int, int]:
