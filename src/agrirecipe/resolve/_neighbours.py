@@ -215,7 +215,9 @@ _ONE_ON_A_SIDE = re.compile(
 
 
 _ARE_A_SIDE = re.compile(
-    r"\b(?P<verb>(?i:are|is))\s+(?P<side>(?i:north|south|east|west))(?=\s*(?:[,.;:!?]|$))"
+    # ("cabernet's north": "is" written "'s")
+    r"(?:\b(?P<verb>(?i:are|is))\s+|(?<=[A-Za-z])(?P<s>['’]s)\s+)"
+    r"(?P<side>(?i:north|south|east|west))(?=\s*(?:[,.;:!?]|$))"
 )
 
 
@@ -374,11 +376,26 @@ _MIDDLE_LABEL = re.compile(
 )
 
 
+# "East of the barn: Savoy cabbage. West of the barn: January King.": a side of scenery
+# said as a label before the field on it
+_SIDE_OF_A_THING_LABEL = re.compile(
+    r"(?:^|(?<=[.;!?]\s))(?P<side>(?i:north|south|east|west)) (?i:of) "
+    r"(?P<thing>(?i:the|our|my) [A-Za-z][\w'-]*(?: [A-Za-z][\w'-]*)?)\s*[:,]\s*"
+    r"(?P<field>[^.;:!?]+?)\s*(?P<end>[.;!?]|$)"
+)
 _SAID_AGAIN = re.compile(
     r"\b(?:(?i:directly|just|right|immediately)\s+)?(?i:below|above|beneath|under|over|left of|"
     r"right of|next to|beside)\s+(?i:it|them)\s*,?\s+(?i:so|i\.?e\.?|that is|meaning)\s+"
     r"(?P<again>(?i:north|south|east|west)\s+(?i:of)\b)"
 )
+
+
+def _placed_by_a_thing(match: re.Match[str]) -> str:
+    """ "East of the barn: Savoy cabbage." written "Savoy cabbage east of the barn."."""
+    return (
+        f"{match.group('field')} {match.group('side').lower()} of {match.group('thing')}"
+        f"{match.group('end')}"
+    )
 
 
 def place_sides(text: str) -> str:
@@ -390,6 +407,14 @@ def place_sides(text: str) -> str:
     # "directly below it, so south of the maize, a field of cabbages": the side said
     # again in compass words
     text = _SAID_AGAIN.sub(r"\g<again>", text)
+    # (the same thing on two sides: "East of the barn: ... West of the barn: ...")
+    things = [m.group("thing").lower() for m in _SIDE_OF_A_THING_LABEL.finditer(text)]
+    text = _SIDE_OF_A_THING_LABEL.sub(
+        lambda m: (
+            _placed_by_a_thing(m) if things.count(m.group("thing").lower()) >= 2 else m.group(0)
+        ),
+        text,
+    )
     text = _FURTHEST_THEN.sub(
         lambda m: (
             f"{m.group('lead')}going {_OPPOSITE[m.group('side').lower()]}, "
@@ -421,7 +446,10 @@ def place_sides(text: str) -> str:
         text = _SIDE_LABEL.sub(lambda m: f"{_SIDE_LABELS[m.group('side').lower()]}, ", text)
     text = _ONE_ON_A_SIDE.sub(lambda m: f"{m.group(0)} of the other", text)
     # "durondeau pears and bing cherries, the cherries r east": a side said bare after "are"
-    text = _ARE_A_SIDE.sub(lambda m: f"{m.group('verb')} to the {m.group('side')}", text)
+    text = _ARE_A_SIDE.sub(
+        lambda m: f"{m.group('verb') or m.group('s')} to the {m.group('side')}",
+        text,
+    )
     for side, other in (("left", "right"), ("right", "left")):
         # "left of the yard there's a vineyard, on the right a strawberry field": the
         # sides of the view, both said

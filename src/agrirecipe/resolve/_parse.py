@@ -53,6 +53,7 @@ step  pass                                        module (data)
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Callable, Iterable, Sequence
 
 from agrirecipe._errors import PromptError, UnknownCropError
@@ -309,6 +310,7 @@ class PromptReader(FieldReading):
         if not mentions:
             mentions = self._container_fields(items, clauses)
         self._reject_unknown_names(items, mentions)
+        _reject_no_crop(items, mentions)
         fields = self._expand(mentions)
         if len(fields) > _MAX_FIELDS:
             raise PromptError(
@@ -642,3 +644,21 @@ def _by_spelling(word: str, names: Sequence[str], limit: int = 3) -> tuple[str, 
 
     matches = process.extract(word, list(names), scorer=fuzz.WRatio, limit=limit)
     return tuple(str(m[0]) for m in matches)
+
+
+#: Words a prompt says it grows none of ("No crop at all", "nothing planted").
+_NO_CROP = frozenset({"crop", "crops", "plants", "planting", "plantings"})
+
+
+def _reject_no_crop(items: Sequence[Item], mentions: Sequence[Mention]) -> None:
+    """ "Drone calibration field: bare soil, ... No crop at all.": a prompt that names no
+    crop or kind of crop and says it wants none is refused, not given a crop at random."""
+    if any(m.has_crop or m.category is not None for m in mentions):
+        return
+    for before, item in itertools.pairwise(items):
+        if before.role == "negation" and item.norm in _NO_CROP:
+            raise PromptError(
+                f"the prompt asks for {before.raw} {item.raw}: there is no field to build",
+                stage="resolve",
+                hint=f"agrirecipe builds planted fields; name a crop, e.g. {_EXAMPLES}",
+            )

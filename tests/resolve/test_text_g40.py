@@ -1,0 +1,87 @@
+"""Text of blind set g40 (issue 8): fixes after its blind run (rows "west of north" after
+any row or bed word, "75 cm ridges x 35 cm", "cabernet's north", comparatives that tell
+plots apart, "No crop at all", compass terraces, sides of one landmark said as labels,
+"alternaria spotting", "4-row beds at 1.8 m centres")."""
+
+from __future__ import annotations
+
+import pytest
+
+from agrirecipe import PromptError, generate
+
+
+def _relations(prompt: str) -> set[tuple[str, str, tuple[str, ...]]]:
+    return {(r.kind, r.subject, r.objects) for r in generate(prompt).recipe.relations}
+
+
+def test_ridges_west_of_north() -> None:
+    (agria,) = generate(
+        "Agria seed potatoes every 30 cm on 90 cm ridges, 48 ridges, 250 m long, ridges at "
+        "30 degrees west of north"
+    ).recipe.fields
+    assert agria.row_bearing_deg == pytest.approx(150.0)
+
+
+def test_rows_by_plants_said_with_x() -> None:
+    (fontane,) = generate("Fontane potatoes, 75 cm ridges x 35 cm, 2 ha").recipe.fields
+    assert fontane.agronomy.in_row_spacing_m == pytest.approx(0.35)
+    (riesling,) = generate(
+        "Riesling vineyard, 2.4 m rows x 1.5 m between vines, 20 rows 120 m long"
+    ).recipe.fields
+    assert (riesling.row_count, riesling.agronomy.in_row_spacing_m) == (20, 1.5)
+
+
+def test_a_side_said_with_an_apostrophe_s() -> None:
+    assert _relations("a cabernet vineyard and a riesling one, cabernet's north. harvest time") == {
+        ("north_of", "grape_vineyard_1", ("grape_vineyard_2",))
+    }
+
+
+def test_a_comparative_before_a_plot_is_no_crop() -> None:
+    fields = generate(
+        "Stand-count ground truth: two maize plots on 75 cm rows, one at 9 plants/m2 and one "
+        "at 7 plants/m2, the denser plot to the east."
+    ).recipe.fields
+    assert [f.crop for f in fields] == ["Maize", "Maize"]
+
+
+def test_no_crop_at_all_is_refused() -> None:
+    with pytest.raises(PromptError, match="no field"):
+        generate(
+            "Drone calibration field: bare soil, three checkerboard targets, a weather mast "
+            "and a tractor parked at the gate. No crop at all."
+        )
+
+
+def test_fields_on_compass_terraces() -> None:
+    relations = _relations(
+        "Our block near Hawke's Bay, New Zealand: Royal Gala apples on the northern terrace, "
+        "Pinot Noir vines on the southern terrace, late March and everything ready to pick."
+    )
+    assert [k for k, _, _ in relations] == ["north_of"]
+
+
+def test_two_sides_of_one_landmark_said_as_labels() -> None:
+    assert _relations(
+        "East of the barn: Savoy cabbage. West of the barn: January King. Both ready for "
+        "harvest in December."
+    ) == {("east_of", "cabbage_field_1", ("cabbage_field_2",))}
+
+
+def test_alternaria_spotting_is_a_disease() -> None:
+    fields = generate(
+        "Field 1: Agria potatoes on 75 cm ridges, just emerged. Field 2: Nantes carrots, some "
+        "alternaria spotting on the leaves. Field 3: Sturon onions bulbing up."
+    ).recipe.fields
+    assert [f.health for f in fields] == ["Healthy", "Ill", "Healthy"]
+
+
+def test_rows_per_bed_said_before_the_beds() -> None:
+    fields = generate(
+        "Walla Walla and Red Baron onions, both on 4-row beds at 1.8 m centres with 10 cm "
+        "in-row spacing. Walla Walla block north of the Red Baron."
+    ).recipe.fields
+    assert [(f.agronomy.rows_per_bed, f.agronomy.row_spacing_m) for f in fields] == [
+        (4, 1.8),
+        (4, 1.8),
+    ]
