@@ -85,3 +85,14 @@ def test_rows_per_bed_said_before_the_beds() -> None:
         (4, 1.8),
         (4, 1.8),
     ]
+
+
+def test_a_part_of_the_farm_with_its_size_in_brackets() -> None:
+    orchard, veg = generate(
+        "Split the farm in half: the northern half (10 ha) is orchard, the southern half "
+        "(10 ha) is vegetables."
+    ).recipe.fields
+    for field in (orchard, veg):
+        width, length = field.geometry.size_m
+        assert width * length == pytest.approx(100_000, rel=0.01)
+    assert (orchard.category, veg.category) == ("Fruits", "Vegetables")

@@ -1,9 +1,10 @@
 """Parts of a whole said in words (issue 8): "A 100-acre farm: half in wheat, ...",
 "All healthy apart from the onions, which have downy mildew", "one big orchard but 3
-blocks". :func:`read_shares` writes each as the plainer words the reader takes ("50
-acres in wheat", "the onions, which have downy mildew; the rest healthy", "3 blocks in
-one big orchard"), in one pass of one regular expression each, before the prompt is split
-into words.
+blocks", "the northern half (10 ha) is orchard". :func:`read_shares` writes each as the
+plainer words the reader takes ("50 acres in wheat", "the onions, which have downy
+mildew; the rest healthy", "3 blocks in one big orchard", "the northern half is 10 ha of
+orchard"), in one pass of one regular expression each, before the prompt is split into
+words.
 """
 
 from __future__ import annotations
@@ -75,6 +76,16 @@ _ALL_BUT = re.compile(
 )
 
 
+#: "the northern half (10 ha) is orchard": a part of the farm, its size in brackets, then
+#: what grows there.
+_PART_SIZE_FIRST = re.compile(
+    r"\b(?P<part>(?i:the)\s+(?i:northern|southern|eastern|western|north|south|east|west|top|"
+    r"bottom|upper|lower|left|right|front|back)\s+(?i:half|third|quarter|part|end|side))\s*"
+    r"\(\s*(?P<size>\d[\d.,]*\s*(?i:ha|hectares?|acres?))\s*\)\s*"
+    r"(?P<verb>(?i:is|are))\s+(?:(?i:in|under|planted with|given to)\s+)?"
+)
+
+
 def read_shares(text: str) -> str:
     """``text`` with the parts of a whole said plainly (see the module's words)."""
     # "..., one big orchard but 3 blocks pls": three blocks, in the one orchard
@@ -84,6 +95,10 @@ def read_shares(text: str) -> str:
     text = _ALL_BUT.sub(
         lambda m: f"{m.group('one')}{m.group('rest')}; the rest {m.group('said')}{m.group('end')}",
         text,
+    )
+    # "the northern half (10 ha) is orchard": the part is 10 ha of orchard
+    text = _PART_SIZE_FIRST.sub(
+        lambda m: f"{m.group('part')} {m.group('verb')} {m.group('size')} of ", text
     )
     # "A 100-acre farm: half in wheat, ...": a share of the farm's size, as an area
     return _farm_shares(text)
