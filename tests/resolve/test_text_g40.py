@@ -96,3 +96,26 @@ def test_a_part_of_the_farm_with_its_size_in_brackets() -> None:
         width, length = field.geometry.size_m
         assert width * length == pytest.approx(100_000, rel=0.01)
     assert (orchard.category, veg.category) == ("Fruits", "Vegetables")
+
+
+def test_members_placed_by_a_packing_shed_go_on_listing() -> None:
+    fields = generate(
+        "We grow citrus on two blocks, Valencia Late to the west of the packing shed and "
+        "Washington Navel to the east of it. Both blocks are in bloom in April."
+    ).recipe.fields
+    assert [(f.variety, f.stage) for f in fields] == [
+        ("Valencia", "Reproductive"),
+        ("Navel", "Reproductive"),
+    ]
+
+
+@pytest.mark.parametrize(
+    ("prompt", "crops"),
+    [
+        ("potatoes and cabbages, 4 fields in total", ["Potato", "Potato", "Cabbage", "Cabbage"]),
+        ("some potatoes & cabbages, idk 3 or 4 fields total", ["Potato", "Potato", "Cabbage"]),
+        ("wheat, maize and potatoes, 3 fields in total", ["Wheat", "Maize", "Potato"]),
+    ],
+)
+def test_a_total_count_after_named_crops(prompt: str, crops: list[str]) -> None:
+    assert [f.crop for f in generate(prompt).recipe.fields] == crops

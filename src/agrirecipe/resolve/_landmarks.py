@@ -63,8 +63,9 @@ def landmark_of(clause: Clause) -> str | None:
         if item.norm in ARTICLES or item.data.get("counts_scenery") or item.role == "unknown":
             continue  # "between the two tracks", "north of the packing shed"
         if (item.role == "filler" and "scenery" in item.data) or item.role == "non_agricultural":
-            # ("the farmhouse" and "the house" are one landmark)
-            return item.norm.removeprefix("farm").strip()
+            # ("the farmhouse" and "the house", "the packing shed" and "the shed" are one
+            # landmark: its last word)
+            return item.norm.split()[-1].removeprefix("farm").strip()
         return None
     return None
 

@@ -155,6 +155,7 @@ from agrirecipe.resolve._summaries import (
     drop_restated_counts,
     drop_single_plot_counts,
     drop_trailing_summaries,
+    spread_counted_totals,
 )
 from agrirecipe.resolve._weak_varieties import promote_weak_varieties
 from agrirecipe.resolve._words import purpose_diseases, read_words
@@ -294,7 +295,7 @@ class PromptReader(FieldReading):
         mentions = drop_titles(clauses, mentions, self.crop_categories)
         mentions = drop_trailing_summaries(clauses, drop_plural_headings(clauses, mentions))
         mentions = drop_announced_plots(clauses, drop_restated_counts(clauses, mentions))
-        mentions = drop_single_plot_counts(clauses, mentions)
+        mentions = spread_counted_totals(clauses, drop_single_plot_counts(clauses, mentions))
         mentions = lend_heading_crop(clauses, name_counted_plots(clauses, mentions))
         apply_each_side(clauses)
         for clause in clauses:

@@ -30,6 +30,7 @@ __all__ = [
     "drop_single_plot_counts",
     "drop_trailing_summaries",
     "lend_and_drop",
+    "spread_counted_totals",
 ]
 
 
@@ -181,6 +182,45 @@ def drop_single_plot_counts(clauses: Sequence[Clause], mentions: list[Mention]) 
             continue
         lend_and_drop(clauses, counted, others)
         return others
+    return mentions
+
+
+#: Words that make a count the total of the fields named ("4 fields in total").
+_TOTAL = frozenset({"total", "altogether", "overall", "all told", "in all"})
+
+
+def spread_counted_totals(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
+    """'potatoes and cabbages, 4 fields in total', 'idk 3 or 4 fields total': a counted
+    plural plot of no crop said to be the total, after uncounted fields of named crops,
+    is how many fields they make together: the extra fields go to the named crops in
+    turn (2 of potatoes, 2 of cabbages), not to crops chosen at random. Return the fields
+    left."""
+    for total in mentions:
+        if (
+            total.has_crop
+            or total.category is not None
+            or total.plot is None
+            or total.count is None
+            or total.refinements
+            or not any(
+                i.norm in _TOTAL or any(t.norm in _TOTAL for t in i.tokens) for i in total.items
+            )
+        ):
+            continue
+        named = [m for m in mentions if m is not total and m.clause < total.clause]
+        if (
+            len(named) < 2
+            or any(m.count is not None or m.refinements for m in named)
+            or not all(m.has_crop or m.category is not None for m in named)
+            or total.count < len(named)
+            or len(named) != len(mentions) - 1
+        ):
+            continue
+        for extra in range(total.count - len(named)):
+            member = named[extra % len(named)]
+            member.count = (member.count or 1) + 1
+        lend_and_drop(clauses, total, named)
+        return named
     return mentions
 
 
