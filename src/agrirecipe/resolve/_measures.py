@@ -18,6 +18,8 @@ from agrirecipe.resolve._geometry import geometry_nouns
 from agrirecipe.resolve._intent import FieldIntent, RowSpec
 from agrirecipe.resolve._lexicon import Item, number_value
 from agrirecipe.resolve._links import listing
+from agrirecipe.resolve._member_refs import said_per_plot
+from agrirecipe.resolve._shares import HOLDINGS
 from agrirecipe.resolve._structure import per_bed, strong_crops
 from agrirecipe.resolve._words import SENTENCE_MARKS
 
@@ -91,17 +93,13 @@ def drop_total_sizes(items: Sequence[Item]) -> list[str]:
     return dropped
 
 
-#: The words for the whole holding whose size a total is ("a 100-acre farm").
-_HOLDINGS = frozenset({"farm", "holding", "property", "estate", "smallholding"})
-
-
 def _the_farms(items: Sequence[Item], index: int) -> bool:
     """Whether the size at ``index`` is said of the farm: "a 100-acre farm", "the farm is
     40 ha", "a farm of 12 hectares"."""
     after = items[index + 1].norm if index + 1 < len(items) else ""
     before = [i.norm for i in items[max(0, index - 2) : index]]
-    return after in _HOLDINGS or (
-        len(before) == 2 and before[0] in _HOLDINGS and before[1] in ("is", "of", "covers")
+    return after in HOLDINGS or (
+        len(before) == 2 and before[0] in HOLDINGS and before[1] in ("is", "of", "covers")
     )
 
 
@@ -185,9 +183,7 @@ def shared_by_all(clauses: Sequence[Clause], position: int) -> bool:
                 for t in i.tokens
             )
             # "8 rows per block, 5 m between rows": measures said per plot
-            or any(
-                a.norm == "per" and b.role == "plot" for a, b in itertools.pairwise(previous.items)
-            )
+            or said_per_plot(previous.items)
         ):
             return True
         index -= 1

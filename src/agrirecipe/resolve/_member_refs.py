@@ -16,7 +16,14 @@ from collections.abc import Sequence
 from agrirecipe.resolve._decompose import Mention
 from agrirecipe.resolve._lexicon import Item
 
-__all__ = ["BACK_POINTERS", "counted_reference", "per_plot", "place_said", "plots_again"]
+__all__ = [
+    "BACK_POINTERS",
+    "counted_reference",
+    "per_plot",
+    "place_said",
+    "plots_again",
+    "said_per_plot",
+]
 
 #: Words after "<number> of" that point back at the plural ("two of them").
 BACK_POINTERS = frozenset({"them", "which", "these", "those", "the fields", "the plots"})
@@ -61,13 +68,18 @@ def plots_again(mention: Mention) -> bool:
     )
 
 
+def said_per_plot(items: Sequence[Item]) -> bool:
+    """Whether the items (in order) say "per" right before a plot word ("8 rows per block")."""
+    return any(a.norm == "per" and b.role == "plot" for a, b in itertools.pairwise(items))
+
+
 def per_plot(mention: Mention) -> bool:
     """A measure said of every plot ("12 rows per plot"), read as a plot of no crop."""
     words = sorted(mention.items, key=lambda i: i.start)
     return (
         not mention.has_crop
         and mention.category is None
-        and any(a.norm == "per" and b.role == "plot" for a, b in itertools.pairwise(words))
+        and said_per_plot(words)
         and any(i.role == "geometry" for i in words)
     )
 

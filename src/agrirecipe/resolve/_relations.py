@@ -427,10 +427,6 @@ def read_relations(
                 # one way: "north of it ..., north of it ...")
                 objects = (parallel[2],)
             parallel = (word, subject, objects[0], kind)
-        if link.role == "trailer" and link.norm.split()[0] in _FURTHER and len(objects) == 1:
-            # "strawberries east of the carrots, and cherries further east still": past
-            # the field furthest that way already, not the one it was placed against
-            objects = (_furthest(kind, subject, objects[0], read),)
         relations.extend(field_relations(kind, subject, objects, members, link, trace))
         read.append((kind, subject, objects))
         if _both_said(clauses, position) and len(before) >= 2 and subject is before[-1]:

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import re
 
-__all__ = ["read_shares"]
+__all__ = ["HOLDINGS", "read_shares"]
 
 #: "one big orchard but 3 blocks": one plot said, then the blocks it is split into.
 _ONE_PLOT_BUT = re.compile(
@@ -21,10 +21,13 @@ _ONE_PLOT_BUT = re.compile(
     r"(?P<blocks>(?:\d+|(?i:two|three|four|five|six))\s+(?i:blocks|plots|sections|parts|fields|strips))\b"
 )
 #: "A 100-acre farm", "the farm is 40 ha": the size of the whole holding.
+#: The words for the whole holding whose size a total is ("a 100-acre farm").
+HOLDINGS = frozenset({"farm", "holding", "property", "estate", "smallholding"})
+_HOLDING = "|".join(sorted(HOLDINGS))
 _FARM_TOTAL = re.compile(
     r"\b(?P<n>\d+(?:\.\d+)?)[\s-]*(?P<unit>(?i:acres?|ha|hectares?))[\s-]+"
-    r"(?i:farm|holding|property|estate|smallholding)\b"
-    r"|\b(?i:farm|holding|property|estate)\s+(?i:is|of)\s+(?:(?i:about|around|some)\s+)?"
+    rf"(?i:{_HOLDING})\b"
+    rf"|\b(?i:{_HOLDING})\s+(?i:is|of)\s+(?:(?i:about|around|some)\s+)?"
     r"(?P<n2>\d+(?:\.\d+)?)\s*(?P<unit2>(?i:acres?|ha|hectares?))\b"
 )
 #: "half in wheat", "a third of it under potatoes": a share of the farm given to a crop.
