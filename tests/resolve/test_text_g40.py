@@ -119,3 +119,83 @@ def test_members_placed_by_a_packing_shed_go_on_listing() -> None:
 )
 def test_a_total_count_after_named_crops(prompt: str, crops: list[str]) -> None:
     assert [f.crop for f in generate(prompt).recipe.fields] == crops
+
+
+def test_the_counted_fields_of_a_kind_named_again() -> None:
+    # "the two sweetcorn plots": the two named before, not two more
+    scene = generate(
+        "Cross-pollination sensor study, sweetcorn / popcorn / sweetcorn, each plot 12 rows "
+        "on 76 cm, popcorn in between the two sweetcorn plots."
+    )
+    assert [f.variety for f in scene.recipe.fields] == ["Sweet Corn", "Popcorn", "Sweet Corn"]
+    first, popcorn, last = (f.id for f in scene.recipe.fields)
+    assert {(r.kind, r.subject, frozenset(r.objects)) for r in scene.recipe.relations} == {
+        ("between", popcorn, frozenset({first, last}))
+    }
+
+
+def test_the_plants_of_one_field_placed_against_another() -> None:
+    assert (
+        "east_of",
+        "grape_vineyard_1",
+        ("pear_orchard_1",),
+    ) in _relations(
+        "Vineyard and pear orchard side by side - vines on 2.5 m rows, pear trees on 3.5 m "
+        "rows, the vines east of the pears."
+    )
+    assert _relations("a vineyard and a wheat field, the vines north of the wheat") == {
+        ("north_of", "grape_vineyard_1", ("wheat_field_1",))
+    }
+
+
+def test_a_label_with_its_place_in_brackets_before_its_crop() -> None:
+    scene = generate(
+        "Strip 1 (west end) dent corn, strip 2 flint corn, strip 3 (east end) popcorn; each "
+        "strip is 24 rows at 75 cm."
+    )
+    assert [f.variety for f in scene.recipe.fields] == ["Dent", "Flint", "Popcorn"]
+    assert all(f.row_count == 24 for f in scene.recipe.fields)
+    dent, flint, popcorn = (f.id for f in scene.recipe.fields)
+    relations = {(r.kind, r.subject, r.objects) for r in scene.recipe.relations}
+    assert {("west_of", dent, (flint,)), ("west_of", flint, (popcorn,))} <= relations
+
+
+def test_a_name_placed_to_the_west_of_another_then_measured() -> None:
+    scene = generate(
+        "Cherry orchard with two blocks for the harvest-assist platform. Kordia: 5 rows, "
+        "4.5 m between rows, 2.5 m in-row. Regina, to the west of the Kordia: 6 rows at "
+        "4.8 m x 2.7 m. All rows north-south."
+    )
+    kordia, regina = scene.recipe.fields
+    assert (kordia.variety, kordia.row_count, regina.variety, regina.row_count) == (
+        "Kordia",
+        5,
+        "Regina",
+        6,
+    )
+    assert regina.agronomy.row_spacing_m == pytest.approx(4.8)
+    assert ("west_of", regina.id, (kordia.id,)) in {
+        (r.kind, r.subject, r.objects) for r in scene.recipe.relations
+    }
+
+
+def test_a_mixed_farm_does_not_make_its_fields_descriptions() -> None:
+    fields = generate(
+        "a mixed farm with some fruit, some veg and a couple of cereal fields"
+    ).recipe.fields
+    categories = [f.category for f in fields]
+    assert categories.count("Fruits") == 1 and categories.count("Vegetables") == 1
+    assert categories.count("Cereals") == 2
+
+
+def test_a_field_said_to_look_so_too() -> None:
+    lettuce, cabbage = generate(
+        "lettuce bolting lol forgot to harvest, the cabbages too"
+    ).recipe.fields
+    assert (lettuce.crop, cabbage.crop) == ("Lettuce", "Cabbage")
+    assert lettuce.stage == cabbage.stage == "Reproductive"
+    wheat, maize = generate("wheat with rust and maize too").recipe.fields
+    assert wheat.health == maize.health == "Ill"
+    # a field that says its own look keeps it
+    _, carrots, onions = generate("potatoes with blight, carrots too, onions fine").recipe.fields
+    assert (carrots.health, onions.health) == ("Ill", "Healthy")

@@ -227,7 +227,12 @@ def merge_coreferences(
             is_definite
             and (mention.count or 1) >= 2
             and mention.has_crop
-            and not names_a_variety(mention)
+            and (
+                not names_a_variety(mention)
+                # ("sweetcorn / popcorn / sweetcorn, ... between the two sweetcorn plots":
+                # the fields of that kind named before, as many as counted)
+                or _as_many_of_that_kind(kept, mention)
+            )
         )
         # "imperator and danvers carrots, ..., imperator north of danvers": a variety
         # named again without an article is the field already named.
@@ -408,7 +413,7 @@ def merge_coreferences(
             kept.append(mention)
             continue
         names_variety = names_a_variety(mention)
-        if names_variety:
+        if names_variety and not summary:
             run = [m for m in repeated if _compatible(builder, m, mention)][:1] or run[:1]
         if not run and (is_definite or bare):
             # "three fields: potatoes, carrots and onions ..., the carrots have blight";
@@ -485,6 +490,19 @@ def merge_coreferences(
         else:
             clause.mentions.remove(mention)
     return kept
+
+
+def _as_many_of_that_kind(kept: Sequence[Mention], mention: Mention) -> bool:
+    """Whether the fields named before that grow the kind ``mention`` names are exactly as
+    many as it counts ("the two sweetcorn plots" after two sweetcorn plots)."""
+
+    def kinds(m: Mention) -> set[tuple[str, str]]:
+        return {(c, v) for c, v, weak in m.interpretations or () if v is not None and not weak}
+
+    own = kinds(mention)
+    members = {id(r): r for m in kept for r in (m.refinements or [m])}.values()
+    same = [r for r in members if own and kinds(r) == own]
+    return sum(r.count or 1 for r in same) == mention.count
 
 
 #: Where an ordinal word points among the fields named in order.

@@ -610,19 +610,24 @@ def _placed_again(
     clauses: Sequence[Clause], position: int, mention: Mention, crop_categories: dict[str, str]
 ) -> bool:
     """Whether "the vines" (a word for the plants of a crop) is placed by the words right
-    after it ("to the north") and names the crop of exactly one field named before: that
-    field, named again to place it."""
+    after it ("to the north", "east of the pears") and names the crop of exactly one field
+    named before: that field, named again to place it."""
     following = clauses[position + 1] if position + 1 < len(clauses) else None
     crops = strong_crops(mention)
-    if (
-        not crops
-        or following is None
-        or following.link is None
-        or following.link.role != "trailer"
-        or following.items
-    ):
+    if not crops or following is None or following.link is None:
         return False
-    earlier = [m for c in clauses[:position] for m in c.mentions]
+    trailer = following.link.role == "trailer" and not following.items
+    against = following.link.role == "relation" and bool(following.mentions)
+    if not (trailer or against):
+        return False
+    # (not "vines on 2.5 m rows" after the vineyard: its plants again, no field of its own)
+    words = descriptive_words()
+    earlier = [
+        m
+        for c in clauses[:position]
+        for m in c.mentions
+        if not all(h.norm in words for h in m.heads)
+    ]
     return sum(1 for m in earlier if _may_hold(m, crop_categories) & crops) == 1
 
 

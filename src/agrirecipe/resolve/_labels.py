@@ -116,6 +116,7 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
     crops is returned unchanged.
     """
     text = _crops_in_labels(text, tag)
+    text = _BRACKETED_THEN_NAMED.sub(r"\g<head>: ", text)
     text = _PLACED_THEN_MEASURED.sub(r"\g<head> \g<rest>, \g<where>", text)
     text = _NAME_PLACED_THEN_MEASURED.sub(r"\g<name>: \g<rest>, \g<where>\g<end>", text)
     text = name_members_again(text, tag)
@@ -255,8 +256,14 @@ _PLACED_THEN_MEASURED = re.compile(
 # north of the Kordia block" (the measures the name's, not the block's it is placed by)
 _NAME_PLACED_THEN_MEASURED = re.compile(
     rf"(?:^|(?<=[.;!?]\s))(?!(?i:{_NOUNS})\b)(?P<name>[A-Z][\w'-]*(?:\s+[A-Z][\w'-]*)?)\s*,\s*"
-    rf"(?P<where>{_CLOSE}(?i:north|south|east|west)\s+"
+    rf"(?P<where>(?:(?i:to\s+the)\s+)?{_CLOSE}(?i:north|south|east|west)\s+"
     r"(?i:of)\s+[^,:;.]+?)\s*:\s*(?P<rest>\d(?:[^.;:]|\.(?=\d))*?)\s*(?P<end>[;!?]|\.(?!\d)|$)"
+)
+
+# "Strip 1 (west end) dent corn, strip 2 flint corn": a label with a bracket, then what
+# it grows, as in "Strip 1 (west end): dent corn" (the bracket the label's own)
+_BRACKETED_THEN_NAMED = re.compile(
+    rf"(?:^|(?<=[.;,!?]\s))(?P<head>{_LABEL}\s*\([^()]*\))\s+(?=[A-Za-z])"
 )
 
 # "between plots 1 and 3", "blocks A and C": one noun for two labels

@@ -102,6 +102,7 @@ from agrirecipe.resolve._lexicon import (
     tokenize,
     vocabulary,
 )
+from agrirecipe.resolve._likewise import share_likewise
 from agrirecipe.resolve._lists import fill_gapped_counts, spread_value_lists
 from agrirecipe.resolve._loose import attach_loose
 from agrirecipe.resolve._measures import (
@@ -282,6 +283,7 @@ class PromptReader(FieldReading):
         )
         share_leading_attributes(clauses)
         share_trailing_attributes(clauses)
+        share_likewise(clauses)
         mentions = apply_refinements(clauses, self.crop_categories, builder)
         mentions = lend_heading_category(clauses, share_counted_fields(mentions))
         mentions = drop_forward_summaries(

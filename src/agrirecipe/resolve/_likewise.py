@@ -1,0 +1,48 @@
+"""A field said to be "too" what the one before it is (issue 8).
+
+"lettuce bolting lol forgot to harvest, the cabbages too", "the wheat has rust, the
+barley as well": a clause that names one field and only adds "too" (``likewise`` in
+``reader_words``) takes the stage, health and cue words of the field named right before
+it. :func:`share_likewise` lends them.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from agrirecipe.resolve._decompose import Clause
+from agrirecipe.resolve._lexicon import reader_words
+from agrirecipe.resolve._structure import attribute_of
+
+__all__ = ["share_likewise"]
+
+#: What a field said "too" takes from the one before it.
+_LENT = ("stage", "health", "cue")
+
+
+def share_likewise(clauses: Sequence[Clause]) -> None:
+    """Lend the stage, health and cue words of a field to the next clause's one field
+    that is said to be so "too" and says none of its own."""
+    likewise = reader_words("likewise")
+    for position in range(1, len(clauses)):
+        clause, previous = clauses[position], clauses[position - 1]
+        if len(clause.mentions) != 1 or not previous.mentions or not clause.items:
+            continue
+        words = [i for i in clause.items if i.role != "separator"]
+        following = clauses[position + 1] if position + 1 < len(clauses) else None
+        # ("the carrots also": "also" read as the link of an empty clause after it)
+        trailing = (
+            following is not None
+            and following.link is not None
+            and following.link.norm in likewise
+            and not following.items
+        )
+        last = " ".join(i.norm for i in words[-2:])
+        if not (trailing or words[-1].norm in likewise or last in likewise):
+            continue
+        mention = clause.mentions[0]
+        if not mention.has_crop or any(attribute_of(i) in _LENT for i in mention.items):
+            continue
+        lent = [i for i in previous.mentions[-1].items if i.role in _LENT]
+        mention.items.extend(lent)
+        mention.borrowed.extend(lent)
