@@ -84,6 +84,7 @@ from agrirecipe.resolve._headings import (
     lend_heading_crop,
     name_counted_plots,
 )
+from agrirecipe.resolve._in_turn import say_in_turn
 from agrirecipe.resolve._intent import (
     Hemisphere,
     ResolveContext,
@@ -304,6 +305,7 @@ class PromptReader(FieldReading):
             # "... and there's a duck pond in the middle": the zone of scenery, not a field
             if not clause.mentions and any(i.scenery for i in clause.loose):
                 clause.loose = [i for i in clause.loose if i.role != "zone"]
+        say_in_turn(clauses)
         scene_items = attach_loose(clauses, mentions)
         share_each_measures(clauses)
         for mention in mentions:
