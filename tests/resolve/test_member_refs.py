@@ -34,3 +34,39 @@ def test_a_place_already_said_is_not_said_again() -> None:
     assert place_said(_reference("the second one"), parent) is None
     parent.refinements[1].unsaid = True
     assert place_said(_reference("the second one"), parent) == 1
+
+
+def _placed(prompt: str) -> set[tuple[str, str, tuple[str, ...]]]:
+    from agrirecipe import generate
+
+    return {(r.kind, r.subject, r.objects) for r in generate(prompt).recipe.relations}
+
+
+@pytest.mark.parametrize(
+    ("said", "placed"),
+    [
+        ("the denser plot to the east", "maize_plot_1"),
+        ("the sparser plot to the east", "maize_plot_2"),
+        ("the first one to the east", "maize_plot_1"),
+        ("the 9 plants/m2 plot to the east", "maize_plot_1"),
+        ("the 7 plants/m2 plot to the east", "maize_plot_2"),
+    ],
+)
+def test_a_member_said_already_named_again_by_a_measure_or_place(said: str, placed: str) -> None:
+    other = {"maize_plot_1": "maize_plot_2", "maize_plot_2": "maize_plot_1"}[placed]
+    assert _placed(
+        f"two maize plots on 75 cm rows, one at 9 plants/m2 and one at 7 plants/m2, {said}"
+    ) == {("east_of", placed, (other,))}
+
+
+def test_a_member_named_by_its_number_alone_as_an_object() -> None:
+    assert _placed(
+        "Two maize plots for a density comparison, 9 plants/m2 in one and 7 plants/m2 in the "
+        "other, the 9 plants/m2 plot east of the 7."
+    ) == {("east_of", "maize_plot_1", ("maize_plot_2",))}
+
+
+def test_the_bigger_plot_by_its_area() -> None:
+    assert _placed(
+        "two wheat fields, one of 2 ha and one of 5 ha, the bigger field to the north"
+    ) == {("north_of", "wheat_field_2", ("wheat_field_1",))}

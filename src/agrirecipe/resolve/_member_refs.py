@@ -1,6 +1,8 @@
 """How a clause points at members of a counted plural (issue 8).
 
 "four fields, two of them blighted" (a count of them: :func:`counted_reference`),
+"..., one at 9 plants/m2 and one at 7 plants/m2, the denser plot to the east" (a member
+said already, named again by its place or a measure: :func:`member_said_again`),
 "Three potato fields in a line. The middle one has blight" (a member by its place:
 :func:`place_said`), "..., 12 rows per plot" (a measure of every plot: :func:`per_plot`)
 and "..., plots laid out east to west" (the plots named again: :func:`plots_again`).
@@ -13,12 +15,13 @@ from __future__ import annotations
 import itertools
 from collections.abc import Sequence
 
-from agrirecipe.resolve._decompose import Mention
-from agrirecipe.resolve._lexicon import Item
+from agrirecipe.resolve._decompose import Clause, Mention
+from agrirecipe.resolve._lexicon import Item, vocabulary
 
 __all__ = [
     "BACK_POINTERS",
     "counted_reference",
+    "member_said_again",
     "per_plot",
     "place_said",
     "plots_again",
@@ -95,3 +98,98 @@ def counted_reference(items: Sequence[Item]) -> int | None:
     if value != int(value) or value < 1:
         return None
     return int(value)
+
+
+def _measure(member: Mention, key: str) -> float | None:
+    """The measure ``key`` a member states: a geometry key ("plants_per_ha", the density
+    also from both spacings), or "area_m2" from its size; None when it states none."""
+    values: dict[str, float] = {}
+    for item in member.items:
+        if item.role == "geometry":
+            values.update((m.key, m.value) for m in item.data["geometry"])
+        elif item.role == "size":
+            size = item.data["size"]
+            area = size.area_m2 or (
+                size.width_m * size.length_m if size.width_m and size.length_m else None
+            )
+            if area:
+                values["area_m2"] = area
+    if "plants_per_ha" not in values and {"row_spacing_m", "in_row_spacing_m"} <= set(values):
+        values["plants_per_ha"] = 10_000.0 / (values["row_spacing_m"] * values["in_row_spacing_m"])
+    return values.get(key)
+
+
+def _by_comparative(words: Sequence[Item], members: Sequence[Mention]) -> Mention | None:
+    """The member "the denser plot" points at: the one whose measure is the most (or the
+    least) of all the members' (``member_comparatives`` in vocabulary.yaml)."""
+    said = vocabulary()["member_comparatives"]
+    comparative = next((w.norm for w in words if w.norm in said), None)
+    if comparative is None:
+        return None
+    key, most = str(said[comparative]["measure"]), bool(said[comparative]["most"])
+    values = [_measure(m, key) for m in members]
+    if any(v is None for v in values) or len(set(values)) != len(values):
+        return None
+    measured = [v for v in values if v is not None]
+    at = measured.index(max(measured) if most else min(measured))
+    return members[at]
+
+
+def _by_value(words: Sequence[Item], members: Sequence[Mention]) -> Mention | None:
+    """The member "the 9 plants/m2 plot" (or "the 7", its number alone) points at: the one
+    member whose own measure is said with the same words or number."""
+    said = [w for w in words if w.role in ("geometry", "number") and w.norm not in ("a", "an")]
+    if len(said) != 1:
+        return None
+    word = said[0]
+
+    def states(member: Mention) -> bool:
+        for item in member.items:
+            if item.role != "geometry":
+                continue
+            if word.role == "geometry" and item.norm == word.norm:
+                return True
+            if word.role == "number" and item.norm.split()[0] == word.norm:
+                return True
+        return False
+
+    found = [m for m in members if states(m)]
+    return found[0] if len(found) == 1 else None
+
+
+def member_said_again(clause: Clause, parent: Mention) -> Mention | None:
+    """The member of ``parent``'s full list that ``clause`` names again by a measure
+    ("the denser plot", "the 9 plants/m2 plot", "the 7") or by its place ("the first
+    one"), when the clause says nothing else that names a field; else None."""
+    members = list({id(r): r for r in parent.refinements}.values())
+    if parent.count is None or parent.count < 2 or len(members) != parent.count:
+        return None
+    if any(m.unsaid for m in members):
+        return None
+    mention = clause.mentions[0] if len(clause.mentions) == 1 else None
+    if len(clause.mentions) > 1 or (
+        mention is not None
+        and (
+            mention.has_crop
+            or mention.category is not None
+            or mention.count is not None
+            or mention.plot is None
+            or bool(mention.plot["plural"])
+        )
+    ):
+        return None
+    words = [i for i in clause.items if i.role not in ("separator", "filler", "plot")]
+    pointed = bool(clause.items) and clause.items[0].norm in ("the", "that", "this")
+    if not pointed and not (words and words[0].role == "reference"):
+        return None
+    if words and words[0].role == "reference":
+        if clause.link is not None and clause.link.role == "relation":
+            return None  # ("Plot 2, south of the first: ...": read where relations are)
+        at = _PLACES.get(words[0].norm)
+        if words[0].norm in _LAST:
+            at = len(members) - 1
+        if words[0].norm in _MIDDLE and len(members) % 2:
+            at = len(members) // 2
+        return members[at] if at is not None and at < len(members) and len(words) == 1 else None
+    fillers = [i for i in clause.items if i.role == "filler"]
+    return _by_comparative(fillers, members) or _by_value(words, members)

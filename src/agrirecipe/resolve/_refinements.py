@@ -31,6 +31,7 @@ from agrirecipe.resolve._listing import (
 from agrirecipe.resolve._member_refs import (
     BACK_POINTERS,
     counted_reference,
+    member_said_again,
     per_plot,
     place_said,
     plots_again,
@@ -129,6 +130,19 @@ def apply_refinements(
             clause.mentions = [next(r for r in parent.refinements if named_again(again, r))]
             clause.refined_parent = parent
             clause.refinement = previous.refinement
+            continue
+        if (
+            parent is not None
+            and clause.link is not None
+            and clause.link.role in ("separator", "conjunction", "relation")
+            and (member := member_said_again(clause, parent)) is not None
+        ):
+            # "two maize plots, one at 9 plants/m2 and one at 7 plants/m2, the denser plot
+            # to the east": a member said already, named again to place or describe it
+            said = clause.mentions[0].items if clause.mentions else clause.items
+            member.items.extend(i for i in said if i.role in ("stage", "health", "cue"))
+            clause.mentions, clause.loose = [], []
+            clause.refined_parent, clause.refinement = parent, member
             continue
         if (
             enumerating

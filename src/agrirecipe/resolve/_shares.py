@@ -1,10 +1,11 @@
 """Parts of a whole said in words (issue 8): "A 100-acre farm: half in wheat, ...",
 "All healthy apart from the onions, which have downy mildew", "one big orchard but 3
-blocks", "the northern half (10 ha) is orchard". :func:`read_shares` writes each as the
-plainer words the reader takes ("50 acres in wheat", "the onions, which have downy
-mildew; the rest healthy", "3 blocks in one big orchard", "the northern half is 10 ha of
-orchard"), in one pass of one regular expression each, before the prompt is split into
-words.
+blocks", "the northern half (10 ha) is orchard", "9 plants/m2 in one and 7 plants/m2 in
+the other". :func:`read_shares` writes each as the plainer words the reader takes ("50
+acres in wheat", "the onions, which have downy mildew; the rest healthy", "3 blocks in one
+big orchard", "the northern half is 10 ha of orchard", "one with 9 plants/m2 and the other
+with 7 plants/m2"), in one pass of one regular expression each, before the prompt is split
+into words.
 """
 
 from __future__ import annotations
@@ -89,6 +90,17 @@ _PART_SIZE_FIRST = re.compile(
 )
 
 
+#: "9 plants/m2 in one and 7 plants/m2 in the other": what each of two fields has, said
+#: after it, as in "one with 9 plants/m2 and the other with 7 plants/m2".
+_IN_ONE_IN_THE_OTHER = re.compile(
+    r"(?:(?<=[,;:(]\s)|(?<=[,;:(])|^)(?P<a>[^\s,;:.()](?:[^,;:.()]|\.(?=\d))*?)"
+    r"\s+(?i:in|on|for)\s+(?i:one)(?:\s+(?i:of them|plot|field|block|strip))?"
+    r"\s*(?:,\s*(?:(?i:and|&|but)\s+)?|(?i:and|&|but)\s+)"
+    r"(?P<b>[^\s,;:.()](?:[^,;:.()]|\.(?=\d))*?)\s+(?i:in|on|for)\s+(?i:the other)"
+    r"(?:\s+(?i:one|plot|field|block|strip))?\b"
+)
+
+
 def read_shares(text: str) -> str:
     """``text`` with the parts of a whole said plainly (see the module's words)."""
     # "..., one big orchard but 3 blocks pls": three blocks, in the one orchard
@@ -103,5 +115,7 @@ def read_shares(text: str) -> str:
     text = _PART_SIZE_FIRST.sub(
         lambda m: f"{m.group('part')} {m.group('verb')} {m.group('size')} of ", text
     )
+    # "9 plants/m2 in one and 7 plants/m2 in the other": each of the two, in turn
+    text = _IN_ONE_IN_THE_OTHER.sub(r"one with \g<a> and the other with \g<b>", text)
     # "A 100-acre farm: half in wheat, ...": a share of the farm's size, as an area
     return _farm_shares(text)
