@@ -112,6 +112,7 @@ from agrirecipe.resolve._measures import (
     same_spacing,
     share_each_measures,
 )
+from agrirecipe.resolve._named_in_order import name_counted_in_order
 from agrirecipe.resolve._neighbours import (
     name_the_placed_plot,
     place_around_a_centre,
@@ -286,6 +287,7 @@ class PromptReader(FieldReading):
         share_trailing_attributes(clauses)
         share_likewise(clauses)
         mentions = apply_refinements(clauses, self.crop_categories, builder)
+        mentions = name_counted_in_order(clauses, mentions)
         mentions = lend_heading_category(clauses, share_counted_fields(mentions))
         mentions = drop_forward_summaries(
             clauses, drop_joint_headings(clauses, mentions, self.crop_categories)

@@ -24,6 +24,7 @@ from agrirecipe.resolve._links import (
     fields_of,
     following_list,
     link_norm,
+    listing,
     says,
 )
 from agrirecipe.resolve._measures import sentence_start
@@ -135,6 +136,22 @@ def one_and_the_other(clauses: Sequence[Clause], position: int) -> bool:
     )
 
 
+def _named_again_in_order(
+    clauses: Sequence[Clause], position: int, members: dict[int, list[int]]
+) -> list[int]:
+    """The fields the clause of a row's direction and the clauses listed after it name,
+    each once, in order ("... north to south as veg, fruit, veg")."""
+    named = clauses[position].named[-1:]
+    for index, clause in enumerate(clauses[position + 1 :], start=position + 1):
+        # (after the colon of the direction's own clause: "west to east: wheat, ...")
+        colon = index == position + 1 and link_norm(clause) == ":"
+        if not (listing(clause.link) or colon) or len(clause.named) != 1:
+            break
+        named.append(clause.named[0])
+    fields = fields_of(named, members)
+    return fields if len(fields) == len(named) else []
+
+
 #: "from west to east": each field of the row lies on this side of the next one.
 TOWARDS = {
     "towards_east": "west_of",
@@ -155,6 +172,11 @@ def directed_row(
     """'three strips from west to east: wheat, potatoes, maize', 'A, B and C from north
     to south': the fields in the order named, each on one side of the next."""
     fields = fields_of(list(reversed(coordinated(clauses, position))), members)
+    # "Two vegetable plots and one fruit plot, laid out north to south as veg, fruit, veg":
+    # the same fields, named again in the order they lie
+    again = _named_again_in_order(clauses, position, members)
+    if len(again) == len(fields) >= 2 and set(again) == set(fields):
+        fields = again
     if len(fields) < 2:
         # "going west to east: tomatoes first, then the jalapenos, then peppers";
         # "going east you pass Hamlin oranges, then Navel": the clause's own field first
