@@ -30,3 +30,11 @@ def test_not_when_the_ones_and_the_fields_differ_in_number() -> None:
         for f in generate("potatoes, carrots and onions, one with blight, one fine").recipe.fields
     ]
     assert healths != ["Ill", "Healthy", "Healthy"]
+
+
+def test_sizes_said_in_turn_after_two_fields() -> None:
+    tomatoes, chillies = generate(
+        "roma toms north of cayenne chillies, 20x40m and 30x50m"
+    ).recipe.fields
+    assert tomatoes.geometry.size_m == (20.0, 40.0)
+    assert chillies.geometry.size_m == (30.0, 50.0)

@@ -30,3 +30,29 @@ def test_what_each_of_two_has(said: str, plain: str) -> None:
 
 def test_one_alone_is_left_as_said() -> None:
     assert read_shares("blight in one field") == "blight in one field"
+
+
+@pytest.mark.parametrize(
+    ("said", "plain"),
+    [
+        (
+            "hamlin & valencia oranges, 2 groves, one has greening... the hamlin one",
+            "hamlin & valencia oranges, 2 groves, the hamlin one has greening",
+        ),
+        (
+            "two fields, one has blight - its the bintje one",
+            "two fields, the bintje one has blight",
+        ),
+        # the other one, and "one" inside "the near one", are left as said
+        (
+            "two fields - one has late blight, the other one is clean",
+            "two fields - one has late blight, the other one is clean",
+        ),
+        (
+            "the near one has downy mildew, the far one is fine",
+            "the near one has downy mildew, the far one is fine",
+        ),
+    ],
+)
+def test_a_look_said_of_one_then_which(said: str, plain: str) -> None:
+    assert read_shares(said) == plain

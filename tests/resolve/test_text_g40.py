@@ -199,3 +199,16 @@ def test_a_field_said_to_look_so_too() -> None:
     # a field that says its own look keeps it
     _, carrots, onions = generate("potatoes with blight, carrots too, onions fine").recipe.fields
     assert (carrots.health, onions.health) == ("Ill", "Healthy")
+
+
+def test_a_kind_listed_again_in_a_plain_list_is_another_field() -> None:
+    scene = generate("sweetcorn, popcorn and sweetcorn, popcorn between the two sweetcorn plots.")
+    assert [f.variety for f in scene.recipe.fields] == ["Sweet Corn", "Popcorn", "Sweet Corn"]
+    assert [f.variety for f in generate("Valencia, Hamlin and Valencia").recipe.fields] == [
+        "Valencia",
+        "Hamlin",
+        "Valencia",
+    ]
+    # named again to be placed: the same field
+    carrots = generate("imperator and danvers carrots, imperator north of danvers").recipe
+    assert [f.variety for f in carrots.fields] == ["Imperator", "Danvers"]

@@ -246,6 +246,8 @@ def merge_coreferences(
         ]
         if repeated and related_to(clauses, clause, repeated[0]):
             repeated = []  # "Valencia oranges next to Valencia oranges": two fields
+        if repeated and _listed_again(clauses, clause, repeated[0]):
+            repeated = []  # "sweetcorn, popcorn and sweetcorn": a third member
         placed_again: Mention | None = None
         if (
             not repeated
@@ -503,6 +505,30 @@ def _as_many_of_that_kind(kept: Sequence[Mention], mention: Mention) -> bool:
     members = {id(r): r for m in kept for r in (m.refinements or [m])}.values()
     same = [r for r in members if own and kinds(r) == own]
     return sum(r.count or 1 for r in same) == mention.count
+
+
+def _listed_again(clauses: Sequence[Clause], clause: Clause, earlier: Mention) -> bool:
+    """Whether ``clause`` names a kind again as the next member of the plain list that
+    named it first ("sweetcorn, popcorn and sweetcorn"): every clause from the first to
+    this one names one bare field and is joined by a comma or "and", and none is placed
+    (not "Valencia and Hamlin, Valencia east of Hamlin")."""
+    run = clauses[earlier.clause : clause.index + 1]
+    following = clauses[clause.index + 1] if clause.index + 1 < len(clauses) else None
+    if len(run) < 3 or earlier.clause >= clause.index:
+        return False
+    if (
+        following is not None
+        and following.link is not None
+        and following.link.role in ("relation", "between", "trailer")
+    ):
+        return False
+    return all(
+        len(c.mentions) == 1
+        and c.mentions[0].count is None
+        and (c is run[0] or (c.link is not None and c.link.role in ("separator", "conjunction")))
+        and (c.link is None or c.link.norm not in (".", ";", ":", "!", "?") or c is run[0])
+        for c in run
+    )
 
 
 #: Where an ordinal word points among the fields named in order.

@@ -154,6 +154,22 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
             if first and first[0].has(*NAMING):
                 definitions.append(match)
         definitions.sort(key=lambda m: m.start())
+    if not definitions and not subjects:
+        # "Plot A carrots; plot B onions, north of A; plot C lettuce, east of A": labels
+        # with no mark at all, before crops, when the text places fields against them
+        loose = [
+            m
+            for m in _LOOSE_DEFINITION.finditer(text)
+            if not _REFERRED.search(text[: m.start()])
+            and (first := tag(text[m.end() :].split(",")[0]))
+            and first[0].has(*NAMING)
+        ]
+        labels = {m.group("label") for m in loose}
+        if len(labels) >= 2 and any(
+            re.search(rf"\b(?i:{_BEFORE_REFERENCE})\s+(?:(?i:the)\s+)?{_said(label)}\b", text)
+            for label in labels
+        ):
+            definitions = loose
     names: dict[str, str] = {}
     for match in definitions:
         label = match.group("label").upper()
@@ -314,16 +330,36 @@ def open_ordered_lists(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
 _LIST_NUMBER = re.compile(r"(?:(?<=^)|(?<=[:;,.!?]\s)|(?<=\n))\(?(?P<n>[1-9]|[a-h])\)\s+")
 
 
+#: "plots are (a) Albion strawberries, ripe (b) California Wonder ...": a list's marks in
+#: full brackets, wherever they stand
+_BRACKETED_NUMBER = re.compile(r"(?:(?<=^)|(?<=\s))\((?P<n>[1-9]|[a-h])\)\s+")
+
+
+def _in_order(marks: Sequence[str]) -> bool:
+    return len(marks) >= 2 and marks in (
+        [str(i) for i in range(1, len(marks) + 1)],
+        [chr(ord("a") + i) for i in range(len(marks))],
+    )
+
+
 def drop_list_numbers(text: str) -> str:
     """``text`` without the numbers of a list ("(1) wheat ...; (2) maize ...", "a) ...
     b) ..."): two or more, in order from 1 (or a), each opening its item. They count
-    no fields and name none."""
-    matches = list(_LIST_NUMBER.finditer(text))
-    order = [m.group("n") for m in matches]
-    if len(order) < 2 or order not in (
-        [str(i) for i in range(1, len(order) + 1)],
-        [chr(ord("a") + i) for i in range(len(order))],
+    no fields and name none. Marks in full brackets inside a sentence ("plots are (a)
+    Albion strawberries, ripe (b) ...") end the item before them: a colon before the
+    first, a semicolon before the others."""
+    bracketed = list(_BRACKETED_NUMBER.finditer(text))
+    if _in_order([m.group("n") for m in bracketed]) and any(
+        not re.search(r"[:;,.!?]\s*$", text[: m.start()]) and m.start() > 0 for m in bracketed
     ):
+        for at, match in reversed(list(enumerate(bracketed))):
+            before = text[: match.start()].rstrip()
+            joined = not before or before[-1] in ":;,.!?"
+            mark = "" if joined else (": " if at == 0 else "; ")
+            text = before + mark + (" " if joined and before else "") + text[match.end() :]
+        return text
+    matches = list(_LIST_NUMBER.finditer(text))
+    if not _in_order([m.group("n") for m in matches]):
         return text
     for match in reversed(matches):
         text = text[: match.start()] + text[match.end() :]

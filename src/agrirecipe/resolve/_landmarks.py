@@ -33,6 +33,11 @@ def held_by(
     container = holders[0]
     if named[-1] is not container and named[-1].clause == position - 1:
         return container, named[-1]
+    own = clauses[position].mentions
+    if len(own) == 1 and own[0] is not container and own[0].has_crop:
+        # "... and right beside the tunnels an orchard of Bing cherries": the field named
+        # right after the structure, in the same words
+        return container, own[0]
     following = clauses[position + 1] if position + 1 < len(clauses) else None
     if (
         following is not None

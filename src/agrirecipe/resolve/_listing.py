@@ -81,12 +81,25 @@ def listed_fields(
             break
         # fields named again ("the Comice") or plot words alone ("Beds and ridges run
         # NW-SE") name no new field
+        # ("Two blocks ..., Conference pears and the Kordia cherries": a crop said with
+        # "the" but named nowhere before is a member all the same)
         named.extend(
             m
             for m in clause.mentions
-            if (m.has_crop or _plot_of_a_crop(m)) and not definite_before_head(clause, m)
+            if (m.has_crop or _plot_of_a_crop(m))
+            and (
+                not definite_before_head(clause, m)
+                or (bool(strong_crops(m)) and not _named_before(clauses[: clause.index], m))
+            )
         )
     return named
+
+
+def _named_before(clauses: Sequence[Clause], mention: Mention) -> bool:
+    """Whether a field the clauses name (a mention, or a member folded into its plural)
+    grows a crop ``mention`` names."""
+    own = strong_crops(mention)
+    return any(strong_crops(m) & own for c in clauses for m in c.named)
 
 
 def _plot_of_a_crop(mention: Mention) -> bool:

@@ -122,6 +122,9 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
             # (not inside the bracket of measures after the last field: "... between two
             # Fuji blocks (rows 3.5 m, trees 1 m)" is the Fuji blocks')
             and bracketed_by(clauses, position) is None
+            # ("Albion strawberries, ripe; ... Beefsteak tomatoes, young plants": each field
+            # its own look, so the last words are the last field's)
+            and not _said_by_each(before, others)
             and (
                 any(_says_all_plants(i) for i in others)
                 # "... 8 rows. Trees in bloom.": a sentence about the plants in general
@@ -581,6 +584,17 @@ def _past_a_reference(
     ):
         return [subject]
     return targets
+
+
+def _said_by_each(before: Sequence[Mention], others: Sequence[Item]) -> bool:
+    """Whether the fields before the last already say, each, what ``others`` say (the
+    same attribute, its own value): words after the last field are then its own."""
+    wanted = {i.role for i in others if i.role in ("stage", "health")}
+    members = [r for m in before for r in (m.refinements or [m])]
+    earlier = list({id(m): m for m in members}.values())[:-1]
+    return (
+        bool(wanted) and bool(earlier) and all(wanted <= {i.role for i in m.items} for m in earlier)
+    )
 
 
 def _says_all_plants(item: Item) -> bool:

@@ -157,6 +157,19 @@ def _by_value(words: Sequence[Item], members: Sequence[Mention]) -> Mention | No
     return found[0] if len(found) == 1 else None
 
 
+def _by_look(words: Sequence[Item], members: Sequence[Mention]) -> Mention | None:
+    """The member "the blighted plot" (or "the healthy one") points at: the one member
+    said to look so (the same health or stage), when the others are not."""
+    said = [(w.role, w.data.get("value")) for w in words if w.role in ("health", "stage")]
+    if len(said) != 1 or said[0][1] is None:
+        return None
+    role, value = said[0]
+    found = [
+        m for m in members if any(i.role == role and i.data.get("value") == value for i in m.items)
+    ]
+    return found[0] if len(found) == 1 else None
+
+
 def member_said_again(clause: Clause, parent: Mention) -> Mention | None:
     """The member of ``parent``'s full list that ``clause`` names again by a measure
     ("the denser plot", "the 9 plants/m2 plot", "the 7") or by its place ("the first
@@ -178,8 +191,14 @@ def member_said_again(clause: Clause, parent: Mention) -> Mention | None:
         )
     ):
         return None
-    words = [i for i in clause.items if i.role not in ("separator", "filler", "plot")]
-    pointed = bool(clause.items) and clause.items[0].norm in ("the", "that", "this")
+    words = [
+        i
+        for i in clause.items
+        if i.role not in ("separator", "filler", "plot") and i.norm not in ("one", "ones")
+    ]
+    # ("put the blighted plot south of ...": a verb of the request before it)
+    leading = itertools.takewhile(lambda i: i.role == "filler", clause.items)
+    pointed = any(i.norm in ("the", "that", "this") for i in leading)
     if not pointed and not (words and words[0].role == "reference"):
         return None
     if words and words[0].role == "reference":
@@ -192,4 +211,6 @@ def member_said_again(clause: Clause, parent: Mention) -> Mention | None:
             at = len(members) // 2
         return members[at] if at is not None and at < len(members) and len(words) == 1 else None
     fillers = [i for i in clause.items if i.role == "filler"]
-    return _by_comparative(fillers, members) or _by_value(words, members)
+    return (
+        _by_comparative(fillers, members) or _by_look(words, members) or _by_value(words, members)
+    )

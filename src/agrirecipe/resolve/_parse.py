@@ -473,6 +473,22 @@ class PromptReader(FieldReading):
                 item.role = "filler"
                 item.data["short_for"] = True
                 continue
+            opened = next(
+                (at for at in range(index - 1, max(index - 3, 0) - 1, -1) if items[at].norm == "("),
+                None,
+            )
+            if (
+                following is not None
+                and following.norm in ("one", "ones")
+                and opened is not None
+                and opened >= 1
+                and items[opened - 1].role == "head"
+                and all(i.norm in ("the", "a") for i in items[opened + 1 : index])
+            ):
+                # "roma toms (the plum ones)": a kind said in brackets of the crop just named
+                item.role = "filler"
+                item.data["short_for"] = True
+                continue
             if any(
                 earlier.role == "head" and earlier.tokens[0].norm == item.norm
                 for earlier in items[:index]

@@ -135,6 +135,20 @@ def read_relations(
             landmarks.append((str(link.data.get("value")), landmark_at[position], named[-1], link))
             continue
         landmark = landmark_of(clause)
+        if (
+            landmark is not None
+            and clause.mentions
+            and (held := held_by(clauses, position, landmark)) is not None
+        ):
+            # "Centenary strawberries in the tunnels, ..., and right beside the tunnels an
+            # orchard of Bing cherries": placed by the field the structure holds
+            container, subject = held
+            relations.extend(
+                field_relations(
+                    str(link.data["value"]), subject, (container,), members, link, trace
+                )
+            )
+            continue
         if landmark is not None and clause.mentions:
             # "east of the yard there's 2 ha of apples": placed by the yard
             landmarks.append((str(link.data.get("value")), landmark, clause.mentions[0], link))

@@ -508,6 +508,31 @@ def read_sizes(items: list[Item]) -> list[Item]:
             pending_items.append(items[index])
             index += 1
             continue
+        if (
+            len(pending_side) == 1
+            and items[index].norm in ("by", "x", "×")
+            and index + 2 < len(items)
+            and (amount := _number_at(items, index + 1)) is not None
+            and (factor := _unit(items[index + 2], "length_unit")) is not None
+        ):
+            # "3 m wide x 120 m": after one side, the other side said bare
+            other = "length" if "width" in pending_side else "width"
+            said = items[index : index + 3]
+            pending_side[other] = _positive(amount * factor, " ".join(i.raw for i in said))
+            pending_items.extend(said)
+            out.append(
+                _size_item(
+                    pending_items,
+                    SizeIntent(
+                        width_m=pending_side["width"],
+                        length_m=pending_side["length"],
+                        text=" ".join(i.raw for i in pending_items),
+                    ),
+                )
+            )
+            pending_side, pending_items = {}, []
+            index += 3
+            continue
         out.append(items[index])
         index += 1
     if pending_side:

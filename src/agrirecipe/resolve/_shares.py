@@ -101,6 +101,14 @@ _IN_ONE_IN_THE_OTHER = re.compile(
 )
 
 
+#: "one has greening... the hamlin one": a look said of "one", then which one it is.
+_ONE_THEN_WHICH = re.compile(
+    r"(?:(?<=^)|(?<=[,;:]\s)|(?<=[,;:]))(?i:one)\s+"
+    r"(?P<look>(?i:has|is|got|with|looks|shows)\s+[^,;:.!?()]+?)\s*(?:\.{2,}|…|,|-+|–|—)\s*"
+    r"(?P<which>(?i:the|its|it's|its the|it's the)\s+(?!(?i:other)\b)[a-z][\w'-]*\s+(?i:one))\b"
+)
+
+
 def read_shares(text: str) -> str:
     """``text`` with the parts of a whole said plainly (see the module's words)."""
     # "..., one big orchard but 3 blocks pls": three blocks, in the one orchard
@@ -114,6 +122,10 @@ def read_shares(text: str) -> str:
     # "the northern half (10 ha) is orchard": the part is 10 ha of orchard
     text = _PART_SIZE_FIRST.sub(
         lambda m: f"{m.group('part')} {m.group('verb')} {m.group('size')} of ", text
+    )
+    # "one has greening... the hamlin one": the look of the one named after it
+    text = _ONE_THEN_WHICH.sub(
+        lambda m: f"{re.sub(r'(?i)^it.?s ', '', m.group('which'))} {m.group('look')}", text
     )
     # "9 plants/m2 in one and 7 plants/m2 in the other": each of the two, in turn
     text = _IN_ONE_IN_THE_OTHER.sub(r"one with \g<a> and the other with \g<b>", text)

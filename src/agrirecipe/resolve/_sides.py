@@ -74,9 +74,33 @@ _SIDE_IN_BRACKETS = re.compile(
 )
 
 
+#: "Over the hedge to the south the cherry trees ...": scenery crossed, then the side of
+#: it the field lies on, as in "south of the hedge the cherry trees ..."
+_OVER_THEN_SIDE = re.compile(
+    r"\b(?i:over|across|beyond|past)\s+(?P<the>(?i:the)\s+)(?P<landmark>[a-z][\w-]*"
+    r"(?:\s+[a-z][\w-]*)?)\s*,?\s+(?i:to\s+the)\s+(?P<side>(?i:north|south|east|west))\b"
+)
+
+
 def place_leading_directions(text: str) -> str:
-    """``text`` with "the east plot is X" written "X in the eastern block", and "X in the
-    north orchard" written "X in the north block" (where X is, not one more field)."""
+    """``text`` with "the east plot is X" written "X in the eastern block", "X in the
+    north orchard" written "X in the north block" (where X is, not one more field), and
+    "over the hedge to the south X" written "south of the hedge X"."""
+    # (only with the landmark's other side said too: "..., and north of the hedge the
+    # carrots"; "across the road to the south our Cabernet" alone places it against the
+    # field before)
+    text = _OVER_THEN_SIDE.sub(
+        lambda m: (
+            f"{m.group('side').lower()} of {m.group('the')}{m.group('landmark')}"
+            if re.search(
+                rf"\b(?:north|south|east|west)\s+of\s+the\s+{re.escape(m.group('landmark'))}\b",
+                text,
+                re.IGNORECASE,
+            )
+            else m.group(0)
+        ),
+        text,
+    )
     text = _SIDE_IN_BRACKETS.sub(lambda m: f"{m.group('side').lower()} {m.group('noun')}", text)
     for _ in range(_MAX_UNMARKED_SIDES):
         # (again after each, for the next side's part said without a mark)

@@ -772,14 +772,16 @@ def purpose_diseases(items: Sequence[Item], text: str) -> None:
     'Apple-counting scene', 'fruit-detection plots': a crop joined by a hyphen to what a
     robot does names the task, not a field."""
     for index, item in enumerate(items):
-        # "for a banana canopy-segmentation dataset", "for citrus canopy scans": the crop
+        # "for a banana canopy-segmentation dataset", "for citrus canopy scans", "training a
+        # grape counting model": the crop
         # (or kind of crop) a purpose is about
         if item.role not in ("head", "category") or index == 0:
             continue
         opener = index - 1
         if items[opener].norm in ("a", "an", "the", "our", "my") and opener:
             opener -= 1
-        if items[opener].norm != "for":
+        # ("we're training a grape-bunch counting CNN on it": what a model is trained for)
+        if items[opener].norm not in reader_words("purpose_openers"):
             continue
         for following in items[index + 1 : index + 5]:
             if _purpose(following):
