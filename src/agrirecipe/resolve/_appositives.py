@@ -10,6 +10,7 @@ and C, 3 lettuce plots" counts a list again.
 from __future__ import annotations
 
 from collections.abc import Sequence
+from typing import Any
 
 from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._lexicon import reader_words
@@ -85,6 +86,9 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
                 for c in clauses[previous.clause + 1 : mention.clause]
             )
             and previous.clause < mention.clause
+            # (not "a lettuce field on my left and ..., past the gate, the orchard": a plot
+            # that cannot hold the crop named before is a field of its own)
+            and not _holds_none_of(mention.plot, strong_crops(previous))
             # ("onions now, one field of about 6 acres"; "Navel oranges, a 2 ha block with
             # the fruit still small": the crop's own fruit)
             and all(
@@ -382,3 +386,10 @@ def _plants_in_a_plot(mention: Mention) -> bool:
         and any(i.norm in parts for i in before)
         and all(i.role in ("filler", "unknown", "cue", "health", "stage") for i in before)
     )
+
+
+def _holds_none_of(plot: dict[str, Any], crops: set[str]) -> bool:
+    """Whether a plot noun that names the crops it holds ("orchard") can hold none of
+    ``crops`` (a lettuce field is no orchard)."""
+    allowed = {*plot.get("options", ()), *plot.get("tolerates", ())}
+    return bool(plot.get("options")) and bool(crops) and not allowed & crops

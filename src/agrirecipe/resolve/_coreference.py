@@ -15,6 +15,7 @@ from collections.abc import Sequence
 
 from agrirecipe.resolve._decompose import Clause, Mention, MentionBuilder
 from agrirecipe.resolve._descriptions import said_with_a_verb
+from agrirecipe.resolve._lexicon import Item
 from agrirecipe.resolve._links import ARTICLES
 from agrirecipe.resolve._members import ORDINAL_WORDS
 from agrirecipe.resolve._placed_members import (
@@ -247,7 +248,14 @@ def merge_coreferences(
         if repeated and related_to(clauses, clause, repeated[0]):
             repeated = []  # "Valencia oranges next to Valencia oranges": two fields
         if repeated and _listed_again(clauses, clause, repeated[0]):
-            repeated = []  # "sweetcorn, popcorn and sweetcorn": a third member
+            # "sweetcorn, popcorn and sweetcorn": a third member (said with commas only
+            # too, "sweetcorn, popcorn, sweetcorn": the comma joins no kind named again)
+            repeated, bare = [], False
+        if bare and not repeated and (own_kind := strong_crops(mention)):
+            # "apples, pears, apples": a crop listed again in a plain list is another field
+            earlier = next((m for m in reversed(kept) if strong_crops(m) == own_kind), None)
+            if earlier is not None and _listed_again(clauses, clause, earlier):
+                bare = False
         placed_again: Mention | None = None
         if (
             not repeated
@@ -525,10 +533,22 @@ def _listed_again(clauses: Sequence[Clause], clause: Clause, earlier: Mention) -
     return all(
         len(c.mentions) == 1
         and c.mentions[0].count is None
+        # (each member only named: not "riesling & chardonnay, riesling on the left ...",
+        # "spuds & carrots & onions, spuds r flowering", "cherries 5 x 3 m over 2 ha")
+        and all(_naming_only(i) for i in c.items)
         and (c is run[0] or (c.link is not None and c.link.role in ("separator", "conjunction")))
-        and (c.link is None or c.link.norm not in (".", ";", ":", "!", "?") or c is run[0])
+        # ("butterhead (boston) lettuce": a name in brackets is the same kind again)
+        and (
+            c is run[0]
+            or (c.link is not None and c.link.norm not in (".", ";", ":", "!", "?", "(", ")"))
+        )
         for c in run
     )
+
+
+def _naming_only(item: Item) -> bool:
+    """Whether a word of a listed member only names it ("sweetcorn", "a", "plot")."""
+    return item.role in ("head", "weak_variety", "plot") or item.norm in ("a", "an", "the", "some")
 
 
 #: Where an ordinal word points among the fields named in order.

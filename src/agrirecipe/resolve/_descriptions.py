@@ -48,7 +48,9 @@ def dissolve_plant_parts(clauses: Sequence[Clause], crop_categories: dict[str, s
             continue
         others_before = any(c.mentions for c in clauses[:position])
         others_after = any(c.mentions for c in clauses[position + 1 :])
-        if not others_before and not (position == 0 and others_after):
+        # ("Ripeness classifier data, August, fruit ripening: three tomato plots ...": the
+        # first mention of the prompt, after words that name no field)
+        if not others_before and not others_after:
             continue
         mention = clause.mentions[0]
         definite = definite_before_head(clause, mention)  # "in the fruit", "the vines"

@@ -452,7 +452,11 @@ def drop_titles(
     if ends.link is not None and ends.link.norm == ":" and field.clause != ends.index:
         return mentions  # ("cabbage: 0.75 m rows, 64 rows. A Red Express plot ...")
     said = {i.role for c in clauses[title.clause : ends.index] for i in c.items}
-    if said & {"geometry", "size", "stage", "health", "season", "month", "cue", "relation"}:
+    looks = {"stage", "health", "season", "month", "cue"}
+    # ("Cherry harvest robot trial, late June, fruit ripe. Two blocks: Kordia ..., Regina
+    # ...": the look and time of every field listed after it)
+    listed = _lists_only(field, crops) and not said & {"geometry", "size", "relation"}
+    if said & {"geometry", "size", "relation", *looks} and not listed:
         return mentions  # ("cabbage: 0.75 m rows, ... A Red Express plot west of it")
     after_end = [c for c in clauses[ends.index :] if c.mentions]
     if not after_end or after_end[0].mentions[0] is not field:

@@ -65,6 +65,8 @@ _SUBJECT_VERBS = (
     r"(?:is|sits|lies|are|stands|goes|runs|borders|adjoins|touches|shows|has|have|looks|"
     r"gets|got|carries|suffers)"
 )
+# "A west of B", "plot 2 next to plot 1": a label placed by a relation word right after it
+_PLACING = r"(?:(?:north|south|east|west)(?:-?(?:east|west))?\s+of|next\s+to|beside|alongside)"
 # What a reference to a label follows: a relation word, or the label's noun.
 _BEFORE_REFERENCE = (
     r"(?:of|to|from|beside|besides|by|and|than|next to|alongside|between|put|place|with)"
@@ -225,7 +227,7 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
             r"(?:^|(?<=[.;,:]\s)|(?<=\b(?i:and)\s))"
             + (rf"(?:{noun})?" if _letter(label) else noun)
             + _said(label)
-            + rf"\b(?=\s+(?i:{_SUBJECT_VERBS})\b)"
+            + rf"\b(?=\s+(?:(?i:{_SUBJECT_VERBS})|{_CLOSE}(?i:{_PLACING}))\b)"
         )
         out, said = subject.subn("the " + phrase.replace("\\", "\\\\"), out)
         count += said

@@ -30,6 +30,7 @@ from agrirecipe.resolve._measures import (
     after_list_plots,
     bracketed_by,
     each_row_long,
+    heads_a_list,
     in_a_sentence_of_measures,
     opens_with_rows,
     parallel_fields,
@@ -261,6 +262,9 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
                 or any(i.role == "all" and i.norm in ("both", "each") for i in clause.items)
                 or opens_with_rows(clauses, position)
                 or shared_by_all_after(clauses, position)
+                # "rows east-west, 2.0 m between rows: Riesling ..., Pinot Noir ...": said
+                # before the list of fields a colon opens
+                or heads_a_list(clauses, position)
                 # "8 rows each at 1.5 m": "each" inside the measure itself
                 # ("20 rows, 50 m each": each row's length)
                 or any(

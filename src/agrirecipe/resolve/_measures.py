@@ -28,6 +28,7 @@ __all__ = [
     "bracketed_by",
     "drop_total_sizes",
     "each_row_long",
+    "heads_a_list",
     "in_a_sentence_of_measures",
     "opens_with_rows",
     "parallel_fields",
@@ -363,6 +364,34 @@ def bracketed_by(clauses: Sequence[Clause], position: int) -> Mention | None:
     return None
 
 
+def heads_a_list(clauses: Sequence[Clause], position: int) -> bool:
+    """Whether a measure clause begins a run of measures that a colon ends, before a list
+    of two or more fields ("rows east-west, 2.0 m between rows and 1.1 m between vines:
+    Riesling (20 rows) on the north side, Pinot Noir (16 rows) on the south side")."""
+    index = position
+    while index < len(clauses) and not clauses[index].mentions:
+        clause = clauses[index]
+        if index > position and (clause.link is None or not listing(clause.link)):
+            return False
+        if not clause.items or any(
+            i.role not in ("geometry", "filler", "all", "of") for i in clause.items
+        ):
+            return False
+        index += 1
+    if index >= len(clauses) or index == position:
+        return False
+    opening = clauses[index]
+    if opening.link is None or opening.link.norm != ":":
+        return False
+    listed = [opening]
+    for clause in clauses[index + 1 :]:
+        if clause.link is not None and clause.link.norm in SENTENCE_MARKS:
+            break
+        if clause.mentions and clause.link is not None and listing(clause.link):
+            listed.append(clause)
+    return len(listed) >= 2
+
+
 def shared_by_all_after(clauses: Sequence[Clause], position: int) -> bool:
     """Whether a measure clause begins a run of measures that ends with "in both" or "in
     each" ("rows 6 m apart and trees 3 m apart in both")."""
@@ -424,7 +453,7 @@ def _same_keys(word: Item) -> tuple[str, ...]:
         )
     # "same row count and spacing": how many rows, with or without their spacing
     # ("2 beds of the same width and row count": the rows on each bed)
-    if "count" in norm or "number of rows" in norm or "per bed" in norm:
+    if "count" in norm or "number of" in norm or "per bed" in norm:
         return ("rows", "rows_per_bed", *(_SPACINGS if "spacing" in norm else ()))
     if "width" in norm:  # "10 beds of the same width", "the same bed width"
         return ("bed_width_m",)

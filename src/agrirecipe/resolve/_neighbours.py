@@ -36,7 +36,8 @@ _NEIGHBOURING = re.compile(
     # ("Fuji and Golden Delicious, two adjacent blocks, each 30 rows ...": said after a comma)
     # ("Red Baron and Walla Walla onions as two neighbouring plots")
     r"(?:\b(?P<at>(?i:in|on|as))|(?P<comma>,))\s+(?P<count>(?:\w+\s+)?)"
-    r"(?i:neighbouring|neighboring|adjacent|adjoining)\s+"
+    # ("in three side-by-side strips": the adjective said hyphenated)
+    r"(?i:neighbouring|neighboring|adjacent|adjoining|side[- ]by[- ]side)\s+"
     # ("in adjacent 24-ridge plots", "in three adjacent 10 m x 40 m plots")
     r"(?P<size>\d+[- ](?i:ridge|row|bed|tree)\s+|"
     r"\d+(?:\.\d+)?\s*(?:m\s*)?(?:x|×|by)\s*\d+(?:\.\d+)?\s*m\s+)?"
@@ -47,7 +48,7 @@ _NEIGHBOURING = re.compile(
 
 _OPENING_NEIGHBOURS = re.compile(
     r"(?:^|(?<=[.;:!?]\s))(?P<count>(?i:two|three|four|2|3|4)\s+)"
-    r"(?i:neighbouring|neighboring|adjacent|adjoining)\s+"
+    r"(?i:neighbouring|neighboring|adjacent|adjoining|side[- ]by[- ]side)\s+"
     r"(?P<plots>(?i:plots|fields|blocks|strips|beds|patches|paddocks))\b"
     r"(?P<of>\s+(?i:of)\s+[A-Za-z][\w'’ -]*?)?(?=\s*(?:[,:;.]|$))"
 )

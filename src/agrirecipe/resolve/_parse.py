@@ -16,7 +16,8 @@ step  pass                                        module (data)
 1     texting forms become words; value lists     ``_casual`` (casual.yaml),
       and counts said once; labels, members       ``_lists`` (value_lists.yaml),
       named again, walks and sides said in        ``_labels``, ``_sides``,
-      other words; plots said to touch            ``_members``, ``_neighbours``
+      other words; plots said to touch; counts    ``_members``, ``_neighbours``,
+      of a crop's rows or plants                  ``_counted_crops``
 2     words, numbers and marks                    ``_lexicon.tokenize``
 3     stated row geometry (and measures no        ``_geometry`` (geometry.yaml)
       recipe holds, as not used)
@@ -24,12 +25,13 @@ step  pass                                        module (data)
 5     phrases and their senses; visual cues,      ``_lexicon`` (vocabulary.yaml,
       scenery and purpose words                   cues.yaml, scenery.yaml, ...)
 6     typos and unseen names                      the strategy's reader
-7     each phrase's role; a season, stage or      ``_scan``, ``_retractions``
-      health taken back; latitudes; sizes
-7b    what single words are in their place        ``_words``, ``_looks``,
-      (counts that are not, labels, negations,    ``_plot_words``
-      colours and looks, plot words of no field)  (vocabulary.yaml
-                                                  ``reader_words``)
+7     each phrase's role; a season, stage or      ``_scan``, ``_retractions``,
+      health taken back; purposes; latitudes,     ``_purposes``, ``_sizes``
+      heights and sizes
+7b    what single words are in their place        ``_words``, ``_numbers``,
+      (numbers that count no fields, labels,      ``_looks``, ``_plot_words``
+      negations, colours and looks, plot words    (vocabulary.yaml
+      of no field)                                ``reader_words``)
 8     scenery-only prompts, unknown crops         ``PromptReader._reject_*``
 9     clauses and mentions                        ``_decompose``
 10    weak variety names; mentions taken back    ``_weak_varieties``,
@@ -47,7 +49,8 @@ step  pass                                        module (data)
       (stated, else visual cues), sizes, rows
 13    relations between fields (words between     ``_relations``, ``_links``;
       mentions; rows and orders; directions       ``_rows``; ``_placements``;
-      said around a field; scenery); zone order   ``_landmarks``; ``_zones``
+      said around a field; scenery, and           ``_landmarks``,
+      relations said of scenery); zone order      ``_scenery_links``; ``_zones``
 ====  ==========================================  ===============================
 """
 
@@ -60,6 +63,7 @@ from agrirecipe._errors import PromptError, UnknownCropError
 from agrirecipe.resolve._appositives import merge_appositive_plots
 from agrirecipe.resolve._casual import count_said_after_crop, end_reciprocals, expand_casual
 from agrirecipe.resolve._coreference import merge_coreferences
+from agrirecipe.resolve._counted_crops import hoist_counted_crops
 from agrirecipe.resolve._decompose import (
     Clause,
     Mention,
@@ -73,7 +77,7 @@ from agrirecipe.resolve._fields import (
     describe_intent,
     give_respectively,
 )
-from agrirecipe.resolve._geometry import find_geometry, hoist_counted_crops
+from agrirecipe.resolve._geometry import find_geometry
 from agrirecipe.resolve._headings import (
     drop_joint_headings,
     drop_list_headings,
@@ -123,6 +127,7 @@ from agrirecipe.resolve._neighbours import (
     place_sides,
 )
 from agrirecipe.resolve._placements import predicate_of_the_placed
+from agrirecipe.resolve._purposes import purpose_diseases
 from agrirecipe.resolve._refinements import apply_refinements
 from agrirecipe.resolve._relations import read_relations
 from agrirecipe.resolve._retractions import (
@@ -132,13 +137,14 @@ from agrirecipe.resolve._retractions import (
     drop_free_choices,
     drop_negated,
 )
-from agrirecipe.resolve._scan import assign_roles, read_heights, read_latitude, read_sizes
+from agrirecipe.resolve._scan import assign_roles
 from agrirecipe.resolve._sides import (
     place_compass_members,
     place_leading_directions,
     place_trailing_directions,
     place_walked_orders,
 )
+from agrirecipe.resolve._sizes import read_heights, read_latitude, read_sizes
 from agrirecipe.resolve._structure import (
     apply_each_side,
     apply_plural_counts,
@@ -161,7 +167,7 @@ from agrirecipe.resolve._summaries import (
     spread_counted_totals,
 )
 from agrirecipe.resolve._weak_varieties import promote_weak_varieties
-from agrirecipe.resolve._words import purpose_diseases, read_words
+from agrirecipe.resolve._words import read_words
 from agrirecipe.resolve._zones import (
     complete_orders,
     drop_placed_neighbours,

@@ -1,8 +1,9 @@
 """``resolve()``: prompt -> :class:`SceneIntent` (a strategy) -> validated :class:`SceneRecipe`.
 
 After the strategy has read the prompt, the same stages run for every
-strategy: *validate* the intent against the hierarchy, *choose* crops for
-generic fields (seeded, honouring categories, distinctness and season),
+strategy: *validate* the intent against the hierarchy (``_validate``), *choose*
+crops for generic fields (``_choose``: seeded, honouring categories, distinctness
+and season),
 *enrich* unstated attributes from the knowledge base (recorded as inferred;
 implausible stated combinations kept and reported as warnings), *lay out* the
 fields (:func:`agrirecipe.layout.pack_fields`) and *build* the recipe.
@@ -12,7 +13,6 @@ from __future__ import annotations
 
 import functools
 import math
-import random
 import re
 from collections import Counter
 from collections.abc import Callable, Sequence
@@ -22,7 +22,7 @@ from typing import TYPE_CHECKING, TypeVar
 
 from pydantic import ValidationError
 
-from agrirecipe._errors import ConfigurationError, PromptError, UnknownCropError
+from agrirecipe._errors import ConfigurationError, PromptError
 from agrirecipe.enrich import (
     DEFAULT_LATITUDE_DEG,
     build_environment,
@@ -42,7 +42,7 @@ from agrirecipe.recipe import (
     Season,
     Stage,
 )
-from agrirecipe.resolve._casual import expand_casual
+from agrirecipe.resolve._choose import choose_crops, distinct_varieties, scene_season_of
 from agrirecipe.resolve._explain import Explanation
 from agrirecipe.resolve._intent import (
     FieldIntent,
@@ -51,9 +51,9 @@ from agrirecipe.resolve._intent import (
     SceneIntent,
     TraceStep,
 )
-from agrirecipe.resolve._lexicon import tokenize, vocabulary
-from agrirecipe.resolve._lists import spread_value_lists
+from agrirecipe.resolve._lexicon import vocabulary
 from agrirecipe.resolve._registry import get_resolver
+from agrirecipe.resolve._validate import validate_intent
 
 if TYPE_CHECKING:
     from agrirecipe.recipe import FieldGeometry
@@ -64,7 +64,6 @@ __all__ = ["MAX_PROMPT_CHARS", "Resolution", "build_recipe", "resolve"]
 MAX_PROMPT_CHARS = 4000
 
 _T = TypeVar("_T")
-_SEASONS: tuple[Season, ...] = ("Spring", "Summer", "Fall", "Winter")
 # Nouns that name a kind of planting; a generic field keeps them ("an orchard").
 _KIND_NOUNS = frozenset({"orchard", "vineyard", "grove", "plantation", "garden"})
 _NOUN_BY_FORM = {"tree": "orchard", "vine": "vineyard"}
@@ -242,10 +241,10 @@ def build_recipe(
 ) -> tuple[SceneRecipe, list[TraceStep]]:
     """Validate, choose, enrich, lay out and build: the stages after a strategy."""
     steps: list[TraceStep] = []
-    _validate(intent, context)
-    crops = _choose_crops(intent, context, steps)
-    varieties = _distinct_varieties(intent, crops, context, steps)
-    scene_season = _scene_season(intent, crops, context)
+    validate_intent(intent, context)
+    crops = choose_crops(intent, context, steps)
+    varieties = distinct_varieties(intent, crops, context, steps)
+    scene_season = scene_season_of(intent, crops, context)
     plans = [
         _enrich(intent, index, crops[index], varieties[index], scene_season, context, steps)
         for index in range(len(intent.fields))
@@ -375,220 +374,6 @@ def _first_message(exc: ValidationError) -> str:
     if sep and re.fullmatch(r"[\w\[\].]+", path):
         message = rest
     return message
-
-
-def _words(text: str) -> set[str]:
-    return {token.norm for token in tokenize(text) if token.norm.isalnum()}
-
-
-def _validate(intent: SceneIntent, context: ResolveContext) -> None:
-    """Catch intents that name what the hierarchy does not hold (any strategy can err)."""
-    hierarchy = context.hierarchy
-    # "the": references to labelled fields are spelled "the <crop>" ("north of A");
-    # "in": "12 maize rows" is read as "maize in 12 rows"; "plants": "150 Pink Lady" as
-    # "150 Pink Lady plants"; "one", "other": "the north block has ..., the south block
-    # ..." is read as "one ..., the other ..."; "at", "rows", "long": "8 rows x 76 cm x
-    # 30 m" as "8 rows at 76 cm, rows 30 m long"; "plot": "the polytunnel of tomatoes" as
-    # "the plot of tomatoes"; "them": "between the two a strip of ..." as "between them";
-    # "two", "fields", "each": "cereals on both sides of the track" as "cereals in two
-    # fields, one each side of the track"; "on": "Left: corn" as "On the left, corn";
-    # "end": "around the farmhouse: wheat to the north of it" as "wheat at the north end";
-    # "first" ... "fourth": "strip 2 south of strip 1" as "the second south of the first";
-    # "it": "a maize plot to its east" as "a maize plot east of it"; "of": "The western
-    # plot has ..." as "one of them, west of the other, has ..."
-    expanded = expand_casual(intent.prompt)
-    prompt_words = (
-        _words(intent.prompt)
-        | _words(expanded)
-        | _words(spread_value_lists(expanded))
-        | {"the", "in", "plants", "one", "other", "at", "rows", "long", "plot", "them"}
-        | {"two", "fields", "each", "on", "end", "first", "second", "third", "fourth", "it", "of"}
-    )
-    for index, field in enumerate(intent.fields):
-        path = f"fields[{index}]"
-        # Intent validation (the paper's stage): every field is traceable to the words
-        # that asked for it; a field the prompt never asked for is not built.
-        asked = _words(field.text)
-        if not asked or not asked <= prompt_words:
-            raise PromptError(
-                f"field {index + 1} ({field.text!r}) is not traceable to the words of the "
-                f"prompt; the {intent.resolver or 'resolver'} strategy made a field nobody "
-                "asked for",
-                stage="validate",
-                path=path,
-                hint="rephrase the request, or try another resolver",
-            )
-        if field.crop is not None and field.crop not in hierarchy.crops:
-            from rapidfuzz import process
-
-            nearest = [
-                str(m[0]) for m in process.extract(field.crop, list(hierarchy.crops), limit=3)
-            ]
-            raise UnknownCropError(
-                f"{field.crop!r} is not a crop of the asset hierarchy",
-                requested=field.crop,
-                nearest=nearest,
-                path=path,
-            )
-        if field.variety is not None and field.crop is not None:
-            crop = hierarchy.crop(field.crop)
-            if field.variety not in {v.name for v in crop.varieties}:
-                raise UnknownCropError(
-                    f"{field.variety!r} is not one of the {field.crop} varieties of the hierarchy",
-                    requested=f"{field.variety} {field.crop}",
-                    nearest=[v.name for v in crop.varieties][:3],
-                    path=path,
-                )
-        if field.category is not None and field.category not in hierarchy.categories:
-            raise PromptError(
-                f"{field.category!r} is not a category of the asset hierarchy",
-                stage="validate",
-                path=path,
-                hint="categories: " + ", ".join(hierarchy.categories),
-            )
-        unknown = [c for c in field.crop_options if c not in hierarchy.crops]
-        if unknown:
-            raise PromptError(
-                f"crop options {unknown} are not in the asset hierarchy",
-                stage="validate",
-                path=path,
-            )
-
-
-def _season_hint(intent: SceneIntent, field: FieldIntent) -> Season | None:
-    if field.season is not None:
-        return field.season
-    if intent.season is not None:
-        return intent.season
-    stated = [f.season for f in intent.fields if f.season is not None]
-    return Counter(stated).most_common(1)[0][0] if stated else None
-
-
-def _choose_crops(
-    intent: SceneIntent, context: ResolveContext, steps: list[TraceStep]
-) -> list[str]:
-    """A crop for every field: the named one, or a seeded choice for a generic field."""
-    rng = random.Random(context.seed)
-    hierarchy, knowledge = context.hierarchy, context.knowledge
-    chosen: list[str | None] = [f.crop for f in intent.fields]
-    for index, field in enumerate(intent.fields):
-        if field.crop is not None:
-            continue
-        if field.crop_options:
-            pool = list(field.crop_options)
-        elif field.category is not None:
-            pool = list(hierarchy.categories[field.category].crops)
-        else:
-            pool = list(hierarchy.crops)
-        if field.distinct_group is not None:
-            taken = {
-                chosen[j]
-                for j, other in enumerate(intent.fields)
-                if j != index and other.distinct_group == field.distinct_group
-            }
-            pool = [crop for crop in pool if crop not in taken]
-            if not pool:
-                size = sum(1 for f in intent.fields if f.distinct_group == field.distinct_group)
-                kind = field.category.lower() if field.category else "crops"
-                raise PromptError(
-                    f"asked for {size} different {kind}, but the asset hierarchy does not "
-                    "hold that many",
-                    stage="resolve",
-                    path=f"fields[{index}]",
-                    hint="ask for fewer different crops",
-                )
-        season = _season_hint(intent, field)
-        preferred = pool
-        if season is not None:
-            preferred = [
-                crop
-                for crop in pool
-                if (stages := knowledge.plausible_stages(crop, season))
-                and (field.stage is None or field.stage in stages)
-            ] or pool
-        unused = [crop for crop in preferred if crop not in chosen] or preferred
-        crop = rng.choice(unused)
-        chosen[index] = crop
-        steps.append(
-            TraceStep(
-                stage="choose",
-                subject=field.text,
-                detail=f"generic field: chose {crop} from {', '.join(unused)} "
-                f"(seed {context.seed}"
-                + (f"; crops plausible in {season} first)" if season else ")"),
-            )
-        )
-    return [crop for crop in chosen if crop is not None]
-
-
-def _distinct_varieties(
-    intent: SceneIntent, crops: Sequence[str], context: ResolveContext, steps: list[TraceStep]
-) -> list[str | None]:
-    """Different varieties for "different" fields of one named crop ("two different apple
-    orchards"): the default variety first, then seeded choices among those not yet used.
-
-    Returns a variety per field, None where the field's own or default variety stands.
-    """
-    rng = random.Random(context.seed)
-    chosen: list[str | None] = [None] * len(intent.fields)
-    groups: dict[tuple[int, str], list[int]] = {}
-    for index, field in enumerate(intent.fields):
-        if field.distinct_group is not None:
-            groups.setdefault((field.distinct_group, crops[index]), []).append(index)
-    for (_, crop), members in groups.items():
-        if len(members) < 2:
-            continue
-        used = {intent.fields[i].variety for i in members if intent.fields[i].variety}
-        names = [v.name for v in context.hierarchy.crop(crop).varieties]
-        default = context.knowledge.default_variety(crop)
-        for index in members:
-            if intent.fields[index].variety is not None:
-                continue
-            unused = [v for v in names if v not in used]
-            if not unused:
-                break  # more fields than varieties: the rest keep the default
-            variety = default if default in unused else rng.choice(unused)
-            used.add(variety)
-            chosen[index] = variety
-            steps.append(
-                TraceStep(
-                    stage="choose",
-                    subject=intent.fields[index].text,
-                    detail=f"different {crop} fields: variety {variety} "
-                    f"(not yet used of {', '.join(names)}; seed {context.seed})",
-                )
-            )
-    return chosen
-
-
-def _scene_season(
-    intent: SceneIntent, crops: Sequence[str], context: ResolveContext
-) -> tuple[Season, str]:
-    """The season of fields that state none: a scene shows one moment.
-
-    The season stated for other fields; else the season in which the most stated
-    stages are plausible (the first such field's typical season on a tie); else Summer.
-    """
-    stated = [f.season for f in intent.fields if f.season is not None]
-    if stated:
-        return Counter(stated).most_common(1)[0][0], "as the other fields"
-    knowledge = context.knowledge
-    staged = [
-        (crops[i], f.variety or knowledge.default_variety(crops[i]), f.stage)
-        for i, f in enumerate(intent.fields)
-        if f.stage is not None
-    ]
-    if not staged:
-        return "Summer", "scene default"
-    crop, variety, stage = staged[0]
-    typical = knowledge.typical_season(crop, stage, variety)
-    order: list[Season] = [typical] + [s for s in _SEASONS if s != typical]
-
-    def fits(season: Season) -> int:
-        return sum(s in knowledge.plausible_stages(c, season, v) for c, v, s in staged)
-
-    best = max(order, key=fits)  # max keeps the first of equals: the typical season
-    return best, f"typical for the stated stage{'s' if len(staged) > 1 else ''}"
 
 
 def _enrich(

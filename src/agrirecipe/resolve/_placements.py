@@ -199,14 +199,16 @@ def fronted_pair(clauses: Sequence[Clause], position: int) -> tuple[Mention, Men
             # described
             after += 1
         following = clauses[after] if after < len(clauses) else None
+        # ("two plots: wheat, and south of the wheat, maize": a member of a plural said
+        # after the relation, as its subject)
         if (
             following is None
             or following.link is None
             or following.link.norm not in (":", ",")
-            or not following.mentions
+            or not following.named
         ):
             return None
-        subject, target = following.mentions[0], clause.mentions[0]
+        subject, target = following.named[0], clause.mentions[0]
     return None if subject is target else (subject, target)
 
 

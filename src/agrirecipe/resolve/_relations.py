@@ -8,8 +8,9 @@ makes a row. Plural mentions expand to their fields.
 
 :func:`read_relations` is the one place the relation readers are called, in order:
 fields in rows, orders and around a middle (``_rows``), fields placed by a direction
-said around them (``_placements``), fields placed by scenery (``_landmarks``); the
-words that link fields are in ``_links``.
+said around them (``_placements``), fields placed by scenery (``_landmarks``), relation
+words said of scenery and not of fields (``_scenery_links``); the words that link
+fields are in ``_links``.
 """
 
 from __future__ import annotations
@@ -21,7 +22,7 @@ from agrirecipe.recipe import RelationKind
 from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._intent import RelationIntent, TraceStep
 from agrirecipe.resolve._landmarks import across_landmarks, held_by, landmark_of
-from agrirecipe.resolve._lexicon import Item, reader_words
+from agrirecipe.resolve._lexicon import Item
 from agrirecipe.resolve._links import (
     ARTICLES,
     OPPOSITE,
@@ -29,7 +30,6 @@ from agrirecipe.resolve._links import (
     THE_TWO,
     coordinated,
     field_relations,
-    following_list,
     last_named,
     link_norm,
     listed_after,
@@ -57,6 +57,11 @@ from agrirecipe.resolve._rows import (
     surrounded,
     then_chain,
 )
+from agrirecipe.resolve._scenery_links import (
+    pronoun_of_scenery,
+    scenery_in_the_middle,
+    scenery_placed_by_a_field,
+)
 from agrirecipe.resolve._structure import strong_crops
 
 __all__ = ["read_relations"]
@@ -65,21 +70,6 @@ __all__ = ["read_relations"]
 #: Words of a clause that places a field by scenery alone ("the Royal Gala block north of
 #: the packhouse is ripe": the look goes on describing the block).
 _SAID_OF_A_LANDMARK = frozenset({"filler", "non_agricultural", "stage", "health", "season", "cue"})
-
-
-def _pronoun_past_an_aside(clauses: Sequence[Clause], position: int) -> bool:
-    """Whether clause ``position`` places against a pronoun ("right next to it") right
-    after scenery said on the way ("across a narrow ditch"), with a field after it."""
-    clause, previous = clauses[position], clauses[position - 1]
-    following = clauses[position + 1] if position + 1 < len(clauses) else None
-    return (
-        [i.norm for i in clause.items] in (["it"], ["them"])
-        and bool(previous.items)
-        and previous.items[0].norm in reader_words("placed_past")
-        and following is not None
-        and bool(following.mentions)
-        and any(c.mentions for c in clauses[: position - 1])
-    )
 
 
 def read_relations(
@@ -191,38 +181,7 @@ def read_relations(
                 )
             )
             continue
-        if (
-            link.role in ("trailer", "relation")
-            and (
-                not clause.mentions
-                # "..., with a tractor parked by the Bintje", "the sprayer boom folded up by
-                # the first field": scenery placed by a field named before
-                or (
-                    link.role == "relation"
-                    and all(
-                        any(m is n for c in clauses[:position] for n in c.named)
-                        for m in clause.mentions
-                    )
-                )
-            )
-            and position
-            and not clauses[position - 1].mentions
-            and any(i.scenery for i in clauses[position - 1].items)
-            # (not "bananas along the stream to the east of them": scenery placed itself)
-            and _not_placed(clauses[position - 1])
-            # (nor "a maize field ... and, across a narrow ditch right next to it, carrots":
-            # the scenery said on the way, "it" the field)
-            and not _pronoun_past_an_aside(clauses, position)
-            # (not "in two polytunnels next to each other: tunnel 1 is Elsanta, ...")
-            and not (link.role == "trailer" and len(listed_after(clauses, position)) >= 2)
-            # (nor "From the road heading north you cross a hedge, then the strawberry
-            # beds, then the apple orchard": the fields in a row, from the road)
-            and not (
-                link.role == "trailer"
-                and str(link.data.get("value")) in TOWARDS
-                and len(following_list(clauses, position)) >= 2
-            )
-        ):
+        if scenery_placed_by_a_field(clauses, position):
             # "..., with the village road running along the east side", "Rain covers
             # rolled up above both": the scenery is placed, not a field
             trace.append(
@@ -255,34 +214,9 @@ def read_relations(
             # "cherry tomatoes in between the two", "between both"
             or the_two
         )
-        if (
-            pronoun
-            and not the_two
-            and link.role == "relation"  # (not "From north to south it goes orchard, ...")
-            and not any(
-                i.role in ("head", "plot", "category") for c in clauses[:position] for i in c.items
-            )
-        ):
-            # "A ditch runs through the middle. East of it is a field of sweetcorn": no
-            # field was named before the pronoun, so it points at scenery
-            trace.append(
-                TraceStep(stage="decompose", subject=link.raw, detail="said of scenery: not used")
-            )
-            continue
-        if (
-            pronoun
-            and not clause.mentions
-            and position
-            and not clauses[position - 1].named
-            and any(i.scenery for i in clauses[position - 1].items)
-            # (not "bananas along the stream to the east of them": a placement goes on)
-            and (
-                (placed_by := clauses[position - 1].link) is None
-                or placed_by.role not in ("relation", "trailer", "between")
-            )
-            and not _pronoun_past_an_aside(clauses, position)
-        ):
-            # "..., kids in yellow hats weeding between them": scenery placed, no field
+        if pronoun and pronoun_of_scenery(clauses, position, the_two=the_two):
+            # "A ditch runs through the middle. East of it is a field of sweetcorn", "...,
+            # kids in yellow hats weeding between them": scenery placed, no field
             trace.append(
                 TraceStep(stage="decompose", subject=link.raw, detail="said of scenery: not used")
             )
@@ -380,13 +314,7 @@ def read_relations(
         if listed is not None:
             relations.extend(field_relations("between", listed[0], listed[1], members, link, trace))
             continue
-        if (
-            link.role == "trailer"
-            and link.data.get("value") == "middle"
-            and position
-            and not clauses[position - 1].named
-            and any(i.scenery for i in clauses[position - 1].items)
-        ):
+        if scenery_in_the_middle(clauses, position):
             # "There's an irrigation reel in the middle of the lettuce": scenery placed
             trace.append(
                 TraceStep(stage="decompose", subject=link.raw, detail="said of scenery: not used")
@@ -538,11 +466,6 @@ def _the_first(clause: Clause, before: Sequence[Mention]) -> Mention | None:
     if not before or not (crops := strong_crops(before[-1])):
         return None
     return next((m for m in before[:-1] if strong_crops(m) == crops), None)
-
-
-def _not_placed(clause: Clause) -> bool:
-    """Whether a clause is not itself placed by a relation word before it."""
-    return clause.link is None or clause.link.role not in ("relation", "trailer", "between")
 
 
 #: What "everything" a field is placed against may be said as ("south of all the rest").
@@ -702,6 +625,16 @@ def _both_said(clauses: Sequence[Clause], position: int) -> bool:
     while index > 0 and not clauses[index].mentions and not clauses[index].items:
         index -= 1  # ("Lollo and Bibb lettuce in adjacent beds, both west of ...")
     joined = clauses[index]
+    if (
+        # "Onions and carrots both sit south of the wheat": "both" said with the second
+        len(previous.mentions) == 1
+        and previous.link is not None
+        and previous.link.role == "conjunction"
+        and "both" in words[1:]
+        and all(i.role in ("head", "plot", "all", "unknown", "filler") for i in previous.items)
+        and bool(clauses[position - 2].mentions)
+    ):
+        return True
     return (
         not previous.mentions
         and words[:1] == ["both"]

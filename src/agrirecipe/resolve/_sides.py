@@ -256,6 +256,15 @@ def place_trailing_directions(text: str) -> str:
             text,
         )
     matches = [m for m in _TRAILING.finditer(text) if m.group("word").lower() not in _NOT_PLACED]
+    if (
+        len(matches) == 1
+        and text[: matches[0].start()].rstrip().endswith(",")
+        and not text[matches[0].end() :].strip(" .!")
+    ):
+        # "hamlin & valencia oranges, ripe, jan, valencia east": one field named again
+        # last, with its side
+        start, end = matches[0].span("side")
+        return f"{text[:start]}to the {matches[0].group('side')}{text[end:]}"
     if len(matches) < 2 or len({m.group("side").lower() for m in matches}) < 2:
         return text
     for match in reversed(matches):

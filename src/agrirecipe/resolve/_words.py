@@ -10,7 +10,8 @@ each decides what a word is in its place, where the lexicon alone cannot:
     year, one plant every so far, a count of scenery or   "one carrot every 2 cm",
     of fruit: not a count of fields                       "plan for 2027"
 1a  "one" after "this" or "that" counts nothing, and      "Two fields in this one",
-    an article before a farm is the farm's                "A mixed farm with ..."
+    an article before a farm is the farm's; a farm        "A mixed farm with ...",
+    word said as a verb is none                           "holding a GNSS pole"
 1b  "twin" of no rows; a compound such as "Crop-row" or   "Citrus twin"
     "Pear-vs-apple"
 2   a crop word joined to a colour, or a colour crop      "olive-green patches",
@@ -37,6 +38,7 @@ each decides what a word is in its place, where the lexicon alone cannot:
 7   a plot word inside an unknown phrase, a verb, a       "compare planting systems",
     pasture or a part where something shows is no field   "ready to strip", "sheep in
     (``_plot_words``)                                     the paddock"
+7a  a place said right after scenery is the scenery's     "my boots in the foreground"
 8   a sentence about the rows or beds of every field      "Ridges and beds all 80 m"
 9   a number after one plot or tunnel names it            "in plot 2", "tunnel two has"
 10  a size followed by "in total" is the farm's           "40 ha in total"
@@ -44,7 +46,9 @@ each decides what a word is in its place, where the lexicon alone cannot:
 ==  ====================================================  ===========================
 
 The words each pass looks for are data (``reader_words`` in vocabulary.yaml). The
-passes about looks (2, 2a, 2c, 3, 4, 4a) live in ``_looks``.
+passes about numbers (1) live in ``_numbers``, those about looks (2, 2a, 2c, 3, 4,
+4a) in ``_looks``; purposes ("a blight detection dataset") are read after the roles,
+in ``_purposes``.
 """
 
 from __future__ import annotations
@@ -65,10 +69,11 @@ from agrirecipe.resolve._looks import (
     ripening_colours,
     weather_on_plants,
 )
+from agrirecipe.resolve._numbers import is_structure, numbers_that_count_no_fields
 from agrirecipe.resolve._plot_words import plot_words_of_other_things
 from agrirecipe.resolve._structure import descriptive_words
 
-__all__ = ["SENTENCE_MARKS", "purpose_diseases", "read_words", "reader_words"]
+__all__ = ["SENTENCE_MARKS", "read_words", "reader_words"]
 
 #: Marks that end a sentence.
 SENTENCE_MARKS = frozenset({".", "!", "?", ";"})
@@ -76,7 +81,7 @@ SENTENCE_MARKS = frozenset({".", "!", "?", ";"})
 
 def read_words(items: Sequence[Item], text: str) -> None:
     """Run the word passes, in order, over a prompt's items (see the module's table)."""
-    _measures_are_not_counts(items)
+    numbers_that_count_no_fields(items)
     _this_one(items)
     _article_of_a_container(items)
     _twins_and_compounds(items, text)
@@ -96,218 +101,11 @@ def read_words(items: Sequence[Item], text: str) -> None:
     _every_plot(items)
     _plots_of_a_list(items)
     plot_words_of_other_things(items)
+    _places_of_scenery(items)
     _row_words_of_every_field(items)
     _plot_numbers_are_names(items)
     _totals_are_not_sizes(items)
     _respective_sizes(items)
-
-
-#: Words before and after a number that make it a year ("plan for 2027", "2026 season").
-_BEFORE_A_YEAR = frozenset({"in", "for", "since", "from", "until", "plan", "year"})
-_AFTER_A_YEAR = frozenset({"season", "seasons", "crop", "harvest", "plan", "plans", "growing"})
-
-#: Words before a month that make it a time to come ("not ready until November").
-#: Parts of a field: "in one corner of the carrots" names no field of its own.
-_PARTS = frozenset({"corner", "end", "edge", "side", "part"})
-_BEFORE_A_TIME_TO_COME = frozenset({"until", "till", "til", "by", "before"})
-
-#: Units of time after a number that make it an age or a time ("planted ten days ago").
-_UNITS_OF_TIME = frozenset(
-    {"day", "days", "week", "weeks", "wks", "month", "months", "year", "years", "yr", "yrs"}
-    | {"hour", "hours", "hrs", "minute", "minutes", "mins", "fortnight", "fortnights"}
-)
-
-#: Scenery groups whose words name what a request is for ("a blight detection dataset").
-_PURPOSES = frozenset({"robots", "purposes"})
-
-
-def _measures_are_not_counts(items: Sequence[Item]) -> None:
-    """ "3.5 m in the pears": a number with a length unit is a measure, never a count of
-    fields (what no size or geometry pattern read stays a filler)."""
-    for item, following in itertools.pairwise(items):
-        if item.role == "number" and following.role == "length_unit":
-            item.role = "filler"
-            item.data["measure"] = True
-    for index in range(1, len(items)):
-        before, item = items[index - 1], items[index]
-        after = items[index + 1] if index + 1 < len(items) else None
-        if (
-            item.role == "number"
-            and item.raw.isdigit()
-            and before.role == "unknown"
-            and before.raw[:1].isupper()
-            and (after is None or after.role not in ("plot", "head", "weak_variety", "category"))
-        ):
-            item.role = "filler"  # "on Gisela 6": a rootstock's or machine's name
-    # "Carrot plan for 2027", "the 2026 season": a year, no count of fields
-    for index, item in enumerate(items):
-        word_before = items[index - 1].norm if index else ""
-        word_after = items[index + 1].norm if index + 1 < len(items) else ""
-        if (
-            item.role == "number"
-            and item.raw.isdigit()
-            and len(item.raw) == 4
-            and 1900 <= int(item.raw) <= 2100
-            and (word_before in _BEFORE_A_YEAR or word_after in _AFTER_A_YEAR)
-        ):
-            item.role = "filler"
-            item.data["year"] = True
-        # "won't be ready until November", "picked by October": a time to come, not when
-        # the scene is
-        if item.role == "month" and word_before in _BEFORE_A_TIME_TO_COME:
-            item.role = "filler"
-            item.data["time"] = True
-        # "2 wheat fields w/ a combine in 1 of em": one of the fields named, no count
-        word_after_next = items[index + 2].norm if index + 2 < len(items) else ""
-        if (
-            item.role == "number"
-            and word_before in ("in", "on", "at", "across")
-            and word_after == "of"
-            and word_after_next in ("them", "em", "those", "these")
-        ):
-            item.role = "filler"
-        # "In one corner of the carrots", "at one end of the wheat": a part of a field
-        # named, no count of fields
-        if (
-            item.role == "number"
-            and item.norm in ("one", "a")
-            and word_after in _PARTS
-            and word_after_next == "of"
-        ):
-            item.role = "filler"
-        # "planted ten days ago", "10 year old trees": an age or a time, no count of fields
-        if item.role == "number" and word_after in _UNITS_OF_TIME:
-            item.role = "filler"
-            item.data["time"] = True
-    # "just a couple of leaves per plant": leaves on each plant, no count of fields
-    for index, item in enumerate(items):
-        if item.role == "plot" and index and items[index - 1].norm in ("per", "each", "a"):
-            spec = item.data.get("value")
-            if isinstance(spec, dict) and spec.get("individual"):
-                item.role = "filler"
-        if (
-            item.role == "number"
-            and index + 1 < len(items)
-            and items[index + 1].norm in ("leaves", "leaf", "true leaves", "flowers", "fruits")
-        ):
-            item.role = "filler"
-    # "Three pepper varieties, one strip each: ...": how each member is planted
-    for first, plot, each in zip(items, items[1:], items[2:], strict=False):
-        if (
-            first.norm in ("one", "1", "a")
-            and plot.role == "plot"
-            and each.norm in ("each", "apiece")
-        ):
-            first.role = plot.role = "filler"
-    # "onions in single rows 30 cm apart": how the rows are planted, no count of fields
-    for item, following in itertools.pairwise(items):
-        if (
-            item.role == "number"
-            and item.norm in ("single", "double", "twin")
-            and following.role == "geometry"
-            and following.norm.split()[0] in geometry_nouns()
-        ):
-            item.role = "filler"
-    # "one carrot every 2 cm": one plant of the crop, every so far along the row
-    for first, head, spacing in zip(items, items[1:], items[2:], strict=False):
-        if (
-            first.role == "number"
-            and first.norm in ("one", "1", "a", "an")
-            and head.role in ("head", "weak_variety")
-            and spacing.role == "geometry"
-            and any(m.key == "in_row_spacing_m" for m in spacing.data["geometry"])
-        ):
-            first.role = "filler"
-    # "between the two tracks", "three tractors": a number before scenery counts it
-    for item, following in itertools.pairwise(items):
-        if (
-            item.role == "number"
-            and item.norm not in ("a", "an")
-            and following.scenery
-            and not _structure(following)
-        ):
-            item.role = "filler"
-            item.data["counts_scenery"] = True
-        elif item.role == "number" and item.norm in ("a", "an") and following.role == "cue":
-            item.role = "filler"  # "a combine already working in the spelt": not a field
-
-    # "dormant vines pruned back to two canes", "at the 2-3 true leaf stage": parts of each
-    # plant counted (past a second number of a range)
-    for index, item in enumerate(items):
-        if item.role != "number":
-            continue
-        end = index + 1
-        while end < len(items) and (
-            items[end].role == "number" or items[end].norm in ("-", "to", "or")
-        ):
-            end += 1
-        # ("2-3 true leaf stage": a cue phrase that opens with a part counts it too)
-        part = items[end].norm.split() if end < len(items) else []
-        if part and part[0] in reader_words("counted_parts"):
-            for counted in items[index:end]:
-                if counted.role == "number":
-                    counted.role = "filler"
-                    counted.data["counts_plants"] = True
-    # "Jalapenos in the tunnel, lots of fruit turning red": after a crop is named, a vague
-    # quantity of fruit, leaves or plants counts plants, not fields
-    described = descriptive_words()
-    # ("a few peppers have scabby spots" after Jalapenos: some of that field's plants,
-    # read like "the peppers")
-    named: set[str] = set()
-    for index, (item, following) in enumerate(itertools.pairwise(items)):
-        if item.role in ("head", "weak_variety"):
-            named |= crops_of(item)
-        if not named or item.role != "quantity":
-            continue
-        ahead = items[index + 2 : index + 6]
-        # ("lots of yellow flowers"): past the colours said of them
-        while following.norm in reader_words("colours") and ahead:
-            following, ahead = ahead[0], ahead[1:]
-        plants_named = (
-            following.role == "head"
-            and following.has("crop")
-            and crops_of(following) <= named
-            and not any(i.role in ("plot", "size", "geometry") for i in ahead)
-            and any(i.role in ("health", "cue", "stage") for i in ahead)
-        )
-        of_plants = following.norm in described and following.role != "category"
-        if (of_plants and not any(i.role == "plot" for i in ahead[:1])) or plants_named:
-            item.role = "filler"
-            item.data["counts_plants"] = True
-    # "the 70k plot lies north of the 95k plot": a number before one plot names it
-    for before, item, following in zip(items, items[1:], items[2:], strict=False):
-        spec = following.data.get("value") if following.role == "plot" else None
-        if (
-            before.norm in ("the", "this", "that")
-            and item.role == "number"
-            and isinstance(spec, dict)
-            and not spec.get("plural")
-            and not spec.get("individual")
-        ):
-            item.role = "filler"
-            item.data["label"] = True
-    # "on 20 April", "April 3rd": a day of the month is a date, not a count of fields
-    words = [i for i in items if i.role != "separator" or i.norm not in (",",)]
-    for index, item in enumerate(words):
-        if item.role != "number" or not _day_of_month(item):
-            continue
-        said_before = words[index - 1] if index else None
-        said_after = words[index + 1] if index + 1 < len(words) else None
-        if (said_after is not None and said_after.role == "month") or (
-            said_before is not None
-            and said_before.role == "month"
-            and (
-                said_after is None
-                or said_after.role not in ("plot", "head", "weak_variety", "category")
-            )
-        ):
-            item.role = "filler"
-            item.data["date"] = True
-
-
-def _structure(item: Item) -> bool:
-    """A structure crops grow under ("tunnels"), which a number may count as fields."""
-    return any(sense.value == "structures" for sense in item.senses_of("scenery"))
 
 
 def _twins_and_compounds(items: Sequence[Item], text: str) -> None:
@@ -331,14 +129,6 @@ def _twins_and_compounds(items: Sequence[Item], text: str) -> None:
                     compared.role = "filler"
     if items and items[-1].role == "number" and items[-1].norm == "twin":
         items[-1].role = "filler"
-
-
-def _purpose(item: Item) -> bool:
-    """A word naming what a request is for ("dataset", "test", "survey")."""
-    group = item.data.get("scenery") or next(
-        (sense.value for sense in item.senses_of("scenery")), None
-    )
-    return item.role in ("filler", "non_agricultural") and group in _PURPOSES
 
 
 def _totals_are_not_sizes(items: Sequence[Item]) -> None:
@@ -496,7 +286,15 @@ _ALL_CARRIERS = frozenset(
 
 def _article_of_a_container(items: Sequence[Item]) -> None:
     """'A mixed farm with some vegetable plots': the article is the farm's, no count of
-    the fields the farm holds."""
+    the fields the farm holds. 'a person holding a GNSS pole': a container word said as
+    a verb, before what is held, is no farm."""
+    for item, following in itertools.pairwise(items):
+        if (
+            item.role == "container"
+            and item.norm in reader_words("container_verbs")
+            and following.norm in reader_words("held_openers")
+        ):
+            item.role = "filler"
     for index, item in enumerate(items):
         if item.role != "number" or item.norm not in ("a", "an"):
             continue
@@ -506,6 +304,24 @@ def _article_of_a_container(items: Sequence[Item]) -> None:
                 break
             if following.role not in ("filler", "distinct", "unknown"):
                 break
+
+
+def _places_of_scenery(items: Sequence[Item]) -> None:
+    """'..., and my boots in the foreground', 'a tractor in the middle': a place said
+    right after scenery, with no field named since the last break, is the scenery's."""
+    for index, item in enumerate(items):
+        if item.role != "zone" or index == 0 or not items[index - 1].scenery:
+            continue
+        for before in reversed(items[:index]):
+            if before.role in ("separator", "conjunction"):
+                item.role = "filler"
+                item.data["scenery"] = "places"
+                break
+            if before.role in ("head", "plot", "weak_variety", "category"):
+                break
+        else:
+            item.role = "filler"
+            item.data["scenery"] = "places"
 
 
 def _this_one(items: Sequence[Item]) -> None:
@@ -714,7 +530,7 @@ def _plots_of_a_list(items: Sequence[Item]) -> None:
             continue
         plot = items[cursor]
         spec = plot.data.get("value") if plot.role == "plot" else None
-        if _structure(plot) and plot.norm.endswith("s"):
+        if is_structure(plot) and plot.norm.endswith("s"):
             spec = {"plural": True}  # "tomatoes and peppers in two long tunnels"
         if not isinstance(spec, dict) or spec.get("individual"):
             continue
@@ -764,59 +580,3 @@ def _plots_of_a_list(items: Sequence[Item]) -> None:
         for word in (*between, *after):
             if word.role in ("geometry", "size") and (spec.get("plural") or word in between):
                 word.data["of_each_plot"] = True
-
-
-def purpose_diseases(items: Sequence[Item], text: str) -> None:
-    """'Late-blight detection dataset', 'a blight-spotting drone': a disease named as what
-    a dataset or robot is for says nothing about the plants' health (scenery words).
-    'Apple-counting scene', 'fruit-detection plots': a crop joined by a hyphen to what a
-    robot does names the task, not a field."""
-    for index, item in enumerate(items):
-        # "for a banana canopy-segmentation dataset", "for citrus canopy scans", "training a
-        # grape counting model": the crop
-        # (or kind of crop) a purpose is about
-        if item.role not in ("head", "category") or index == 0:
-            continue
-        opener = index - 1
-        if items[opener].norm in ("a", "an", "the", "our", "my") and opener:
-            opener -= 1
-        # ("we're training a grape-bunch counting CNN on it": what a model is trained for)
-        if items[opener].norm not in reader_words("purpose_openers"):
-            continue
-        for following in items[index + 1 : index + 5]:
-            if _purpose(following):
-                item.role = "filler"
-                item.data["scenery"] = "purposes"
-                break
-            if following.role not in ("unknown", "filler"):
-                break
-    for index, item in enumerate(items):
-        if item.role == "health":
-            # "a late-blight spectral dataset": a disease, then words for the kind of data
-            ahead = items[index + 1 : index + 4]
-            end = next((n for n, i in enumerate(ahead) if i.role not in ("unknown",)), None)
-            if (
-                end is not None
-                and _purpose(ahead[end])
-                and len(text[item.end : ahead[0].start]) <= 1
-            ):
-                item.role = "filler"
-                item.data["scenery"] = "purposes"
-            continue
-        after = items[index + 1 : index + 2]
-        # "Apple-counting", "Vineyard-robot"; "a tropical-orchard SLAM test": a plot joined
-        # by a hyphen to the word before it, then what the test is for
-        joined_before = index > 0 and text[items[index - 1].end : item.start] == "-"
-        if (
-            after
-            and _purpose(after[0])
-            and item.role in ("head", "plot")
-            and (text[item.end : after[0].start] == "-" or joined_before)
-        ):
-            item.role = "filler"
-            item.data["scenery"] = "purposes"
-
-
-def _day_of_month(item: Item) -> bool:
-    value = item.data.get("value")
-    return isinstance(value, float) and value.is_integer() and 1 <= value <= 31

@@ -242,6 +242,12 @@ def zone_relations(fields: Sequence[Sequence[Item]]) -> list[RelationIntent]:
         zone = zone_of(items)
         if zone is not None:
             zones[index] = zone
+    if list(zones.values()) == ["middle"] and len(fields) == 3:
+        # "Chantenay, Imperator and Danvers carrots ..., Imperator in the middle": of three
+        # fields, the one in the middle lies between the other two
+        middle = next(iter(zones))
+        others = tuple(index for index in range(3) if index != middle)
+        return [RelationIntent(kind="between", subject=middle, objects=others)]
     if len(set(zones.values())) < 2:
         return []
     _fill_middle(zones)

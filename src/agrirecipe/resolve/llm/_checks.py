@@ -51,7 +51,8 @@ def _check_plots(lexicon: Lexicon, request: str, hierarchy: Hierarchy) -> None:
     from agrirecipe.resolve._decompose import MentionBuilder, decompose
     from agrirecipe.resolve._lexicon import tokenize
     from agrirecipe.resolve._retractions import apply_corrections
-    from agrirecipe.resolve._scan import assign_roles, read_sizes
+    from agrirecipe.resolve._scan import assign_roles
+    from agrirecipe.resolve._sizes import read_sizes
     from agrirecipe.resolve._structure import raise_conflicts
 
     items = lexicon.tag(tokenize(request))
