@@ -184,9 +184,7 @@ def test_side_by_side_strips_one_in_the_middle_and_scenery_in_the_foreground() -
         "Imperator",
         "Danvers",
     ]
-    assert ("between", "carrot_field_2", ("carrot_field_1", "carrot_field_3")) in _relations(
-        prompt
-    )
+    assert ("between", "carrot_field_2", ("carrot_field_1", "carrot_field_3")) in _relations(prompt)
 
 
 def test_an_orchard_after_a_lettuce_field_is_a_field_of_its_own() -> None:

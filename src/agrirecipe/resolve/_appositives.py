@@ -60,8 +60,12 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
             and (mention.count or 1) == 1
             and not mention.refinements
             and clause.link is not None
-            # ("we only grow sweet peppers now - one outdoor field, roughly 60 by 120 m")
-            and clause.link.norm in (",", ":", "-", "–", "—")
+            # ("we only grow sweet peppers now - one outdoor field, roughly 60 by 120 m";
+            # "...; a whole grove of sick-looking trees": a plot said with a look)
+            and (
+                clause.link.norm in (",", ":", "-", "–", "—")
+                or (clause.link.norm == ";" and _said_with_a_look(clause))
+            )
             # ("Lady Finger bananas: 3 m x 3 m grid, 1,111 plants/ha, a 90 x 60 m block")
             # ("Spelt in ear and just flowering, a 2 ha field": how it looks, between)
             and all(
@@ -108,9 +112,13 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
                 any(i.role == "size" for i in clause.items)
                 or any(i.role == "filler" and i.scenery for i in clause.items)
                 or _size_said_next(clauses, mention.clause)
+                or _said_with_a_look(clause)
             )
         ):
-            previous.items.extend(i for i in mention.items if i.role in ("size", "geometry"))
+            # (with how it looks: "apples, a grove of sick trees")
+            previous.items.extend(
+                i for i in mention.items if i.role in ("size", "geometry", "cue", "health")
+            )
             if previous.plot is None:
                 previous.plot = mention.plot
             clause.mentions = [m for m in clause.mentions if m is not mention]
@@ -184,7 +192,10 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
         if clause is not None and previous is not None and _where_it_grows(previous, mention):
             # "Bibb lettuce transplants ..., in a field bordered by a ditch": the field the
             # crop just named grows in, not another field
-            previous.items.extend(i for i in mention.items if i.role in ("size", "geometry"))
+            # (with how it looks: "apples, a grove of sick trees")
+            previous.items.extend(
+                i for i in mention.items if i.role in ("size", "geometry", "cue", "health")
+            )
             if previous.plot is None:
                 previous.plot = mention.plot
             clause.mentions = [m for m in clause.mentions if m is not mention]
@@ -393,3 +404,8 @@ def _holds_none_of(plot: dict[str, Any], crops: set[str]) -> bool:
     ``crops`` (a lettuce field is no orchard)."""
     allowed = {*plot.get("options", ()), *plot.get("tolerates", ())}
     return bool(plot.get("options")) and bool(crops) and not allowed & crops
+
+
+def _said_with_a_look(clause: Clause) -> bool:
+    """Whether a plot's clause says how its plants look ("a grove of sick-looking trees")."""
+    return any(i.role in ("cue", "health") for i in clause.items)

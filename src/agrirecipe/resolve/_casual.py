@@ -491,6 +491,7 @@ def count_said_after_crop(text: str, tag: Callable[[str], Sequence[Item]]) -> st
         return match.group(0)
 
     text = _ONE_MORE.sub(lambda m: _one_of_the_crop(m, tag), text)
+    text = _SAID_AGAIN_AND_MORE.sub(lambda m: _each_more(m, tag), text)
     text = _FIELDS_OF_THEM.sub(rewrite, text)
     # "bing cherries (one block) squeezed between ...", "cherries, two blocks, next to
     # wheat": the count of the crop's plots, said between brackets or commas after it
@@ -498,6 +499,24 @@ def count_said_after_crop(text: str, tag: Callable[[str], Sequence[Item]]) -> st
     return _PLOTS_SAID_AFTER.sub(
         lambda m: m.group(0) if _after_a_list(m, tag) else rewrite(m), text
     )
+
+
+#: "wheat wheat and more wheat": a crop's name said again and again, then "and more" of it.
+_SAID_AGAIN_AND_MORE = re.compile(
+    r"\b(?P<word>[A-Za-z]+)(?P<again>(?:\s+(?P=word)\b)+)(?=\s+(?i:and|&)\s+(?i:more)\s+(?P=word)\b)",
+    re.IGNORECASE,
+)
+
+
+def _each_more(match: re.Match[str], tag: Callable[[str], Sequence[Item]]) -> str:
+    """ "wheat wheat and more wheat" as "wheat and more wheat and more wheat": each time
+    the crop is said, one more field of it."""
+    word = match.group("word")
+    items = [i for i in tag(word) if i.role != "separator"]
+    if not items or not all(i.has("crop", "variety") for i in items):
+        return match.group(0)
+    times = len(match.group("again").split())
+    return word + f" and more {word}" * times
 
 
 def _after_a_list(match: re.Match[str], tag: Callable[[str], Sequence[Item]]) -> bool:

@@ -354,6 +354,8 @@ class MentionBuilder:
                     current.plot is not None
                     and (
                         (current.count or 1) >= 2
+                        # ("north of both onion fields a field of Danvers carrots")
+                        or any(i.role == "all" and i.norm == "both" for i in current.items)
                         or (
                             # ("South of the grove a banana block": a crop named after
                             # the plot named again)

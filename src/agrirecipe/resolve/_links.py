@@ -324,6 +324,8 @@ def following_list(
             and (clause.mentions or clause.link.role not in ("separator", "conjunction"))
             # ("North to south along the lane: Kordia cherries, ...": scenery on the way)
             and not _along_scenery(clause)
+            # ("Left to right along the road we've got 2 ha of Fontane potatoes, then ...")
+            and not _along_scenery_then_field(clause)
         ):
             break
         if clause.mentions and all(clause.mentions[-1] is not m for m in group):
@@ -339,6 +341,19 @@ def _along_scenery(clause: Clause) -> bool:
         and clause.link.role == "relation"
         and any(i.scenery for i in clause.items)
         and all(i.scenery or i.role in ("filler", "of") for i in clause.items)
+    )
+
+
+def _along_scenery_then_field(clause: Clause) -> bool:
+    """A clause that says what the fields lie along, then names the first of them ("along
+    the road we've got 2 ha of Fontane potatoes")."""
+    if len(clause.mentions) != 1 or clause.link is None or clause.link.role != "relation":
+        return False
+    first_head = min(h.start for h in clause.mentions[0].heads)
+    before = [i for i in clause.items if i.start < first_head]
+    return any(i.scenery or i.role == "non_agricultural" for i in before) and all(
+        i.scenery or i.role in ("filler", "of", "non_agricultural", "size", "number")
+        for i in before
     )
 
 

@@ -90,6 +90,28 @@ def _one_unit(match: re.Match[str]) -> str:
     return match.group("first")
 
 
+#: "drilled at 12.5 cm, 25 cm and 37.5 cm": a list of row spacings after a drilling verb,
+#: each value with its bare length unit (or the last only).
+_DRILLED_LIST = re.compile(
+    rf"\b(?P<lead>(?i:drilled|sown|planted|spaced)\s+(?:at|on))\s+"
+    rf"(?P<values>{_NUMBER}(?:\s*(?:cm|mm|in|m)\b)?(?:\s*,\s*{_NUMBER}(?:\s*(?:cm|mm|in|m)\b)?)*"
+    rf",?\s+(?i:and|or|&)\s+{_NUMBER})\s*(?P<unit>cm|mm|in|m)\b"
+    r"(?!\s*(?:x|×|by|wide|long|tall|high|deep|apart|rows?|row spacing|spacing|between)\b)"
+)
+
+
+def _drilled_each(match: re.Match[str]) -> str:
+    """ "drilled at 12.5 cm, 25 cm and 37.5 cm" as one member drilled at each value."""
+    if re.search(r"\d,\d{3}(?!\d)", match.group("values")):
+        return match.group(0)
+    if _RESPECTIVELY.match(match.string, match.end()):
+        return match.group(0)
+    values = re.findall(_NUMBER, match.group("values"))
+    lead, unit = match.group("lead"), match.group("unit")
+    members = [f"one {lead} {value} {unit}" for value in values]
+    return ", ".join(members[:-1]) + " and " + members[-1]
+
+
 #: "respectively" within a few words after a list of values.
 _RESPECTIVELY = re.compile(r"(?:\s+[\w-]+){0,3}\s+respectively\b", re.IGNORECASE)
 
@@ -113,6 +135,8 @@ def spread_value_lists(text: str) -> str:
     # "rows 40 cm, 30 cm and 75 cm apart respectively": one unit for the list
     text = _repeated_unit().sub(_one_unit, text)
     text = _pattern().sub(spread, text)
+    # "three wheat plots drilled at 12.5 cm, 25 cm and 37.5 cm": how each is drilled
+    text = _DRILLED_LIST.sub(_drilled_each, text)
     text = _SIZES_OF_COUNTED.sub(_one_size_each, text)
     # "Half a hectare each of Cos lettuce and Savoy cabbage": the size is each one's
     text = _SIZE_EACH_OF.sub(lambda m: f"{m.group('list')}, {m.group('size')} each", text)

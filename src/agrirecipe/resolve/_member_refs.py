@@ -212,5 +212,26 @@ def member_said_again(clause: Clause, parent: Mention) -> Mention | None:
         return members[at] if at is not None and at < len(members) and len(words) == 1 else None
     fillers = [i for i in clause.items if i.role == "filler"]
     return (
-        _by_comparative(fillers, members) or _by_look(words, members) or _by_value(words, members)
+        _by_comparative(fillers, members)
+        or _by_look(words, members)
+        or _by_value(words, members)
+        or _by_measure(clause.items, members)
     )
+
+
+def _by_measure(items: Sequence[Item], members: Sequence[Mention]) -> Mention | None:
+    """The member "the 25 cm plot" points at: the one member whose own measure says the
+    same length ("drilled at 25 cm")."""
+    said = [
+        f"{number.norm} {unit.norm}"
+        for number, unit in itertools.pairwise(items)
+        if number.data.get("measure") and unit.role == "length_unit"
+    ]
+    if len(said) != 1:
+        return None
+    found = [
+        m
+        for m in members
+        if any(i.role == "geometry" and f" {said[0]}" in f" {i.norm}" for i in m.items)
+    ]
+    return found[0] if len(found) == 1 else None

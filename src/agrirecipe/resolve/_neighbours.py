@@ -54,7 +54,8 @@ _OPENING_NEIGHBOURS = re.compile(
 )
 # "Padrón peppers on one bed and Jalapeños on the next": two plots side by side
 _ONE_AND_THE_NEXT = re.compile(
-    r"\s+(?i:on|in) (?i:one) (?P<noun>(?i:bed|row|ridge|strip|plot|block|bench|bay))\s+"
+    r"\s+(?i:on|in) (?i:one) "
+    r"(?P<noun>(?i:bed|row|ridge|strip|plot|block|bench|bay|field|paddock))\s+"
     r"(?i:and|&)\s+(?P<b>[A-Za-z][^,;.:!?]*?)\s+(?i:on|in) (?i:the) (?i:next|other)"
     r"(?:\s+(?i:one|(?P=noun)))?\b"
 )

@@ -5,7 +5,8 @@
 (pasture), "brown corky scab patches" (damage), "a patch in the middle where the leaves
 have gone brown" (a part of a field), "the same" said right after a crop ("Walla
 Walla the same": planted as the field before), and "each a block of 8 rows" after fields
-counted (what each of them is), and "allotment-style" (a plot word that says what
+counted (what each of them is), "a seagull on every other bed" (the beds of a field named
+before), and "allotment-style" (a plot word that says what
 something is like).
 """
 
@@ -32,6 +33,7 @@ def plot_words_of_other_things(items: Sequence[Item]) -> None:
     _pastures(items)
     _damage_and_parts(items)
     _each_a_plot(items)
+    _every_other(items)
 
 
 def _inside_unknown_phrases(items: Sequence[Item]) -> None:
@@ -213,3 +215,25 @@ def _each_a_plot(items: Sequence[Item]) -> None:
             continue
         items[index + 1].role = "filler"
         items[index + 2].role = "filler"
+
+
+def _every_other(items: Sequence[Item]) -> None:
+    """'a seagull on every other bed', 'a trap in each row': after a field is named, one
+    plot word said with "every (other)" or "each" after a place word is the named field's
+    beds or rows, not a field."""
+    named = False
+    for index, item in enumerate(items):
+        if item.role in ("head", "weak_variety"):
+            named = True
+        if not named or item.role != "plot" or index < 2:
+            continue
+        spec = item.data.get("value")
+        if not isinstance(spec, dict) or spec.get("plural"):
+            continue
+        before = [i.norm for i in items[max(0, index - 3) : index]]
+        if before[-2:] == ["every", "other"] or (
+            before[-1:] in (["every"], ["each"])
+            and len(before) >= 2
+            and before[-2] in ("on", "in", "along", "between", "down", "at")
+        ):
+            item.role = "filler"

@@ -15,6 +15,7 @@ fields are in ``_links``.
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Sequence
 from typing import Any, get_args
 
@@ -221,15 +222,17 @@ def read_relations(
                 TraceStep(stage="decompose", subject=link.raw, detail="said of scenery: not used")
             )
             continue
+        # ("carrots (nantes) east of them": past the brackets after the subject)
+        said_before = clauses[_before_brackets(clauses, position)] if position else None
         if (
             pronoun
             # ("east of that block": a field named before, not one of its own)
             and all(m.clause != clause.index for m in clause.mentions)
-            and position
-            and clauses[position - 1].named
-            and clauses[position - 1].items  # not "one ... and, north of it, one ..."
+            and said_before is not None
+            and said_before.named
+            and said_before.items  # not "one ... and, north of it, one ..."
             # (nor "cherry trees and, 20 m south of them, a plum tomato plot": a distance)
-            and not a_distance(clauses[position - 1])
+            and not a_distance(said_before)
         ):
             # "put valencia oranges north of it, and a banana plot ...": the pronoun
             # ends its clause after a subject, so it points back and the fields after
@@ -289,6 +292,35 @@ def read_relations(
                 relations.append(
                     RelationIntent(
                         kind=kind, subject=fields[0], objects=(fields[1],), text=link.raw
+                    )
+                )
+            continue
+        if (
+            link.role == "relation"
+            and len(before) >= 2
+            and _each_against_the_one_before(clauses, position)
+        ):
+            # "Navel first, then Hamlin, then Moro, each block right up against the one
+            # before": each field placed against the one named before it
+            for named_first, named_next in itertools.pairwise(before):
+                relations.extend(
+                    field_relations(
+                        link.data["value"], named_next, (named_first,), members, link, trace
+                    )
+                )
+            continue
+        if (
+            link.role == "relation"
+            and len(clause.mentions) == 1
+            and len(before) >= 2
+            and _both_fronted(clause)
+        ):
+            # "..., and north of both onion fields a field of Danvers carrots": the field
+            # after the two named before is placed against each of them
+            for other in before[-2:]:
+                relations.extend(
+                    field_relations(
+                        link.data["value"], clause.mentions[0], (other,), members, link, trace
                     )
                 )
             continue
@@ -408,6 +440,55 @@ def read_relations(
     for relation in relations:  # "in a line, in this order": one row
         unique.setdefault((relation.kind, relation.subject, relation.objects), relation)
     return list(unique.values())
+
+
+#: How the field named before is said ("right up against the one before").
+_THE_ONE_BEFORE = (
+    ["the", "one", "before"],
+    ["the", "one", "before", "it"],
+    ["the", "previous", "one"],
+    ["the", "one", "before", "that"],
+)
+
+
+def _each_against_the_one_before(clauses: Sequence[Clause], position: int) -> bool:
+    """Whether clause ``position`` places against "the one before" right after "each"
+    said of the fields ("..., each block right up against the one before")."""
+    clause = clauses[position]
+    words = [i.norm for i in clause.items]
+    previous = clauses[position - 1] if position else None
+    return (
+        not clause.mentions
+        and words in _THE_ONE_BEFORE
+        and previous is not None
+        and not previous.mentions
+        and bool(previous.items)
+        and previous.items[0].norm in ("each", "every")
+    )
+
+
+def _both_fronted(clause: Clause) -> bool:
+    """Whether a relation clause opens with "both" and the fields it names again, before
+    the one field of its own ("north of both onion fields a field of carrots")."""
+    first_head = min(h.start for h in clause.mentions[0].heads)
+    before = [i for i in clause.items if i.start < first_head]
+    return (
+        bool(before)
+        and before[0].norm == "both"
+        and any(i.role in ("head", "plot") for i in before)
+    )
+
+
+def _before_brackets(clauses: Sequence[Clause], position: int) -> int:
+    """The clause before ``position``, past a bracketed aside that ends right before it
+    ("carrots (nantes) east of them": the carrots' clause)."""
+    index = position - 1
+    if index > 0 and not clauses[index].items and link_norm(clauses[index]) == ")":
+        index -= 1
+        while index > 0 and link_norm(clauses[index]) != "(":
+            index -= 1
+        index = max(index - 1, 0)
+    return index
 
 
 #: The words that place a field past the last one that way ("further east").

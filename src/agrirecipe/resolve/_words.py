@@ -389,6 +389,16 @@ def _each_row(items: Sequence[Item]) -> None:
             and all(m.key == "row_length_m" for m in after.data["geometry"])
         ):
             each.role = "filler"
+    # "30 rows, 75 cm apart, each row 100 m long": "each" before one row's measure
+    for each, after in itertools.pairwise(items):
+        if (
+            each.role == "all"
+            and each.norm == "each"
+            and after.role == "geometry"
+            and after.tokens[0].norm in ("row", "ridge", "drill", "line")
+            and all(m.key == "row_length_m" for m in after.data["geometry"])
+        ):
+            each.role = "filler"
 
 
 def _every_plot(items: Sequence[Item]) -> None:
