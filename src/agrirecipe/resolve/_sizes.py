@@ -287,17 +287,29 @@ def _match_rectangle(items: Sequence[Item], index: int) -> tuple[SizeIntent, int
 
 
 def _match_layout(items: Sequence[Item], index: int) -> int:
-    """The number of items of a layout of plots at ``index`` ("2 x 2 grid"), or 0."""
+    """The number of items of a layout of plots at ``index`` ("2 x 2 grid", "arranged 2
+    by 2"), or 0."""
     window = items[index : index + 4]
     if (
-        len(window) == 4
+        len(window) >= 3
         and _number_at(items, index) is not None
         and window[1].has("dimension_joiner")
         and _number_at(items, index + 2) is not None
-        and window[3].norm in _ARRANGEMENTS
     ):
-        return 4
+        if len(window) == 4 and window[3].norm in _ARRANGEMENTS:
+            return 4
+        # ("Four 25 x 25 m plots ..., arranged 2 by 2: ...": no unit, after "arranged")
+        if (
+            index
+            and items[index - 1].norm in _ARRANGED
+            and (len(window) == 3 or window[3].role not in ("length_unit", "area_unit"))
+        ):
+            return 3
     return 0
+
+
+#: Words before "2 by 2" that make it how plots are laid out ("arranged 2 by 2").
+_ARRANGED = frozenset({"arranged", "laid", "set", "placed", "out"})
 
 
 def _grid_of_plots(items: Sequence[Item], index: int) -> float:
