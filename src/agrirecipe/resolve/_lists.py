@@ -100,16 +100,24 @@ _DRILLED_LIST = re.compile(
 )
 
 
+def _members(match: re.Match[str], member: str) -> str | None:
+    """The list of values ``match`` read, as one "``member`` <value> <unit>" each joined
+    by commas and "and"; None when it is no list to spread: "1,000" is one number
+    (thousands separators stay whole), and "... respectively" gives the values out to
+    the fields named."""
+    if re.search(r"\d,\d{3}(?!\d)", match.group("values")):
+        return None
+    if _RESPECTIVELY.match(match.string, match.end()):
+        return None
+    unit = match.group("unit")
+    members = [f"{member} {value} {unit}" for value in re.findall(_NUMBER, match.group("values"))]
+    return ", ".join(members[:-1]) + " and " + members[-1]
+
+
 def _drilled_each(match: re.Match[str]) -> str:
     """ "drilled at 12.5 cm, 25 cm and 37.5 cm" as one member drilled at each value."""
-    if re.search(r"\d,\d{3}(?!\d)", match.group("values")):
-        return match.group(0)
-    if _RESPECTIVELY.match(match.string, match.end()):
-        return match.group(0)
-    values = re.findall(_NUMBER, match.group("values"))
-    lead, unit = match.group("lead"), match.group("unit")
-    members = [f"one {lead} {value} {unit}" for value in values]
-    return ", ".join(members[:-1]) + " and " + members[-1]
+    members = _members(match, f"one {match.group('lead')}")
+    return match.group(0) if members is None else members
 
 
 #: "respectively" within a few words after a list of values.
@@ -120,17 +128,8 @@ def spread_value_lists(text: str) -> str:
     """``text`` with each list of values of one measure spread into one member per value."""
 
     def spread(match: re.Match[str]) -> str:
-        values = re.findall(_NUMBER, match.group("values"))
-        # "1,000" is one number, not a list: thousands separators stay whole
-        if re.search(r"\d,\d{3}(?!\d)", match.group("values")):
-            return match.group(0)
-        # "at 75, 50 and 30 cm row spacing respectively": given out to the fields named
-        if _RESPECTIVELY.match(text, match.end()):
-            return match.group(0)
-        member = _leads()[match.group("lead").lower()]
-        unit = match.group("unit")
-        members = [f"{member} {value} {unit}" for value in values]
-        return ", " + ", ".join(members[:-1]) + " and " + members[-1]
+        members = _members(match, _leads()[match.group("lead").lower()])
+        return match.group(0) if members is None else ", " + members
 
     # "rows 40 cm, 30 cm and 75 cm apart respectively": one unit for the list
     text = _repeated_unit().sub(_one_unit, text)
