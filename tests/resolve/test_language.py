@@ -567,10 +567,14 @@ def test_the_fruit_of_named_fields_is_not_a_fruit_field(strategy: str) -> None:
 def test_a_list_side_by_side_is_a_row() -> None:
     recipe = _recipe("potatoes, onions and cabbages side by side in September", "rules")
     potato, onion, cabbage = (f.id for f in recipe.fields)
-    assert {(r.subject, r.objects[0]) for r in recipe.relations} == {
+    assert {(r.subject, r.objects[0]) for r in recipe.relations if r.kind == "next_to"} == {
         (potato, onion),
         (onion, cabbage),
     }
+    # the middle one of three side by side lies between the other two
+    assert [(r.subject, set(r.objects)) for r in recipe.relations if r.kind == "between"] == [
+        (onion, {potato, cabbage})
+    ]
 
 
 @pytest.mark.parametrize(

@@ -50,6 +50,8 @@ def single_value(
 ) -> str | None:
     values = values_of(items, roles, hemisphere)
     distinct = sorted(set(values))
+    if attribute == "stage" and distinct == ["Maturation", "Reproductive"]:
+        distinct = _fruit_that_ripens(items, roles) or distinct
     if len(distinct) > 1:
         words = [i.raw for i in items if i.role in roles]
         raise PromptError(
@@ -58,6 +60,20 @@ def single_value(
             hint=f"a field has one {attribute}; describe different fields separately",
         )
     return distinct[0] if distinct else None
+
+
+def _fruit_that_ripens(items: Sequence[Item], roles: tuple[str, ...]) -> list[str]:
+    """``["Maturation"]`` when every Reproductive word only says fruit is on the plant
+    ("all fruiting and starting to ripen": the fruit ripens), else nothing."""
+    bearing = {" ".join(w.split()) for w in vocabulary()["fruit_bearing_words"]}
+    reproductive = [
+        i
+        for i in items
+        if i.role in roles and not i.data.get("negated") and i.data.get("value") == "Reproductive"
+    ]
+    if all(" ".join(i.raw.lower().split()) in bearing for i in reproductive):
+        return ["Maturation"]
+    return []
 
 
 def health_of(items: Sequence[Item], text: str) -> HealthState | None:

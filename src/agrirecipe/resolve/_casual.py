@@ -452,16 +452,40 @@ def end_reciprocals(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
     return _RECIPROCAL.sub(comma, text)
 
 
-_ONE_MORE = re.compile(
-    r"(?P<lead>(?:\b(?i:and)|,|&)\s+(?i:a|an|another)\s+)(?P<said>(?:[A-Za-z][\w-]*\s+){1,2}?)"
-    r"(?i:one)\b(?=\s+(?i:next|beside|by|near|north|south|east|west|alongside|behind|across)\b)"
+#: The words that place a field said as "one" ("a healthy one next to it", "the one
+#: beyond it").
+_PLACING_WORDS = (
+    r"(?i:next|beside|by|near|north|south|east|west|alongside|behind|across|beyond|past"
+    r"|further|farther)"
 )
+_ONE_MORE = re.compile(
+    r"(?P<lead>(?:\b(?i:and)|,|&)\s+(?P<article>(?i:a|an|another|the))\s+)"
+    r"(?P<said>(?:[A-Za-z][\w-]*\s+){0,2}?)"
+    rf"(?i:one)\b(?=\s*,?\s+{_PLACING_WORDS}\b)"
+)
+# "and beyond it another one, still green": placed first, then "another one"
+_PLACED_THEN_ONE = re.compile(
+    rf"(?P<lead>\b{_PLACING_WORDS}(?:\s+(?i:of|to))?\s+(?i:it|that)\s*,?\s+"
+    r"(?P<article>(?i:another|a second))\s+)(?P<said>)(?i:one)\b"
+)
+#: What may stand between "the" and "one" for a field not named before ("the far one").
+_THE_NEW_ONE = frozenset({"", "far", "farther", "further", "next", "second"})
 
 
 def _one_of_the_crop(match: re.Match[str], tag: Callable[[str], Sequence[Item]]) -> str:
     """ "... and a healthy one next to it" with "one" said as the crop named last before it
     in its sentence ("a healthy wheat field"), when a word of it names one."""
     before = re.split(r"[.;!?]", match.string[: match.start()])[-1].split()
+    lead = match.group("lead")
+    if match.group("article").lower() == "the":
+        # "the near wheat field is ripe, and the one beyond it is still green": "the one"
+        # is another field only after a sentence naming one crop, with no word of its own
+        # that could name one already said ("the other one")
+        if match.group("said").strip().lower() not in _THE_NEW_ONE or (
+            sum(1 for word in before if any(i.has("crop") for i in tag(word))) != 1
+        ):
+            return match.group(0)
+        lead = lead[: match.start("article") - match.start()] + "a "
     for at in range(len(before) - 1, -1, -1):
         items = [i for i in tag(before[at]) if i.role != "separator"]
         if items and all(i.has("crop") for i in items):
@@ -470,7 +494,7 @@ def _one_of_the_crop(match: re.Match[str], tag: Callable[[str], Sequence[Item]])
             # (else "plot", a word the traceability check accepts as read in: "ripe wheat
             # and a young one next to it")
             plot = after if after and all(i.has("plot") for i in tag(after)) else "plot"
-            return f"{match.group('lead')}{match.group('said')}{before[at]} {plot}"
+            return f"{lead}{match.group('said')}{before[at]} {plot}"
     return match.group(0)
 
 
@@ -491,6 +515,7 @@ def count_said_after_crop(text: str, tag: Callable[[str], Sequence[Item]]) -> st
         return match.group(0)
 
     text = _ONE_MORE.sub(lambda m: _one_of_the_crop(m, tag), text)
+    text = _PLACED_THEN_ONE.sub(lambda m: _one_of_the_crop(m, tag), text)
     text = _SAID_AGAIN_AND_MORE.sub(lambda m: _each_more(m, tag), text)
     text = _FIELDS_OF_THEM.sub(rewrite, text)
     # "bing cherries (one block) squeezed between ...", "cherries, two blocks, next to

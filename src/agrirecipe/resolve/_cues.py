@@ -17,7 +17,7 @@ import yaml
 
 from agrirecipe.resolve._lexicon import DATA_DIR, Item, Lexicon, Sense
 
-__all__ = ["Cue", "CueReading", "add_cues", "apply_cues"]
+__all__ = ["Cue", "CueReading", "add_cues", "apply_cues", "ripe_colour"]
 
 _ATTRIBUTES = ("stage", "season", "health")
 
@@ -70,6 +70,13 @@ def _table() -> tuple[tuple[str, Cue], ...]:
 @functools.cache
 def _autumn_looks() -> frozenset[str]:
     return frozenset(str(p) for p in _data().get("autumn_looks", ()))
+
+
+def ripe_colour(crop: str, colour: str) -> Cue | None:
+    """The Maturation cue of a bare colour said of ``crop`` ("the wheat golden"), if the
+    crop only shows that colour ripe (``ripe_colours`` in cues.yaml)."""
+    colours = _data().get("ripe_colours", {}).get(crop, ())
+    return Cue("stage", "Maturation") if colour in {str(c) for c in colours} else None
 
 
 def add_cues(lexicon: Lexicon) -> None:

@@ -672,18 +672,20 @@ def resolve_weak_varieties(mention: Mention) -> None:
 
 def _names_plot(mention: Mention, item: Item) -> bool:
     """Whether ``item`` stands right before the mention's plot noun, which holds any crop,
-    and is not also a colour word ("golden field" is a colour)."""
+    or right after it and "of" ("a block of Conference"), and is not also a colour word
+    ("golden field" is a colour)."""
     if mention.plot is None or mention.plot.get("options") or mention.plot.get("category"):
         return False
     if item.norm in _colour_words():
         return False
     position = next((k for k, i in enumerate(mention.items) if i is item), None)
-    following = (
-        mention.items[position + 1]
-        if position is not None and position + 1 < len(mention.items)
-        else None
-    )
-    return following is not None and following.role == "plot"
+    if position is None:
+        return False
+    following = mention.items[position + 1] if position + 1 < len(mention.items) else None
+    if following is not None and following.role == "plot":
+        return True
+    before = mention.items[max(position - 2, 0) : position]
+    return [i.role for i in before] == ["plot", "of"]
 
 
 @functools.lru_cache(maxsize=1)

@@ -154,15 +154,14 @@ class FieldReading:
                 "each says its own)",
             )
         if says_all:
+            # "cabbages with lesions, and onions, all healthy": what a field says of
+            # itself wins over what is said of all ("all fruiting and starting to
+            # ripen" is still said whole)
+            own_roles = [{own.role for own in member.items} for member in fields]
             for item in scene_items:
                 if item.role not in ("season", "month", "all"):
-                    for member in fields:
-                        # "cabbages with lesions, and onions, all healthy": what a field
-                        # says of itself wins over what is said of all
-                        said = item.role in ("health", "stage") and any(
-                            own.role == item.role for own in member.items
-                        )
-                        if not said:
+                    for member, roles in zip(fields, own_roles, strict=True):
+                        if item.role not in ("health", "stage") or item.role not in roles:
                             member.items.append(item)
             for member in fields:
                 own = values_of(member.items, ("season", "month"), hemisphere)

@@ -126,6 +126,7 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
     text = _BETWEEN_BARE_LABELS.sub(lambda m: f"{m.group('head')}{_one_noun_each(m)}", text)
     text = _PLACED_THEN_NAMED.sub(r"\g<head>, \g<where>, is", text)
     text = _PLACED_THEN_MARKED.sub(_placed_then_marked, text)
+    text = _PLACED_THEN_IS.sub(r"\g<head>, \g<where>: ", text)
     definitions = sorted(
         [
             *(m for m in _DEFINITION.finditer(text) if not _REFERRED.search(text[: m.start()])),
@@ -252,6 +253,15 @@ _PLACED_THEN_MARKED = re.compile(
     r"(?:(?i:north|south|east|west)\s+(?i:of)|(?i:next to|beside|alongside))\s+(?:(?i:the)\s+)?)"
     rf"(?P<other>(?i:{_NOUNS})\s+)?(?P<ref>{_MARK})\s*(?:=|:)\s*"
     r"(?=[A-Za-z])"
+)
+
+
+# "Plot B, directly south of A, is Regina, 40 by 80 m": a label placed against another
+# between commas, then named after "is", like "Plot B, directly south of A: Regina, ..."
+_PLACED_THEN_IS = re.compile(
+    rf"(?P<head>\b{_LABEL})\s*,\s+(?P<where>{_CLOSE}"
+    r"(?:(?i:north|south|east|west)\s+(?i:of)|(?i:next to|beside|alongside))\s+(?:(?i:the)\s+)?"
+    rf"(?:(?i:{_NOUNS})\s+)?{_MARK})\s*,\s*(?i:is|has)\s+(?=[A-Za-z])"
 )
 
 

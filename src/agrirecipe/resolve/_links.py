@@ -191,6 +191,10 @@ def coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:
         # "..., and Red Express cabbage behind, the cabbage leaves chewed full of holes by
         # caterpillars": a field named again by "the" is the one described
         return group
+    if any(i.role == "zone" for i in group[0].items) and clauses[index].link is not None:
+        # "sweetcorn at the back, tomatoes in the middle - black blotchy stems": a field
+        # placed in a zone of its own is no list with the one before it
+        return group
     if _describes_itself(clauses[index], group[0]) and clauses[index].link is not None:
         # "..., and Roma tomatoes behind with curled, mottled leaves": the words after a
         # comma go on with the last member's own "with ..."

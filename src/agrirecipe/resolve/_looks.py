@@ -11,7 +11,8 @@ from __future__ import annotations
 import itertools
 from collections.abc import Sequence
 
-from agrirecipe.resolve._lexicon import Item, reader_words
+from agrirecipe.resolve._cues import ripe_colour
+from agrirecipe.resolve._lexicon import Item, Sense, reader_words
 
 __all__ = [
     "colour_after_a_look",
@@ -20,6 +21,7 @@ __all__ = [
     "crops_of",
     "negated_looks",
     "past_and_other_readiness",
+    "ripe_colours",
     "ripening_colours",
     "weather_on_plants",
 ]
@@ -261,6 +263,34 @@ def ripening_colours(items: Sequence[Item]) -> None:
                 i.role in ("head", "plot") for i in following[:1]
             ):
                 item.role = "filler"
+
+
+#: Words between a crop and the colour said of it ("the wheat is now golden").
+_COLOUR_LINKS = frozenset({"is", "are", "now", "all", "gone", "turned", "looking", "looks"})
+
+
+def ripe_colours(items: Sequence[Item]) -> None:
+    """'the wheat golden', 'the tomatoes are red': a bare colour said right after a crop
+    that only shows it ripe is a Maturation cue (``ripe_colours`` in cues.yaml)."""
+    for index, item in enumerate(items):
+        if item.role not in ("filler", "weak_variety", "unknown", ""):
+            continue
+        back = index - 1
+        while back >= 0 and items[back].norm in _COLOUR_LINKS:
+            back -= 1
+        head = items[back] if back >= 0 else None
+        if head is None or head.role != "head" or len(crops := crops_of(head)) != 1:
+            continue
+        if any(s.crop in crops for s in item.senses_of("variety")):
+            continue  # "apples golden": a variety's name is not a look
+        after = items[index + 1] if index + 1 < len(items) else None
+        if after is not None and after.role in ("head", "plot"):
+            continue  # "the wheat golden acre cabbages": words of another phrase
+        cue = ripe_colour(next(iter(crops)), item.norm)
+        if cue is not None:
+            item.role = "cue"
+            item.senses = (*item.senses, Sense("cue", cue))
+            item.data["cue"] = cue
 
 
 def _ripeness(item: Item) -> bool:

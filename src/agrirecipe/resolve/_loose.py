@@ -506,6 +506,8 @@ def _goes_on_saying_all(clauses: Sequence[Clause], position: int, said_all: int)
             and before < position - 1
             and any(i.role == "geometry" for i in clause.items)
         )
+        # "Each plot 30 m wide, 100 m long, ...": what follows "each plot" in its sentence
+        or (clause.link.norm == "," and _each_plot(clauses[said_all]))
     )
     return (
         said_all == before
@@ -513,6 +515,17 @@ def _goes_on_saying_all(clauses: Sequence[Clause], position: int, said_all: int)
         and joined
         and not clause.mentions
         and not any(c.mentions for c in clauses[position + 1 :])
+    )
+
+
+def _each_plot(clause: Clause) -> bool:
+    """Whether ``clause`` is only "each plot", "every field": a heading for what follows."""
+    words = clause.items
+    return (
+        1 <= len(words) <= 2
+        and words[0].role == "all"
+        and words[0].norm in ("each", "every")
+        and all(i.role in ("filler", "plot") for i in words[1:])
     )
 
 
@@ -574,7 +587,12 @@ def _past_a_reference(
         # two. Heads formed and ready for harvest.": a look of its own sentence after a
         # list whose member is named again to place it is the whole list's
         return listed
-    subject = clauses[index - 1].mentions[-1] if clauses[index - 1].mentions else None
+    # ("Regina, directly south of the Kordia cherries, 40 by 80 m": past the empty
+    # clause a comma before the relation leaves)
+    opening = index - 1
+    while opening > 0 and not clauses[opening].items and link_norm(clauses[opening]) == ",":
+        opening -= 1
+    subject = clauses[opening].mentions[-1] if clauses[opening].mentions else None
     # "the maize field is south of the wheat, and you can see its rows run east-west":
     # "its" is the sentence's subject, not the field it is placed against
     possessive = any(i.norm in ("its", "their") for i in clauses[position].items)

@@ -43,6 +43,7 @@ def predicate_of_the_placed(clauses: Sequence[Clause]) -> None:
     for clause in clauses[1:]:
         link = clause.link
         previous = clauses[clause.index - 1]
+        _predicate_after_a_pronoun(clause, previous)
         if (
             link is None
             or link.role != "relation"
@@ -69,6 +70,36 @@ def predicate_of_the_placed(clauses: Sequence[Clause]) -> None:
         gone = {id(i) for i in moved}
         placed.items = [i for i in placed.items if id(i) not in gone]
         subject.items.extend(moved)
+
+
+#: The words that point back at the field just named ("... beside it is young plants").
+_PRONOUNS = frozenset({"it", "them"})
+
+
+def _predicate_after_a_pronoun(clause: Clause, previous: Clause) -> None:
+    """'and the strawberry field beside it is only young plants', '... next door is
+    young plants': the field is placed against the one before (a pronoun, or a relation
+    without object), and what the copula then says is the field's own, not words about
+    every field's plants."""
+    words = sorted(clause.loose, key=lambda item: item.start)
+    link = clause.link
+    if link is not None and link.role == "relation" and words and words[0].norm in _PRONOUNS:
+        words = words[1:]
+    elif link is None or link.role != "trailer":
+        return
+    if (
+        clause.mentions
+        or len(previous.mentions) != 1
+        or previous.loose
+        or not previous.mentions[0].has_crop
+        or len(words) < 2
+        or words[0].norm not in _COPULAS
+    ):
+        return
+    moved = words[1:]
+    gone = {id(i) for i in moved}
+    clause.loose = [i for i in clause.loose if id(i) not in gone]
+    previous.mentions[0].items.extend(moved)
 
 
 def _first_of_its_sentence(clauses: Sequence[Clause], clause: Clause) -> bool:

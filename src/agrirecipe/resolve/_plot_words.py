@@ -76,6 +76,18 @@ def _verbs(items: Sequence[Item]) -> None:
             item.role == "plot" and to.norm == "the" and first.norm in _ALONG_A_WAY
         ):
             item.role = "filler"
+    # "the grader and a row of big boxes stand on the headland": "stand" before where
+    # something stands is a verb, not a stand of trees
+    for item, after in itertools.pairwise(items):
+        if item.role == "plot" and item.norm in _STAND and after.norm in _WHERE_IT_STANDS:
+            item.role = "filler"
+
+
+#: The plot words that are also verbs of standing, and the words of where after them.
+_STAND = frozenset({"stand", "stands"})
+_WHERE_IT_STANDS = frozenset(
+    {"on", "in", "at", "by", "beside", "near", "along", "next", "against", "under", "around"}
+)
 
 
 #: Verbs of going along a way ("walking the strip between ...").

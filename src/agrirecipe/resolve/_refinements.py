@@ -220,7 +220,7 @@ def apply_refinements(
             )
             clause.refinement = None if shared or ended else previous.refinement
             continue
-        first = next((i for i in clause.items if i.norm != "the"), None)
+        first = _opening(clause.items)
         share_of = counted_reference(clause.items)
         is_reference = share_of is not None or (
             first is not None
@@ -483,7 +483,14 @@ def apply_refinements(
                 clause.refinement = sub if listed or is_reference else None
                 enumerating = listed
                 continue
-        placement = link is not None and link.role == "trailer" and not clause.items
+        # ("three of wheat on the north side of the farm and three of maize ...": a side
+        # of the farm places the member and the listing goes on)
+        placement = (
+            link is not None
+            and link.role == "trailer"
+            and not clause.mentions
+            and all(i.role in ("of", "filler", "container") for i in clause.items)
+        )
         if parent is not None and _member_plot(clause, previous, parent):
             # "Two banana blocks. Dwarf Cavendish, block 50 m by 40 m. Lady Finger, ...":
             # the member's own plot; the listing goes on after it
@@ -519,6 +526,21 @@ def apply_refinements(
             # uncounted plural is as many fields as it lists, not one more of no crop
             mention.count = len(mention.refinements)
     return top
+
+
+def _opening(items: Sequence[Item]) -> Item | None:
+    """The word a clause opens with, past "the" and past a word of its own before "one"
+    ("the untreated one full of late blight, the sprayed one clean": each "one" a member)."""
+    words = [i for i in items if i.norm != "the"]
+    if (
+        len(words) >= 2
+        and items[0].norm == "the"
+        and words[0].role in ("unknown", "filler")
+        and words[1].norm == "one"
+        and bool(words[1].data.get("reference"))
+    ):
+        return words[1]
+    return words[0] if words else None
 
 
 def _all_distinct(items: Sequence[Item]) -> bool:

@@ -91,6 +91,8 @@ def read_relations(
     read: list[tuple[str, Mention, tuple[Mention, ...]]] = []
     beyond: list[tuple[Mention, Mention, Item]] = []
     further: list[tuple[str, Mention, Mention, Item]] = []
+    # the middle of three said side by side, unless the text puts another in the middle
+    middles: list[RelationIntent] = []
     for position, subject, centre in placement_pairs(clauses, members, placed):
         link = clauses[position].link
         assert link is not None
@@ -246,28 +248,35 @@ def read_relations(
                 # east end and Williams between them": the places said, not the order named
                 continue
             if len(group) > 2:
-                # "potatoes, onions and cabbages side by side": a row, each beside the next.
+                # "potatoes, onions and cabbages side by side": a row, each beside the next
+                # (so of three, the middle one between the others)
                 for first, second in zip(group[1:], group, strict=False):
                     relations.extend(
                         field_relations("next_to", first, (second,), members, link, trace)
                     )
-                if ordered and len(group) == 3:
-                    relations.extend(
-                        field_relations(
-                            "between", group[1], (group[2], group[0]), members, link, trace
-                        )
+                if len(group) == 3:
+                    middle = field_relations(
+                        "between", group[1], (group[2], group[0]), members, link, trace
                     )
+                    (relations if ordered else middles).extend(middle)
                 continue
             if len(group) == 2:
                 # "comice and bartlett pears next to each other": the two side by side
                 relations.extend(
                     field_relations("next_to", group[0], (group[1],), members, link, trace)
                 )
+                # (for a field then said "on the far side of" one of them)
+                read.append(("next_to", group[0], (group[1],)))
                 continue
             fields = members.get(id(group[0]), []) if len(group) == 1 else []
             if len(fields) >= 2:
-                # "two different fruits side by side": the fields of one mention in a row.
-                relations += in_a_row(fields, group[0], link, trace, ordered=ordered)
+                # "two different fruits side by side": the fields of one mention in a row
+                # (in the order its members are listed: "three plots side by side:
+                # lettuce, then cabbage, then carrots" has the cabbage between)
+                listed = ordered or bool(group[0].refinements)
+                row = in_a_row(fields, group[0], link, trace, ordered=listed)
+                relations += [r for r in row if ordered or r.kind != "between"]
+                middles += [r for r in row if not ordered and r.kind == "between"]
                 continue
             if ordered:
                 warnings.append(f"ignored {link.raw!r}: it needs two or more fields before it")
@@ -428,6 +437,12 @@ def read_relations(
     related = {frozenset((r.subject, *r.objects)) for r in relations if len(r.objects) == 1}
     relations += then_chain(clauses, members, related, trace)
     relations += one_side_and_the_other(clauses, members, relations, trace)
+    said_between = [frozenset((r.subject, *r.objects)) for r in relations if r.kind == "between"]
+    relations += [
+        r
+        for r in middles
+        if not any(len(said & {r.subject, *r.objects}) >= 2 for said in said_between)
+    ]
     # "San Marzano and beef tomatoes, with cherry tomatoes in between them": two fields
     # with a third between them are not next to each other
     flanking = {frozenset(r.objects) for r in relations if r.kind == "between"}

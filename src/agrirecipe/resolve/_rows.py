@@ -377,25 +377,27 @@ def surrounded(
         return "between", distinct[-2], (distinct[-1], distinct[-1])
     middle = before[-1] if before else None
     others = [m for m in distinct if m is not middle]
+    end = next(
+        (
+            c.index
+            for c in clauses[position + 1 :]
+            if c.link is not None and c.link.norm in (".", "!", "?", ";")
+        ),
+        len(clauses),
+    )
+    later = list(
+        {id(m): m for c in clauses[position + 1 : end] for m in c.named if m is not middle}.values()
+    )
     if middle is not None and not others:
         # "california wonder in the middle, cayenne on one side, padron on the other": the
         # two named after it in its sentence
-        end = next(
-            (
-                c.index
-                for c in clauses[position + 1 :]
-                if c.link is not None and c.link.norm in (".", "!", "?", ";")
-            ),
-            len(clauses),
-        )
-        others = list(
-            {
-                id(m): m for c in clauses[position + 1 : end] for m in c.named if m is not middle
-            }.values()
-        )
-        if len(others) == 2:
-            return "between", middle, (others[0], others[1])
+        if len(later) == 2:
+            return "between", middle, (later[0], later[1])
         return None
+    if middle is not None and len(others) == 1 and (others[0].count or 1) < 2 and later:
+        # "Bintje at the front, Russet in the middle and Agria at the back": one named
+        # before the middle, one after it
+        return "between", middle, (others[0], later[0])
     if middle is not None and len(others) == 1 and (others[0].count or 1) == 2:
         return "between", middle, (others[0], others[0])  # "two potato fields and ..."
     if middle is None or len(others) != 2:

@@ -35,14 +35,28 @@ def validate_intent(intent: SceneIntent, context: ResolveContext) -> None:
     # "end": "around the farmhouse: wheat to the north of it" as "wheat at the north end";
     # "first" ... "fourth": "strip 2 south of strip 1" as "the second south of the first";
     # "it": "a maize plot to its east" as "a maize plot east of it"; "of": "The western
-    # plot has ..." as "one of them, west of the other, has ..."
+    # plot has ..." as "one of them, west of the other, has ..."; "a": "the near wheat
+    # field ..., and the one beyond it" as "and a wheat field beyond it"
     expanded = expand_casual(intent.prompt)
     prompt_words = (
         _words(intent.prompt)
         | _words(expanded)
         | _words(spread_value_lists(expanded))
         | {"the", "in", "plants", "one", "other", "at", "rows", "long", "plot", "them"}
-        | {"two", "fields", "each", "on", "end", "first", "second", "third", "fourth", "it", "of"}
+        | {
+            "two",
+            "fields",
+            "each",
+            "on",
+            "end",
+            "first",
+            "second",
+            "third",
+            "fourth",
+            "it",
+            "of",
+            "a",
+        }
     )
     for index, field in enumerate(intent.fields):
         path = f"fields[{index}]"

@@ -66,6 +66,7 @@ from agrirecipe.resolve._looks import (
     crops_of,
     negated_looks,
     past_and_other_readiness,
+    ripe_colours,
     ripening_colours,
     weather_on_plants,
 )
@@ -91,6 +92,7 @@ def read_words(items: Sequence[Item], text: str) -> None:
     _measured_differences(items)
     _counted_kinds(items)
     ripening_colours(items)
+    ripe_colours(items)
     _variety_before_its_plot(items)
     _short_names_of_named_varieties(items)
     past_and_other_readiness(items)
