@@ -31,6 +31,7 @@ __all__ = [
     "listed_after",
     "listing",
     "own_mentions",
+    "relation_mentions",
     "says",
 ]
 
@@ -366,3 +367,83 @@ def listing(link: Item | None) -> bool:
     if link is None:
         return False
     return link.role == "conjunction" or (link.role == "separator" and link.norm in (",", ";", "&"))
+
+
+def relation_mentions(
+    link: Item,
+    before: Sequence[Mention],
+    after: Sequence[Mention],
+    *,
+    pronoun: bool,
+    attached: bool = False,
+) -> tuple[Any, Mention, tuple[Mention, ...]] | None:
+    """The kind, subject and objects a relation word links among the mentions named
+    ``before`` and ``after`` it (``pronoun``: said as "north of them"; ``attached``: the
+    word ends the clause of the field it places), or None."""
+    kind = link.data.get("value", "between") if link.role != "between" else "between"
+    if kind == "flanks":
+        # "Durondeau and Williams pears on either side of a Jonagold block"
+        if not after:
+            return None
+        if pronoun and before:
+            # "the Cabernet, and either side of it Chardonnay ... and Pinot Nero ...": it
+            # lies between the two named after
+            return ("between", before[-1], (after[0], after[1])) if len(after) >= 2 else None
+        if before and (before[-1].count or 1) >= 2:
+            return "between", after[0], (before[-1], before[-1])
+        if len(before) >= 2:
+            return "between", after[0], (before[-2], before[-1])
+        return None
+    if pronoun and not after and len(before) >= 2:
+        # "a couple of wheat fields and a maize field in between them".
+        if kind == "between" and (before[-2].count or 1) >= 2:
+            return kind, before[-1], (before[-2], before[-2])
+        if kind != "between":
+            return kind, before[-1], (before[-2],)
+    if pronoun and not after and len(before) >= 3 and kind == "between":
+        # "wheat, maize and a strawberry patch between them".
+        return kind, before[-1], (before[-3], before[-2])
+    if pronoun and before and after:
+        # "two potato fields and between them / north of them a wheat field": the
+        # pronoun is the object, named before; the subject comes after.
+        objects = (before[-1],) if kind != "between" else (before[-1], before[-1])
+        if kind != "between" or (before[-1].count or 1) >= 2:
+            return kind, after[0], objects
+        if len(before) >= 2:
+            # "wheat in the north, maize in the south, and in between them a strip of
+            # strawberries": the two fields named last
+            return kind, after[0], (before[-2], before[-1])
+    if link.role == "between":
+        # each once ("carrots (nantes) & cabbage (savoy)" names each twice)
+        after = list({id(m): m for m in after}.values())
+        if after and before and (after[0].count or 1) >= 2:
+            return "between", before[-1], (after[0], after[0])
+        if len(after) == 1 and len(before) >= 2 and attached:
+            # "cabbages nearest to me, a strip of onions in between, and a field of
+            # sweetcorn up the hill": between the fields named either side of it
+            return "between", before[-1], (before[-2], after[0])
+        if len(after) < 2:
+            return None
+        if before:
+            return "between", before[-1], (after[0], after[1])
+        if len(after) >= 3:
+            return "between", after[2], (after[0], after[1])
+        return None
+    if link.role == "trailer":
+        if len(before) >= 2 and before[-1].clause == before[-2].clause:
+            return kind, before[-1], (before[-2],)
+        if before and after and attached:
+            return kind, before[-1], (after[0],)
+        if before and after:
+            return kind, after[0], (before[-1],)
+        if len(before) >= 2:
+            return kind, before[-1], (before[-2],)
+        return None
+    if before and after:
+        return kind, before[-1], (after[0],)
+    if len(after) >= 2:
+        return kind, after[1], (after[0],)
+    if len(before) >= 2:
+        # "... with an onion field to the north of them": the object was named before.
+        return kind, before[-1], (before[-2],)
+    return None

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import itertools
 from collections.abc import Sequence
-from typing import Any, get_args
+from typing import get_args
 
 from agrirecipe.recipe import RelationKind
 from agrirecipe.resolve._decompose import Clause, Mention
@@ -29,12 +29,11 @@ from agrirecipe.resolve._links import (
     OPPOSITE,
     PRONOUNS,
     THE_TWO,
-    coordinated,
     field_relations,
     last_named,
     link_norm,
-    listed_after,
     own_mentions,
+    relation_mentions,
 )
 from agrirecipe.resolve._placements import (
     a_distance,
@@ -47,14 +46,18 @@ from agrirecipe.resolve._placements import (
     placements,
 )
 from agrirecipe.resolve._rows import (
+    FURTHER,
+    OTHER_SIDE,
     TOWARDS,
     adjacent_rows,
     directed_row,
-    in_a_row,
+    furthest,
     listed_middle,
+    on_the_other_side,
     one_and_the_other,
     one_side_and_the_other,
     ordinal_pair,
+    side_by_side,
     surrounded,
     then_chain,
 )
@@ -97,7 +100,7 @@ def read_relations(
         link = clauses[position].link
         assert link is not None
         kind = link.data["value"]
-        if link.norm.split()[0] in _FURTHER:
+        if link.norm.split()[0] in FURTHER:
             further.append((kind, subject, centre, link))  # read once the others are
             continue
         relations.extend(field_relations(kind, subject, (centre,), members, link, trace))
@@ -240,47 +243,11 @@ def read_relations(
             # ends its clause after a subject, so it points back and the fields after
             # are not its subject ("a cherry orchard and, south of it, two fields" is)
             after = []
-        if link.role == "trailer" and link.data.get("value") in ("next_to", "row"):
-            ordered = link.data.get("value") == "row"
-            group = coordinated(clauses, position) or listed_after(clauses, position)
-            if ordered and _placed_each(clauses, group):
-                # "Three pear blocks in a line: Conference at the west end, Comice at the
-                # east end and Williams between them": the places said, not the order named
-                continue
-            if len(group) > 2:
-                # "potatoes, onions and cabbages side by side": a row, each beside the next
-                # (so of three, the middle one between the others)
-                for first, second in zip(group[1:], group, strict=False):
-                    relations.extend(
-                        field_relations("next_to", first, (second,), members, link, trace)
-                    )
-                if len(group) == 3:
-                    middle = field_relations(
-                        "between", group[1], (group[2], group[0]), members, link, trace
-                    )
-                    (relations if ordered else middles).extend(middle)
-                continue
-            if len(group) == 2:
-                # "comice and bartlett pears next to each other": the two side by side
-                relations.extend(
-                    field_relations("next_to", group[0], (group[1],), members, link, trace)
-                )
-                # (for a field then said "on the far side of" one of them)
-                read.append(("next_to", group[0], (group[1],)))
-                continue
-            fields = members.get(id(group[0]), []) if len(group) == 1 else []
-            if len(fields) >= 2:
-                # "two different fruits side by side": the fields of one mention in a row
-                # (in the order its members are listed: "three plots side by side:
-                # lettuce, then cabbage, then carrots" has the cabbage between)
-                listed = ordered or bool(group[0].refinements)
-                row = in_a_row(fields, group[0], link, trace, ordered=listed)
-                relations += [r for r in row if ordered or r.kind != "between"]
-                middles += [r for r in row if not ordered and r.kind == "between"]
-                continue
-            if ordered:
-                warnings.append(f"ignored {link.raw!r}: it needs two or more fields before it")
-                continue
+        if (row := side_by_side(clauses, position, members, trace, warnings)) is not None:
+            relations += row.relations
+            middles += row.middles
+            read += row.said
+            continue
         if link.role == "trailer" and str(link.data.get("value")) in TOWARDS:
             relations += directed_row(clauses, position, members, link, trace, warnings)
             continue
@@ -388,7 +355,7 @@ def read_relations(
             # "pears on the north block, bananas ...": a trailer right after a field
             # places that field ("..., and to the north, pears" places the one after).
             attached = _attached(clauses, position)
-            pairs = _relation_mentions(link, before, after, pronoun=pronoun, attached=attached)
+            pairs = relation_mentions(link, before, after, pronoun=pronoun, attached=attached)
         if pairs is None:
             warnings.append(f"ignored {link.raw!r}: it needs a field on each side")
             continue
@@ -415,7 +382,7 @@ def read_relations(
         if _both_said(clauses, position) and len(before) >= 2 and subject is before[-1]:
             # "a corn field and a wheat field, both north of an orchard": each of the two
             relations.extend(field_relations(kind, before[-2], objects, members, link, trace))
-        if kind == "next_to" and len(objects) == 1 and link.norm in _OTHER_SIDE:
+        if kind == "next_to" and len(objects) == 1 and link.norm in OTHER_SIDE:
             beyond.append((subject, objects[0], link))
         if (
             the_two
@@ -429,10 +396,10 @@ def read_relations(
     for kind, subject, centre, link in further:
         # "strawberries east of the carrots, and cherries further east still": past the
         # field furthest that way already, not the one it was placed against
-        objects = (_furthest(kind, subject, centre, read),)
+        objects = (furthest(kind, subject, centre, read),)
         relations.extend(field_relations(kind, subject, objects, members, link, trace))
         read.append((kind, subject, objects))
-    relations += _on_the_other_side(beyond, read, members, trace)
+    relations += on_the_other_side(beyond, read, members, trace)
     relations += across_landmarks(landmarks, members, trace)
     related = {frozenset((r.subject, *r.objects)) for r in relations if len(r.objects) == 1}
     relations += then_chain(clauses, members, related, trace)
@@ -506,37 +473,6 @@ def _before_brackets(clauses: Sequence[Clause], position: int) -> int:
     return index
 
 
-#: The words that place a field past the last one that way ("further east").
-_FURTHER = frozenset({"further", "farther", "furthest", "farthest"})
-
-
-def _furthest(
-    kind: str,
-    subject: Mention,
-    start: Mention,
-    read: Sequence[tuple[str, Mention, tuple[Mention, ...]]],
-) -> Mention:
-    """The field placed furthest ``kind`` of ``start`` by the relations read so far."""
-    seen = {id(start)}
-    current = start
-    while True:
-        past = next(
-            (
-                placed
-                for said, placed, objects in read
-                if said == kind
-                and objects == (current,)
-                and placed is not subject
-                and id(placed) not in seen
-            ),
-            None,
-        )
-        if past is None:
-            return current
-        seen.add(id(past))
-        current = past
-
-
 #: The marks that end a sentence for a placement's fields ("." and not ";").
 _FULL_STOPS = frozenset({".", "!", "?"})
 
@@ -583,131 +519,6 @@ _EVERYTHING = frozenset(
 def _of_everything(clause: Clause) -> bool:
     """Whether a relation's clause names every other field ("south of everything")."""
     return not clause.mentions and " ".join(i.norm for i in clause.items) in _EVERYTHING
-
-
-#: Words that put a field on the far side of another from a third.
-_OTHER_SIDE = frozenset(
-    {"on the other side of", "the other side of", "on the far side of", "the far side of"}
-)
-
-
-def _on_the_other_side(
-    beyond: Sequence[tuple[Mention, Mention, Item]],
-    said: Sequence[tuple[str, Mention, tuple[Mention, ...]]],
-    members: dict[int, list[int]],
-    trace: list[TraceStep],
-) -> list[RelationIntent]:
-    """'a strip of dinkel beside it (the potatoes), and on the other side of the dinkel a
-    cabbage plot': the dinkel lies between the potatoes and the cabbages."""
-    relations: list[RelationIntent] = []
-    for far, middle, link in beyond:
-        for kind, subject, objects in said:
-            pair = (subject, *objects)
-            if kind != "next_to" or len(pair) != 2 or far in pair:
-                continue
-            if middle is subject or middle is objects[0]:
-                near = objects[0] if middle is subject else subject
-                relations += field_relations("between", middle, (near, far), members, link, trace)
-                break
-    return relations
-
-
-def _relation_mentions(
-    link: Item,
-    before: Sequence[Mention],
-    after: Sequence[Mention],
-    *,
-    pronoun: bool,
-    attached: bool = False,
-) -> tuple[Any, Mention, tuple[Mention, ...]] | None:
-    kind = link.data.get("value", "between") if link.role != "between" else "between"
-    if kind == "flanks":
-        # "Durondeau and Williams pears on either side of a Jonagold block"
-        if not after:
-            return None
-        if pronoun and before:
-            # "the Cabernet, and either side of it Chardonnay ... and Pinot Nero ...": it
-            # lies between the two named after
-            return ("between", before[-1], (after[0], after[1])) if len(after) >= 2 else None
-        if before and (before[-1].count or 1) >= 2:
-            return "between", after[0], (before[-1], before[-1])
-        if len(before) >= 2:
-            return "between", after[0], (before[-2], before[-1])
-        return None
-    if pronoun and not after and len(before) >= 2:
-        # "a couple of wheat fields and a maize field in between them".
-        if kind == "between" and (before[-2].count or 1) >= 2:
-            return kind, before[-1], (before[-2], before[-2])
-        if kind != "between":
-            return kind, before[-1], (before[-2],)
-    if pronoun and not after and len(before) >= 3 and kind == "between":
-        # "wheat, maize and a strawberry patch between them".
-        return kind, before[-1], (before[-3], before[-2])
-    if pronoun and before and after:
-        # "two potato fields and between them / north of them a wheat field": the
-        # pronoun is the object, named before; the subject comes after.
-        objects = (before[-1],) if kind != "between" else (before[-1], before[-1])
-        if kind != "between" or (before[-1].count or 1) >= 2:
-            return kind, after[0], objects
-        if len(before) >= 2:
-            # "wheat in the north, maize in the south, and in between them a strip of
-            # strawberries": the two fields named last
-            return kind, after[0], (before[-2], before[-1])
-    if link.role == "between":
-        # each once ("carrots (nantes) & cabbage (savoy)" names each twice)
-        after = list({id(m): m for m in after}.values())
-        if after and before and (after[0].count or 1) >= 2:
-            return "between", before[-1], (after[0], after[0])
-        if len(after) == 1 and len(before) >= 2 and attached:
-            # "cabbages nearest to me, a strip of onions in between, and a field of
-            # sweetcorn up the hill": between the fields named either side of it
-            return "between", before[-1], (before[-2], after[0])
-        if len(after) < 2:
-            return None
-        if before:
-            return "between", before[-1], (after[0], after[1])
-        if len(after) >= 3:
-            return "between", after[2], (after[0], after[1])
-        return None
-    if link.role == "trailer":
-        if len(before) >= 2 and before[-1].clause == before[-2].clause:
-            return kind, before[-1], (before[-2],)
-        if before and after and attached:
-            return kind, before[-1], (after[0],)
-        if before and after:
-            return kind, after[0], (before[-1],)
-        if len(before) >= 2:
-            return kind, before[-1], (before[-2],)
-        return None
-    if before and after:
-        return kind, before[-1], (after[0],)
-    if len(after) >= 2:
-        return kind, after[1], (after[0],)
-    if len(before) >= 2:
-        # "... with an onion field to the north of them": the object was named before.
-        return kind, before[-1], (before[-2],)
-    return None
-
-
-def _placed_each(clauses: Sequence[Clause], group: Sequence[Mention]) -> bool:
-    """Whether the fields of a row are placed one by one after it (by zones, or by a
-    relation said between them): then the row's order is not the order named."""
-    fields = [r for m in group for r in ({id(r): r for r in m.refinements}.values() or (m,))]
-    if len(fields) < 3:
-        return False
-    zoned = sum(1 for m in fields if any(i.role == "zone" for i in m.items))
-    first = min(m.clause for m in fields)
-    last = max(c.index for c in clauses if c.refinement in fields or c.index <= first) + 1
-    links = [c.link for c in clauses[first : last + 1] if c.link is not None]
-    related = any(link.role in ("relation", "between") for link in links)
-    # "three plots in a line: strawberries between lettuce and onions", "...: peppers in
-    # the middle, tomatoes on the west side, ...": the one between the other two orders a
-    # row of three
-    between = len(fields) == 3 and any(
-        link.role == "between" or (link.role == "trailer" and link.data.get("value") == "middle")
-        for link in links
-    )
-    return zoned >= 2 or (zoned >= 1 and related) or between
 
 
 def _both_said(clauses: Sequence[Clause], position: int) -> bool:

@@ -4,7 +4,10 @@
 from west to east: ..." (a directed row), "the first ... north of the second"
 (ordinals), "one above the other", "three plots: carrots, onions in the middle, then
 potatoes" (a listed middle), "Z with X on each side" (surrounded), "Spelt on one side
-of the hedge, ... onions on the other", "three adjacent fields". Each reader returns
+of the hedge, ... onions on the other", "three adjacent fields", "potatoes, onions and
+cabbages side by side" (a row said after a list), "cherries further east still" (past
+the furthest field that way), "on the far side of the dinkel" (the dinkel in the middle).
+Each reader returns
 the relations it finds; :func:`agrirecipe.resolve._relations.read_relations` calls them
 in its order.
 """
@@ -13,6 +16,7 @@ from __future__ import annotations
 
 import itertools
 from collections.abc import Sequence
+from dataclasses import dataclass, field
 from typing import Any
 
 from agrirecipe.resolve._decompose import Clause, Mention
@@ -24,20 +28,27 @@ from agrirecipe.resolve._links import (
     fields_of,
     following_list,
     link_norm,
+    listed_after,
     listing,
     says,
 )
 from agrirecipe.resolve._measures import sentence_start
 
 __all__ = [
+    "FURTHER",
+    "OTHER_SIDE",
     "TOWARDS",
+    "Row",
     "adjacent_rows",
     "directed_row",
+    "furthest",
     "in_a_row",
     "listed_middle",
+    "on_the_other_side",
     "one_and_the_other",
     "one_side_and_the_other",
     "ordinal_pair",
+    "side_by_side",
     "surrounded",
     "then_chain",
 ]
@@ -327,6 +338,91 @@ def adjacent_rows(
     return rows
 
 
+@dataclass
+class Row:
+    """The relations of fields said side by side or in a row."""
+
+    relations: list[RelationIntent]
+    #: The middle of three said side by side (kept unless the text puts another there).
+    middles: list[RelationIntent] = field(default_factory=list)
+    #: The two fields said next to each other (for one said "on the far side of" one).
+    said: list[tuple[str, Mention, tuple[Mention, ...]]] = field(default_factory=list)
+
+
+def side_by_side(
+    clauses: Sequence[Clause],
+    position: int,
+    members: dict[int, list[int]],
+    trace: list[TraceStep],
+    warnings: list[str],
+) -> Row | None:
+    """'potatoes, onions and cabbages side by side', 'three plots in a line: ...',
+    'comice and bartlett pears next to each other': the fields the row word at
+    ``position`` follows (or the list after its colon), each beside the next; None when
+    the clause's word is no such row word."""
+    link = clauses[position].link
+    if link is None or link.role != "trailer" or link.data.get("value") not in ("next_to", "row"):
+        return None
+    ordered = link.data.get("value") == "row"
+    group = coordinated(clauses, position) or listed_after(clauses, position)
+    if ordered and _placed_each(clauses, group):
+        # "Three pear blocks in a line: Conference at the west end, Comice at the east end
+        # and Williams between them": the places said, not the order named
+        return Row([])
+    if len(group) > 2:
+        # "potatoes, onions and cabbages side by side": a row, each beside the next (so of
+        # three, the middle one between the others)
+        row = Row([])
+        for first, second in zip(group[1:], group, strict=False):
+            row.relations += field_relations("next_to", first, (second,), members, link, trace)
+        if len(group) == 3:
+            middle = field_relations(
+                "between", group[1], (group[2], group[0]), members, link, trace
+            )
+            (row.relations if ordered else row.middles).extend(middle)
+        return row
+    if len(group) == 2:
+        # "comice and bartlett pears next to each other": the two side by side
+        pair = field_relations("next_to", group[0], (group[1],), members, link, trace)
+        return Row(pair, said=[("next_to", group[0], (group[1],))])
+    fields = members.get(id(group[0]), []) if len(group) == 1 else []
+    if len(fields) >= 2:
+        # "two different fruits side by side": the fields of one mention in a row (in the
+        # order its members are listed: "three plots side by side: lettuce, then cabbage,
+        # then carrots" has the cabbage between)
+        listed = ordered or bool(group[0].refinements)
+        found = in_a_row(fields, group[0], link, trace, ordered=listed)
+        return Row(
+            [r for r in found if ordered or r.kind != "between"],
+            middles=[r for r in found if not ordered and r.kind == "between"],
+        )
+    if ordered:
+        warnings.append(f"ignored {link.raw!r}: it needs two or more fields before it")
+        return Row([])
+    return None
+
+
+def _placed_each(clauses: Sequence[Clause], group: Sequence[Mention]) -> bool:
+    """Whether the fields of a row are placed one by one after it (by zones, or by a
+    relation said between them): then the row's order is not the order named."""
+    fields = [r for m in group for r in ({id(r): r for r in m.refinements}.values() or (m,))]
+    if len(fields) < 3:
+        return False
+    zoned = sum(1 for m in fields if any(i.role == "zone" for i in m.items))
+    first = min(m.clause for m in fields)
+    last = max(c.index for c in clauses if c.refinement in fields or c.index <= first) + 1
+    links = [c.link for c in clauses[first : last + 1] if c.link is not None]
+    related = any(link.role in ("relation", "between") for link in links)
+    # "three plots in a line: strawberries between lettuce and onions", "...: peppers in
+    # the middle, tomatoes on the west side, ...": the one between the other two orders a
+    # row of three
+    between = len(fields) == 3 and any(
+        link.role == "between" or (link.role == "trailer" and link.data.get("value") == "middle")
+        for link in links
+    )
+    return zoned >= 2 or (zoned >= 1 and related) or between
+
+
 def in_a_row(
     fields: Sequence[int], mention: Mention, word: Item, trace: list[TraceStep], *, ordered: bool
 ) -> list[RelationIntent]:
@@ -403,3 +499,61 @@ def surrounded(
     if middle is None or len(others) != 2:
         return None
     return "between", middle, (others[0], others[1])
+
+
+#: The words that place a field past the last one that way ("further east").
+FURTHER = frozenset({"further", "farther", "furthest", "farthest"})
+
+
+def furthest(
+    kind: str,
+    subject: Mention,
+    start: Mention,
+    read: Sequence[tuple[str, Mention, tuple[Mention, ...]]],
+) -> Mention:
+    """The field placed furthest ``kind`` of ``start`` by the relations read so far."""
+    seen = {id(start)}
+    current = start
+    while True:
+        past = next(
+            (
+                placed
+                for said, placed, objects in read
+                if said == kind
+                and objects == (current,)
+                and placed is not subject
+                and id(placed) not in seen
+            ),
+            None,
+        )
+        if past is None:
+            return current
+        seen.add(id(past))
+        current = past
+
+
+#: Words that put a field on the far side of another from a third.
+OTHER_SIDE = frozenset(
+    {"on the other side of", "the other side of", "on the far side of", "the far side of"}
+)
+
+
+def on_the_other_side(
+    beyond: Sequence[tuple[Mention, Mention, Item]],
+    said: Sequence[tuple[str, Mention, tuple[Mention, ...]]],
+    members: dict[int, list[int]],
+    trace: list[TraceStep],
+) -> list[RelationIntent]:
+    """'a strip of dinkel beside it (the potatoes), and on the other side of the dinkel a
+    cabbage plot': the dinkel lies between the potatoes and the cabbages."""
+    relations: list[RelationIntent] = []
+    for far, middle, link in beyond:
+        for kind, subject, objects in said:
+            pair = (subject, *objects)
+            if kind != "next_to" or len(pair) != 2 or far in pair:
+                continue
+            if middle is subject or middle is objects[0]:
+                near = objects[0] if middle is subject else subject
+                relations += field_relations("between", middle, (near, far), members, link, trace)
+                break
+    return relations
