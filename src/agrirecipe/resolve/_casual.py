@@ -468,6 +468,11 @@ _PLACED_THEN_ONE = re.compile(
     rf"(?P<lead>\b{_PLACING_WORDS}(?:\s+(?i:of|to))?\s+(?i:it|that)\s*,?\s+"
     r"(?P<article>(?i:another|a second))\s+)(?P<said>)(?i:one)\b"
 )
+#: Words that count more than one field: "the one ..." after them is one of those.
+_MORE_THAN_ONE = frozenset(
+    {"two", "three", "four", "five", "both", "pair", "several", "2", "3", "4", "5"}
+    | {"fields", "plots", "blocks", "orchards", "strips", "beds", "vineyards", "groves"}
+)
 #: What may stand between "the" and "one" for a field not named before ("the far one").
 _THE_NEW_ONE = frozenset({"", "far", "farther", "further", "next", "second"})
 
@@ -481,8 +486,11 @@ def _one_of_the_crop(match: re.Match[str], tag: Callable[[str], Sequence[Item]])
         # "the near wheat field is ripe, and the one beyond it is still green": "the one"
         # is another field only after a sentence naming one crop, with no word of its own
         # that could name one already said ("the other one")
-        if match.group("said").strip().lower() not in _THE_NEW_ONE or (
-            sum(1 for word in before if any(i.has("crop") for i in tag(word))) != 1
+        if (
+            match.group("said").strip().lower() not in _THE_NEW_ONE
+            or sum(1 for word in before if any(i.has("crop") for i in tag(word))) != 1
+            # (not one of fields counted: "Two potato fields - the one by the wood ...")
+            or any(word.lower().strip(",") in _MORE_THAN_ONE for word in before)
         ):
             return match.group(0)
         lead = lead[: match.start("article") - match.start()] + "a "

@@ -70,6 +70,11 @@ _SINGLE_CROP_ROW = re.compile(
 )
 
 
+#: "strawberry beds (10 of them, 1.5 m centres)": the count of a crop's beds in brackets.
+_BEDS_OF_THEM = re.compile(
+    r"\b(?P<words>[A-Za-z][\w'’-]*(?:\s+[A-Za-z][\w'’-]*)?)\s+(?P<noun>(?i:beds|ridges|rows))\s*"
+    r"\(\s*(?P<n>\d+)\s+(?i:of\s+them)\s*,?\s*"
+)
 #: "albion 8 beds side by side": a crop's beds, then where its field lies.
 _CROP_BEDS_SIDE_BY_SIDE = re.compile(
     r"\b(?P<words>[A-Za-z][\w'’-]*)\s+(?P<beds>\d+\s+(?i:beds|ridges))\s+(?=(?i:side by side)\b)"
@@ -157,7 +162,14 @@ def hoist_counted_crops(text: str, tag: Callable[[str], Sequence[Any]]) -> str:
             return match.group(0)
         return f"{match.group('words')} {match.group('beds')}, "
 
+    def beds_of_them(match: re.Match[str]) -> str:
+        # "strawberry beds (10 of them, 1.5 m centres)": the crop in that many beds
+        if not names_a_crop(match.group("words")):
+            return match.group(0)
+        return f"{match.group('words')} in {match.group('n')} {match.group('noun')} ("
+
     text = _CONVERTED.sub(r"\g<measure>", text)
+    text = _BEDS_OF_THEM.sub(beds_of_them, text)
     text = _CROP_BEDS_SIDE_BY_SIDE.sub(beds_then_placed, text)
     text = _ELLIPTIC_WITH.sub(same_unit_with, text)
     for _ in range(8):  # ("120 Gala trees, 80 Fuji and 60 Jonagold": each in turn)

@@ -101,6 +101,7 @@ def _file() -> dict[str, Any]:
 class _Tables:
     patterns: tuple[_Pattern, ...]
     number_words: dict[str, float]
+    fractions: dict[str, float]
     units: dict[str, float]
     areas: dict[str, float]
     directions: dict[str, float]
@@ -119,19 +120,22 @@ def _tables() -> _Tables:
     data = _file()
     words = data["words"]
     number_words: dict[str, float] = {str(k): float(v) for k, v in words["number_words"].items()}
+    # ("24 rows a quarter mile long": a fraction only before a unit of length)
+    fractions: dict[str, float] = {str(k): float(v) for k, v in words["length_fractions"].items()}
     units: dict[str, float] = {str(k): float(v) for k, v in vocabulary()["length_units"].items()}
     areas: dict[str, float] = {str(k): float(v) for k, v in data["density_units"].items()}
     directions: dict[str, float] = {str(k): float(v) for k, v in words["directions"].items()}
     # a minus sign may stand before the number ("a row spacing of -75 cm": refused)
     number = rf"(?:[-−–] )?(?P<n>\d+(?:\.\d+)?|{_alternatives(number_words)})"
     number2 = number.replace("?P<n>", "?P<n2>")
+    length = rf"(?:[-−–] )?(?P<n>\d+(?:\.\d+)?|{_alternatives({**number_words, **fractions})})"
     # "about 6 m", "roughly 18 inches": a length said roughly is still that length
     about = rf"(?:(?:{_alternatives(words['approximately'])}) )?"
     fill = {
         "{N2}": number2,
         "{LEN2}": rf"{about}{number2} ?(?P<unit2>{_alternatives(units)})(?! 2\b)",
         "{N}": number,
-        "{LEN}": rf"{about}{number} ?(?P<unit>{_alternatives(units)})(?! 2\b)",
+        "{LEN}": rf"{about}{length} ?(?P<unit>{_alternatives(units)})(?! 2\b)",
         "{ROWS}": _alternatives(words["rows"]),
         "{ROWMOD}": _alternatives(words["row_modifiers"]),
         "{PLANTS}": _alternatives(words["plants"]),
@@ -174,6 +178,7 @@ def _tables() -> _Tables:
     return _Tables(
         patterns=tuple(patterns),
         number_words=number_words,
+        fractions=fractions,
         units=units,
         areas=areas,
         directions=directions,
@@ -461,7 +466,7 @@ def _value(pattern: _Pattern, groups: dict[str, str | None], tables: _Tables) ->
         return a % 180.0
     if groups.get("twin") is not None:
         return 2.0
-    value = _number(str(groups["n"]), tables.number_words) * pattern.scale
+    value = _number(str(groups["n"]), {**tables.number_words, **tables.fractions}) * pattern.scale
     if groups.get("unit") is not None:
         metres = value * tables.units[str(groups["unit"])]
         if pattern.max_m is not None and metres > pattern.max_m:

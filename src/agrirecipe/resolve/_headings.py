@@ -327,6 +327,8 @@ def _joint_headings(
             end += 1
         before = [m for m in mentions if start <= m.clause < colon.index]
         after = [m for m in mentions if colon.index <= m.clause < end]
+        if colon.link.norm == ":" and _varieties_named_again(before, after):
+            return list(before)
         if len(before) < 2 or not all(
             kinds(m) and not names_a_variety(m) and not m.refinements for m in before
         ):
@@ -355,6 +357,19 @@ def _joint_headings(
             ):
                 return list(before)
     return []
+
+
+def _varieties_named_again(before: Sequence[Mention], after: Sequence[Mention]) -> bool:
+    """'Gros Michel and Cavendish plots for a wilt survey: 600 Gros Michel plants showing
+    wilt, and 600 healthy Cavendish plants ...': varieties named before a colon, each named
+    once again after it (and nothing else), head that list."""
+    if len(before) < 2 or len(after) != len(before) or any(m.refinements for m in after):
+        return False
+    if not all(names_a_variety(m) and m.count is None for m in before):
+        return False
+    return all(
+        sum(1 for m in after if same_variety(heading, m)) == 1 for heading in before
+    ) and all(any(same_variety(heading, m) for heading in before) for m in after)
 
 
 def _ends_sentence(clause: Clause) -> bool:
@@ -427,7 +442,11 @@ def drop_titles(
         or (title.count is not None and not (farm and title.count == 1))
         or title.refinements
         or names_a_variety(title)
-        or not (strong_crops(field) == crops or _lists_only(field, crops))
+        or not (
+            strong_crops(field) == crops
+            or _lists_only(field, crops)
+            or (farm and _holds(field, crops))
+        )
         or any(strong_crops(m) & crops for m in mentions[2:])
     ):
         return mentions
@@ -462,9 +481,28 @@ def drop_titles(
     if not after_end or after_end[0].mentions[0] is not field:
         return mentions
     field.items.extend(i for i in title.items if i not in title.heads)
+    if farm and _holds(field, crops):
+        # "It's a citrus farm really: one big grove on the hillside": the farm's crop
+        names = [h for h in title.heads if h.role == "head"]
+        field.heads.extend(names)
+        field.items.extend(names)
+        field.interpretations = title.interpretations
     for clause in clauses:
         clause.mentions = [field if m is title else m for m in clause.mentions]
     return mentions[1:]
+
+
+def _holds(field: Mention, crops: set[str]) -> bool:
+    """Whether ``field`` is one plot of no crop that can hold ``crops`` ("one big grove")."""
+    options = set(field.plot["options"]) if field.plot is not None else set()
+    return (
+        not field.has_crop
+        and field.category is None
+        and field.plot is not None
+        and (field.count or 1) == 1
+        and not field.refinements
+        and (not options or crops <= options)
+    )
 
 
 def _lists_only(heading: Mention, crops: set[str]) -> bool:

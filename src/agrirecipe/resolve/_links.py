@@ -430,6 +430,9 @@ def relation_mentions(
             return "between", after[2], (after[0], after[1])
         return None
     if link.role == "trailer":
+        # ("cherries to the north, the cherry trees netted ...": a field named again after
+        # the trailer is no field it places)
+        after = [m for m in after if not any(m is b for b in before)]
         if len(before) >= 2 and before[-1].clause == before[-2].clause:
             return kind, before[-1], (before[-2],)
         if before and after and attached:

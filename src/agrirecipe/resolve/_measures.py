@@ -330,15 +330,33 @@ def _of_each_row(measures: Sequence[Item], said_each: Sequence[Item]) -> bool:
     """'Tomato rows - 20 rows, 50 m each, 1.5 m between rows': a length said "each" after
     the field's own count of rows is each row's, not each field's."""
     own = [i for i in measures if all(i is not e for e in said_each)]
+    if all(
+        _measure_keys([i]) == {"rows", "row_length_m"} and _each_before_a_length(i)
+        for i in said_each
+    ):
+        return True  # "40 rows, each 500 ft long": the count in the same measure
     return all(_measure_keys([i]) <= {"row_length_m"} for i in said_each) and "rows" in (
         _measure_keys(own)
     )
 
 
+def _each_before_a_length(item: Item) -> bool:
+    """Whether "each" in the measure stands right before a number ("rows, each 500 ft")."""
+    words = [t.norm for t in item.tokens]
+    return any(a == "each" and b[:1].isdigit() for a, b in itertools.pairwise(words))
+
+
 def each_row_long(clauses: Sequence[Clause], position: int, item: Item) -> bool:
     """'20 rows, 50 m each': a row length said "each" right after a count of rows is the
     length of each of those rows, not a measure of each field."""
-    if _measure_keys([item]) != {"row_length_m"} or not any(t.norm == "each" for t in item.tokens):
+    keys = _measure_keys([item])
+    if "row_length_m" not in keys or not any(t.norm == "each" for t in item.tokens):
+        return False
+    if keys == {"rows", "row_length_m"}:
+        # "40 rows, each 500 ft long": "each" before the length, in the same measure (not
+        # "8 rows of 60 m each", each field's)
+        return _each_before_a_length(item)
+    if keys != {"row_length_m"}:
         return False
     said = [*clauses[position].items]
     if position:

@@ -97,7 +97,9 @@ def _years_times_and_parts(items: Sequence[Item]) -> None:
             item.data["year"] = True
         # "won't be ready until November", "picked by October": a time to come, not when
         # the scene is
-        if item.role == "month" and word_before in _BEFORE_A_TIME_TO_COME:
+        # (not a look reached by then: "both in ear by mid-June" is how they are in June)
+        reached = word_before == "by" and index >= 2 and items[index - 2].role in ("stage", "cue")
+        if item.role == "month" and word_before in _BEFORE_A_TIME_TO_COME and not reached:
             item.role = "filler"
             item.data["time"] = True
         # "2 wheat fields w/ a combine in 1 of em": one of the fields named, no count

@@ -41,8 +41,9 @@ step  pass                                        module (data)
       descriptions of plants named;               ``_descriptions``,
       back-references (and where a mention is     ``_coreference``,
       placed); plots said with a field;           ``_placed_members``,
-      list headings; summaries of fields          ``_appositives``, ``_headings``,
-                                                  ``_summaries``
+      list headings and comparison headings;      ``_appositives``, ``_headings``,
+      summaries of fields; plots counted after    ``_comparisons``, ``_summaries``,
+      the only crop named                         ``_plots_of_the_crop``
 11    head-less clauses' words to their fields    ``_loose``,
       (which fields a measure is said of)         ``_measures``
 12    fields of each mention, their attributes    ``_fields``
@@ -62,6 +63,7 @@ from collections.abc import Callable, Iterable, Sequence
 from agrirecipe._errors import PromptError, UnknownCropError
 from agrirecipe.resolve._appositives import merge_appositive_plots
 from agrirecipe.resolve._casual import count_said_after_crop, end_reciprocals, expand_casual
+from agrirecipe.resolve._comparisons import drop_compared_headings
 from agrirecipe.resolve._coreference import merge_coreferences
 from agrirecipe.resolve._counted_crops import hoist_counted_crops
 from agrirecipe.resolve._decompose import (
@@ -127,6 +129,7 @@ from agrirecipe.resolve._neighbours import (
     place_sides,
 )
 from agrirecipe.resolve._placements import predicate_of_the_placed
+from agrirecipe.resolve._plots_of_the_crop import count_the_crop
 from agrirecipe.resolve._purposes import purpose_diseases
 from agrirecipe.resolve._refinements import apply_refinements
 from agrirecipe.resolve._relations import read_relations
@@ -298,6 +301,7 @@ class PromptReader(FieldReading):
         mentions = drop_forward_summaries(
             clauses, drop_joint_headings(clauses, mentions, self.crop_categories)
         )
+        mentions = drop_compared_headings(clauses, mentions)
         mentions = merge_coreferences(clauses, mentions, builder)
         mentions = merge_appositive_plots(clauses, mentions)
         mentions = drop_list_headings(clauses, mentions, self.crop_categories)
@@ -308,6 +312,7 @@ class PromptReader(FieldReading):
         mentions = drop_announced_plots(clauses, drop_restated_counts(clauses, mentions))
         mentions = spread_counted_totals(clauses, drop_single_plot_counts(clauses, mentions))
         mentions = lend_heading_crop(clauses, name_counted_plots(clauses, mentions))
+        mentions = count_the_crop(clauses, mentions)
         apply_each_side(clauses)
         for clause in clauses:
             # "... and there's a duck pond in the middle": the zone of scenery, not a field

@@ -357,7 +357,13 @@ def apply_refinements(
             ):
                 # "Lower terraces: Chardonnay. Upper terraces: Riesling.": a new heading
                 lists_members = False
-            named_before = [m for c in clauses[: parent.clause] for m in c.mentions]
+            # (not the heading the plots follow: "Bell pepper vs jalapeño comparison: two
+            # plots .... California Wonder on the west plot, Jalapeños on the east one")
+            named_before = (
+                [m for c in clauses[: parent.clause] for m in c.mentions]
+                if link_norm(clauses[parent.clause]) != ":"
+                else []
+            )
             if clause.mentions and (
                 (
                     any(

@@ -365,6 +365,12 @@ def side_by_side(
         return None
     ordered = link.data.get("value") == "row"
     group = coordinated(clauses, position) or listed_after(clauses, position)
+    if len(group) == 1 and not members.get(id(group[0])):
+        # "cabbage on the left, tomatoes on the right. The two fields touch at the fence":
+        # the fields a summary said again (dropped as no field of its own) stand for it
+        named = list({id(m): m for c in clauses[: group[0].clause] for m in c.mentions}.values())
+        if len(named) == (group[0].count or 0):
+            group = named
     if ordered and _placed_each(clauses, group):
         # "Three pear blocks in a line: Conference at the west end, Comice at the east end
         # and Williams between them": the places said, not the order named

@@ -113,7 +113,16 @@ def apply_plural_counts(clauses: Sequence[Clause], plural_count: int) -> None:
             if definite_before_head(clause, mention):
                 continue  # "a quick rundown of the plots. Plot 1: ..."
             link = clause.link if index == 0 else None
-            if link is not None and link.role == "separator":
+            # (after a colon that no field heads, a plural still counts: "a mixed farm
+            # please: some veg fields, an orchard and a wheat field")
+            opens_a_list = (
+                link is not None
+                and link.norm == ":"
+                and not any(c.mentions for c in clauses[:position])
+                and first is not None
+                and first.norm in ("some", "a few", "several")
+            )
+            if link is not None and link.role == "separator" and not opens_a_list:
                 continue
             neighbours = []
             if index == 0 and listing(link) and position > 0:

@@ -202,20 +202,32 @@ def spread_counted_totals(clauses: Sequence[Clause], mentions: list[Mention]) ->
             or total.plot is None
             or total.count is None
             or total.refinements
-            or not any(
-                i.norm in _TOTAL or any(t.norm in _TOTAL for t in i.tokens) for i in total.items
+            or not (
+                any(
+                    i.norm in _TOTAL or any(t.norm in _TOTAL for t in i.tokens) for i in total.items
+                )
+                # ("4 fields in all": "in" and "all" read apart)
+                or "in all" in " ".join(i.norm for i in total.items)
             )
         ):
             continue
         named = [m for m in mentions if m is not total and m.clause < total.clause]
         if (
             len(named) < 2
-            or any(m.count is not None or m.refinements for m in named)
-            or not all(m.has_crop or m.category is not None for m in named)
+            # (a plural's count only implied, "some fruit trees and some veggies, 4 or 5
+            # fields total", is no count said)
+            or any((m.count is not None and not m.implied_count) or m.refinements for m in named)
+            # (or plots of a kind: "some fruit trees")
+            or not all(
+                m.has_crop or m.category is not None or (m.plot is not None and m.plot["options"])
+                for m in named
+            )
             or total.count < len(named)
             or len(named) != len(mentions) - 1
         ):
             continue
+        for member in named:
+            member.count, member.implied_count = None, False
         for extra in range(total.count - len(named)):
             member = named[extra % len(named)]
             member.count = (member.count or 1) + 1

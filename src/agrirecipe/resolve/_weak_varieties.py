@@ -58,11 +58,28 @@ def promote_weak_varieties(clauses: Sequence[Clause], builder: MentionBuilder) -
             continue
         neighbours: list[Mention] = []
         following = clauses[position + 1] if position + 1 < len(clauses) else None
+        # ("albion, sonata & centenary strawberys": past names of the list still weak)
+        ahead = position + 1
+        while (
+            ahead + 1 < len(clauses)
+            and clauses[ahead].link is not None
+            and listing(clauses[ahead].link)
+            and not clauses[ahead].mentions
+            and bool(clauses[ahead].loose)
+            and all(i.role == "weak_variety" for i in clauses[ahead].loose)
+        ):
+            ahead += 1
+        if ahead > position + 1:
+            following = clauses[ahead]
         if (
             following is not None
             and following.link is not None
-            # "navel and valencia oranges"; "Sonata in 10 beds north of Malling Centenary"
-            and following.link.role in ("conjunction", "relation", "between")
+            # "navel and valencia oranges"; "Sonata in 10 beds north of Malling Centenary";
+            # "albion, sonata & centenary strawberys" (the first of a list)
+            and (
+                following.link.role in ("conjunction", "relation", "between")
+                or following.link.norm == ","
+            )
             and following.mentions
         ):
             neighbours.append(following.mentions[0])

@@ -65,7 +65,14 @@ def _patterns() -> tuple[tuple[str, re.Pattern[str]], ...]:
     """(zone, pattern) for each zone, after ("order", pattern) for the words that are not."""
     data: dict[str, Any] = yaml.safe_load((DATA_DIR / "zones.yaml").read_text("utf-8"))
     orders = "|".join(re.escape(str(p)) for p in sorted(data["orders"], key=len, reverse=True))
-    patterns = [("order", re.compile(rf"(?<![a-z0-9])(?:{orders})(?![a-z0-9])"))]
+    # ("On the left of the picture is a field of cabbage": a side of the photo, a zone)
+    frames = "|".join(re.escape(str(w)) for w in data["frames"])
+    patterns = [
+        (
+            "order",
+            re.compile(rf"(?<![a-z0-9])(?:{orders})(?![a-z0-9])(?! the (?:{frames})(?![a-z0-9]))"),
+        )
+    ]
     for zone in _ZONES:
         phrases = sorted((str(p) for p in data[zone]), key=len, reverse=True)
         alternation = "|".join(re.escape(p) for p in phrases)
@@ -250,15 +257,21 @@ def zone_relations(fields: Sequence[Sequence[Item]]) -> list[RelationIntent]:
         return [RelationIntent(kind="between", subject=middle, objects=others)]
     if len(set(zones.values())) < 2:
         return []
-    _fill_middle(zones)
+    runs = _fill_middle(zones)
     used = {axis for z in zones.values() if z != "middle" for axis in _PLACES[z]}
     middle_axis: str = (
         next(axis for axis in ("ns", "ew") if axis in used) if used - {"depth"} else "depth"
     )
-    places: dict[int, dict[str, int]] = {
-        index: {middle_axis: 1} if zone == "middle" else _PLACES[zone]
+    places: dict[int, dict[str, float]] = {
+        index: {middle_axis: 1} if zone == "middle" else dict(_PLACES[zone])
         for index, zone in zones.items()
     }
+    if middle_axis != "depth":
+        for run in runs:
+            # "vines at the top, then stone fruit, then roots, and grain in the bottom
+            # band": two or more fields between the ends lie in the order named
+            for step, index in enumerate(run):
+                places[index] = {middle_axis: 1 + step / len(run)}
     relations: list[RelationIntent] = []
     axes: tuple[tuple[str, RelationKind], ...] = (  # (axis, kind of its order)
         ("ns", "north_of"),
@@ -267,7 +280,7 @@ def zone_relations(fields: Sequence[Sequence[Item]]) -> list[RelationIntent]:
     )
     for axis, kind in axes:
         across = "ew" if axis == "ns" else "ns"
-        rows: dict[int, list[int]] = {}
+        rows: dict[float, list[int]] = {}
         for index, place in places.items():
             if axis in place:
                 rows.setdefault(place[axis], []).append(index)
@@ -305,7 +318,7 @@ def zone_relations(fields: Sequence[Sequence[Item]]) -> list[RelationIntent]:
     return relations
 
 
-def _across_the_others(places: dict[int, dict[str, int]]) -> list[RelationIntent]:
+def _across_the_others(places: dict[int, dict[str, float]]) -> list[RelationIntent]:
     """'vegetables on the left, fruit on the right, and cereals across the whole bottom':
     the one field placed on one axis, beside two or more placed only on the other, lies on
     its side of each of them."""
@@ -332,16 +345,20 @@ def _across_the_others(places: dict[int, dict[str, int]]) -> list[RelationIntent
 _OPPOSITE_ZONES = (("north", "south"), ("west", "east"), ("near", "far"))
 
 
-def _fill_middle(zones: dict[int, str]) -> None:
+def _fill_middle(zones: dict[int, str]) -> list[list[int]]:
     """'the orchard at the north end, then wheat, then strawberries at the south end':
     fields named between two opposite zones, with no zone of their own, are in the
-    middle (only when no field is said to be in the middle)."""
+    middle (only when no field is said to be in the middle). Returns each run of fields
+    so filled, in the order named."""
+    runs: list[list[int]] = []
     if "middle" in zones.values():
-        return
+        return runs
     for first, last in itertools.pairwise(sorted(zones)):
         if {zones[first], zones[last]} in ({*pair} for pair in _OPPOSITE_ZONES):
-            for index in range(first + 1, last):
+            runs.append(list(range(first + 1, last)))
+            for index in runs[-1]:
                 zones[index] = "middle"
+    return runs
 
 
 _HEADS = ("head", "weak_variety", "plot")
@@ -526,7 +543,7 @@ def drop_placed_neighbours(
 
 
 #: Words that say fields touch, whatever side each is on.
-_TOUCHING = ("each other", "one another", "side by side")
+_TOUCHING = ("each other", "one another", "side by side", "touch", "meet", "adjoin")
 
 
 def _said_to_touch(relation: RelationIntent) -> bool:
