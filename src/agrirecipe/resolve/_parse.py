@@ -41,9 +41,10 @@ step  pass                                        module (data)
       descriptions of plants named;               ``_descriptions``,
       back-references (and where a mention is     ``_coreference``,
       placed); plots said with a field;           ``_placed_members``,
-      list headings and comparison headings;      ``_appositives``, ``_headings``,
-      summaries of fields; plots counted after    ``_comparisons``, ``_summaries``,
-      the only crop named                         ``_plots_of_the_crop``
+      list headings, titles and comparison        ``_appositives``, ``_headings``,
+      headings; summaries of fields; plots        ``_titles``, ``_comparisons``,
+      counted after the only crop named           ``_summaries``,
+                                                  ``_plots_of_the_crop``
 11    head-less clauses' words to their fields    ``_loose``,
       (which fields a measure is said of)         ``_measures``
 12    fields of each mention, their attributes    ``_fields``
@@ -84,7 +85,6 @@ from agrirecipe.resolve._headings import (
     drop_joint_headings,
     drop_list_headings,
     drop_plural_headings,
-    drop_titles,
     fill_counted_lists,
     lend_heading_category,
     lend_heading_crop,
@@ -169,6 +169,7 @@ from agrirecipe.resolve._summaries import (
     drop_trailing_summaries,
     spread_counted_totals,
 )
+from agrirecipe.resolve._titles import drop_titles
 from agrirecipe.resolve._weak_varieties import promote_weak_varieties
 from agrirecipe.resolve._words import read_words
 from agrirecipe.resolve._zones import (
