@@ -65,6 +65,12 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
             and (
                 clause.link.norm in (",", ":", "-", "–", "—")
                 or (clause.link.norm == ";" and _said_with_a_look(clause))
+                # ("idk just lettuces?? like a small 20x20 m patch": "like" says which)
+                or (
+                    clause.link.norm in ("?", "!")
+                    and bool(clause.items)
+                    and clause.items[0].norm == "like"
+                )
             )
             # ("Lady Finger bananas: 3 m x 3 m grid, 1,111 plants/ha, a 90 x 60 m block")
             # ("Spelt in ear and just flowering, a 2 ha field": how it looks, between)
@@ -122,6 +128,16 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
             if previous.plot is None:
                 previous.plot = mention.plot
             clause.mentions = [m for m in clause.mentions if m is not mention]
+            continue
+        if (
+            clause is not None
+            and previous is not None
+            and _the_crop_said_next(clause, previous, mention)
+        ):
+            # "our only crop, a field of corn": the crop named right after says which
+            kept[-1] = mention
+            home = clauses[previous.clause]
+            home.mentions = [m for m in home.mentions if m is not previous]
             continue
         if previous is not None and _where_it_stands(clauses, previous, mention):
             # "In the field beyond the stone wall there's an old Comice pear orchard": the
@@ -260,6 +276,23 @@ def _is_its_crop(clause: Clause, previous: Mention, mention: Mention) -> bool:
         and previous.clause == clause.index - 1
         and clause.link is not None
         and clause.link.role in ("trailer", "relation")
+    )
+
+
+def _the_crop_said_next(clause: Clause, previous: Mention, mention: Mention) -> bool:
+    """Whether ``previous`` is "our only crop" (the word "crop" alone, no count) and
+    ``mention``, right after a comma or colon, names the crop."""
+    words = {h.norm for h in previous.heads}
+    return (
+        words == {"crop"}
+        and not previous.has_crop
+        and previous.category is None
+        and previous.count is None
+        and not previous.refinements
+        and mention.has_crop
+        and previous.clause == clause.index - 1
+        and clause.link is not None
+        and clause.link.norm in (",", ":", "-", "–", "—")
     )
 
 

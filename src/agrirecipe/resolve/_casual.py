@@ -556,6 +556,6 @@ def _after_a_list(match: re.Match[str], tag: Callable[[str], Sequence[Item]]) ->
     """Whether the crop a bracketed or comma'd count follows ends a list of crops (or of
     kinds: "cereals n potatoes, 2 fields")."""
     clause = re.split(r"[.;:!?]", match.string[: match.end("words")])[-1]
-    return bool(re.search(r"(?:,|\band\b|&|\+|\bor\b)", clause)) and (
+    return bool(re.search(r"(?:,|\b(?i:and)\b|&|\+|\b(?i:or)\b)", clause)) and (
         sum(1 for i in tag(clause) if i.has("crop", "variety", "category")) >= 2
     )

@@ -222,6 +222,9 @@ def merge_coreferences(
                 and not names_a_variety(mention)
                 and said_with_a_verb(clause, mention)
             )
+            # "Lettuce heads tight and ready to cut in the near field": where the look
+            # just said is, the field before's plot
+            or (clause.link.role == "conjunction" and _look_then_its_place(clause, mention))
         )
         summary = _is_summary(mention) or (
             # "the peppers between the two tomato strips": fields of a crop named before
@@ -640,6 +643,27 @@ def _of_it(mention: Mention) -> bool:
 def _last_named(clauses: Sequence[Clause], clause: Clause) -> int:
     """The index of the last clause before ``clause`` that names a field (-1 if none)."""
     return next((c.index for c in reversed(clauses[: clause.index]) if c.mentions), -1)
+
+
+def _look_then_its_place(clause: Clause, mention: Mention) -> bool:
+    """Whether the clause opens with a look and names only a singular plot of no crop
+    after "in the" or "on the" ("ready to cut in the near field")."""
+    words = sorted(clause.items, key=lambda i: i.start)
+    plots = [i for i in words if i.role == "plot"]
+    if (
+        not words
+        or words[0].role not in ("cue", "stage")
+        or mention.has_crop
+        or mention.category is not None
+        or mention.count is not None
+        or mention.plot is None
+        or mention.plot["plural"]
+        or len(plots) != 1
+    ):
+        return False
+    # ("in the near field": at most one word between "the" and the plot)
+    before = [i.norm for i in words if i.start < plots[0].start][-3:]
+    return any(a in ("in", "on") and b == "the" for a, b in itertools.pairwise(before))
 
 
 def _is_summary(mention: Mention) -> bool:

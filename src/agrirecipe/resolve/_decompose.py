@@ -25,7 +25,14 @@ from agrirecipe._errors import PromptError, UnknownCropError
 from agrirecipe.resolve._intent import SizeIntent
 from agrirecipe.resolve._lexicon import Item, Token, vocabulary
 
-__all__ = ["Clause", "Mention", "MentionBuilder", "decompose", "resolve_weak_varieties"]
+__all__ = [
+    "Clause",
+    "Mention",
+    "MentionBuilder",
+    "colour_words",
+    "decompose",
+    "resolve_weak_varieties",
+]
 
 _BOUNDARIES = ("separator", "conjunction", "relation", "between", "trailer")
 _HEADS = ("head", "plot", "other_crop")
@@ -365,7 +372,18 @@ class MentionBuilder:
                             and not any(p.norm in ("is", "are", "was", "were") for p in pending)
                         )
                     )
-                    and any(p.role == "number" and p.norm in ("a", "an") for p in pending)
+                    and any(
+                        (p.role == "number" and p.norm in ("a", "an"))
+                        # ("east of the grove the Dwarf Cavendish": a field named by "the")
+                        or (
+                            p.norm == "the"
+                            and not current.has_crop
+                            and current.count is None
+                            and _opens_definite(current)
+                            and item.has("crop", "variety")
+                        )
+                        for p in pending
+                    )
                     and not any(p.role in ("of", "size", "geometry") for p in pending)
                 )
             ):
@@ -676,7 +694,7 @@ def _names_plot(mention: Mention, item: Item) -> bool:
     ("golden field" is a colour)."""
     if mention.plot is None or mention.plot.get("options") or mention.plot.get("category"):
         return False
-    if item.norm in _colour_words():
+    if item.norm in colour_words():
         return False
     position = next((k for k, i in enumerate(mention.items) if i is item), None)
     if position is None:
@@ -689,7 +707,8 @@ def _names_plot(mention: Mention, item: Item) -> bool:
 
 
 @functools.lru_cache(maxsize=1)
-def _colour_words() -> frozenset[str]:
+def colour_words() -> frozenset[str]:
+    """The words of colours (``colour_words`` in vocabulary.yaml): "golden" is a look."""
     words = vocabulary()["colour_words"]
     return frozenset(str(w) for group in words.values() for w in group)
 

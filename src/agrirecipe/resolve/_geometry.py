@@ -559,6 +559,15 @@ def merge_geometry(matches: Sequence[GeometryMatch], text: str) -> RowSpec | Non
         words.append(match.text)
     if not values:
         return None
+    if (
+        values.get("rows") == 1
+        and "row_spacing_m" in values
+        and "in_row_spacing_m" not in values
+        and any(_bare_apart(m.text) for m in matches if m.key == "row_spacing_m")
+    ):
+        # "One row of 40 Bing cherry trees, 2.5 m apart": of one row, what stands apart
+        # is the trees in it
+        values["in_row_spacing_m"] = values.pop("row_spacing_m")
     counts = {k: int(v) for k, v in values.items() if k in _COUNTS}
     plants_per_row = counts.pop("plants_per_row", None)
     lengths = {k: v for k, v in values.items() if k not in _COUNTS}

@@ -75,6 +75,16 @@ def place_neighbouring_plots(text: str) -> str:
     by side"."""
     text = _COVERED.sub(lambda m: f"{m.group('article')}plot{m.group('of')}", text)
     text = _BETWEEN_THE_TWO.sub(r"\g<between> them", text)
+    # (after the fields named, not opening a sentence: "Between the two orchards there's a
+    # vegetable garden" asks for the orchards)
+    text = _BETWEEN_THE_TWO_PLOTS.sub(
+        lambda m: (
+            m.group(0)
+            if re.search(r"(?:^|[.!?:;])\s*$", m.string[: m.start()])
+            else f"{m.group('between')} them"
+        ),
+        text,
+    )
     text = _SEPARATES.sub(lambda m: f": {m.group('a')} next to ", text)
     text = _MEET_AT.sub("side by side", text)
     text = _ONE_AND_THE_NEXT.sub(r" and \g<b> side by side", text)
@@ -99,6 +109,13 @@ def place_neighbouring_plots(text: str) -> str:
 _BETWEEN_THE_TWO = re.compile(
     r"\b(?P<between>(?i:between|in between))\s+(?i:the two|the pair|both)"
     r"(?=\s+(?i:a|an|the|some|is|are|there|sits|lies|runs|we|you|i)\b)"
+)
+# "the Padron peppers sit between the two paddocks": the two fields named before, by the
+# plot word they share (not "between the two tomato strips", which names a crop)
+_BETWEEN_THE_TWO_PLOTS = re.compile(
+    r"\b(?P<between>(?i:between|in between))\s+(?i:the two|both(?: the)?|the pair of)\s+"
+    r"(?i:blocks|paddocks|fields|plots|strips|beds|orchards|groves|vineyards|tunnels|patches|"
+    r"parcels|sections|areas|plantations)\b"
 )
 # "A hazel hedge separates our Golden Delicious apples, ..., from a field of January King
 # cabbages": the two fields it divides touch it, side by side

@@ -474,6 +474,10 @@ class PromptReader(FieldReading):
                 item.role = "filler"
                 item.data["scenery"] = "vegetation"
                 continue
+            if following is not None and following.norm in _LIKENESSES:
+                # "long plum-shaped fruit going red": a shape, not a plum crop
+                item.role = "filler"
+                continue
             if (
                 before is not None
                 and following is not None
@@ -656,6 +660,12 @@ class PromptReader(FieldReading):
 
 
 # --- helpers ---
+
+
+#: Words after a crop's name that make it a likeness ("plum-shaped", "olive-green").
+_LIKENESSES = frozenset(
+    {"shaped", "sized", "size", "like", "coloured", "colored", "green", "shape", "skinned"}
+)
 
 
 def _word_before(items: Sequence[Item], index: int | None) -> Item | None:

@@ -259,13 +259,29 @@ def fronted_between(
         link is None
         or link.role != "between"
         or len(clause.mentions) != 1
-        or (clause.mentions[0].count or 1) != 1
+        or (clause.mentions[0].count or 1) > 2
         or position + 2 >= len(clauses)
     ):
         return None
     if position and (
-        clauses[position - 1].items or link_norm(clauses[position - 1]) not in _OPENINGS
+        clauses[position - 1].items
+        # (the prompt's opening, or after a full stop or colon)
+        or (
+            clauses[position - 1].link is not None
+            and link_norm(clauses[position - 1]) not in _OPENINGS
+        )
     ):
+        return None
+    if clause.mentions[0].count == 2:
+        # "Between my two maize fields, both Dent, I've got a strip of Sonata": the two
+        # fields counted, past words about them, then the field between them
+        pair = clause.mentions[0]
+        for later in clauses[position + 1 :]:
+            if later.refined_parent is pair or not later.mentions:
+                continue
+            if link_norm(later) not in (",", ":") or len(later.mentions) != 1:
+                return None
+            return later.mentions[0], pair, pair
         return None
     other, placed = clauses[position + 1], clauses[position + 2]
     if (

@@ -152,7 +152,10 @@ _COMPASS_MEMBER = re.compile(
     # "the north block has ...", "in the west plot the leaves are ..."
     r"\b(?P<at>(?i:in)\s+)?(?P<the>(?i:the))\s+(?P<side>(?i:north|south|east|west))(?i:ern)?\s+"
     r"(?i:block|plot|field|one|strip|vineyard|orchard|half|bed|paddock|grove|patch)\b"
-    r"(?=(?(at)\s*|\s+(?i:has|is|shows|looks|was|carries|got|has got|with)\b)(?P<rest>[^,;.]*))"
+    r"(?=(?(at)\s*|(?:\s+(?i:has|is|shows|looks|was|carries|got|has got|with)\b"
+    # ("..., the eastern one with black rot, the western one clean": a look said bare)
+    r"|\s+(?!(?i:of|to|and|in|on|at|is|are|north|south|east|west)\b)(?=[a-z])))"
+    r"(?P<rest>[^,;.]*))"
 )
 _OPPOSITE_SIDES = {"north": "south", "south": "north", "east": "west", "west": "east"}
 
@@ -290,11 +293,11 @@ _SIDE = "|".join(_WALK_SIDES)
 # order said as a walk from one side to the opposite one
 _WALKED = re.compile(
     rf"\b(?:(?i:starting|beginning|start|begin)\s+(?i:at|from)|(?i:from))\s+(?i:the)\s+"
-    rf"(?P<start>(?i:{_SIDE}))(?:\s+(?i:end|side|edge))?\b"
+    rf"(?P<start>(?i:{_SIDE}))(?:\s+(?i:end|side|edge|boundary|fence|hedge|border))?\b"
     r"(?P<between>[^:;.,!?]{0,60}?)"
     r"\s+(?:(?i:and)\s+)?(?:(?i:working|going|moving|heading|walking|coming|running)\s+)?"
     r"(?:(?i:up|down|across|over|along|back)\s+)?(?i:to|towards|toward)\s+(?i:the)\s+"
-    rf"(?P<end>(?i:{_SIDE}))(?:\s+(?i:end|side|edge))?\b"
+    rf"(?P<end>(?i:{_SIDE}))(?:\s+(?i:end|side|edge|boundary|fence|hedge|border))?\b"
 )
 
 

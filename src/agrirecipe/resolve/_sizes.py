@@ -154,10 +154,11 @@ def read_sizes(items: list[Item]) -> list[Item]:
             continue
         if (
             len(pending_side) == 1
-            and items[index].norm in ("by", "x", "and", "×")
+            and items[index].norm in ("by", "x", "and", "×", ",")
             and _match_side(items, index + 1) is not None
         ):
-            # "10 m wide by 80 m long": the word between two sides joins them
+            # "10 m wide by 80 m long", "three 12 m wide, 80 m long strips": the word
+            # between two sides joins them
             pending_items.append(items[index])
             index += 1
             continue

@@ -258,7 +258,8 @@ def count_a_list_after_it(clauses: Sequence[Clause]) -> None:
                 break
             listed.append(previous.mentions[0])
             index -= 1
-        if len(listed) == last.count and all(m.has_crop for m in listed):
+        # (or kinds: "grain + grain + veg lol 3 fields")
+        if len(listed) == last.count and all(m.has_crop or m.category is not None for m in listed):
             last.count = None
             last.implied_count = False
 

@@ -312,9 +312,16 @@ def drop_trailing_summaries(clauses: Sequence[Clause], mentions: list[Mention]) 
     fields. Its stage, health, cues, season, size and measures go to each field that
     states none of its own. Return the fields left."""
     for position, summary in enumerate(mentions):
+        # ("lollo rosso, romaine & iceberg - 3 salad plots": plots of the crop of them all)
+        crops = strong_crops(summary)
+        of_their_crop = (
+            bool(crops)
+            and not names_a_variety(summary)
+            and all(strong_crops(m) and strong_crops(m) <= crops for m in mentions[:position])
+        )
         if (
             position < 2
-            or summary.has_crop
+            or (summary.has_crop and not of_their_crop)
             or summary.category is not None
             or summary.plot is None
             or summary.refinements

@@ -89,7 +89,7 @@ def drop_titles(
         or not (
             strong_crops(field) == crops
             or _lists_only(field, crops)
-            or (farm and _holds(field, crops))
+            or ((farm or len(mentions) == 2) and _holds(field, crops))
         )
         or any(strong_crops(m) & crops for m in mentions[2:])
     ):
@@ -125,8 +125,9 @@ def drop_titles(
     if not after_end or after_end[0].mentions[0] is not field:
         return mentions
     field.items.extend(i for i in title.items if i not in title.heads)
-    if farm and _holds(field, crops):
-        # "It's a citrus farm really: one big grove on the hillside": the farm's crop
+    if (farm or len(mentions) == 2) and _holds(field, crops):
+        # "It's a citrus farm really: one big grove on the hillside", "grapse. thats it.
+        # just a vinyard in fall": the title's crop
         names = [h for h in title.heads if h.role == "head"]
         field.heads.extend(names)
         field.items.extend(names)

@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-from agrirecipe.resolve._decompose import Clause, Mention, MentionBuilder
+from agrirecipe.resolve._decompose import Clause, Mention, MentionBuilder, colour_words
 from agrirecipe.resolve._lexicon import Item, reader_words
 from agrirecipe.resolve._links import listing
 from agrirecipe.resolve._structure import (
@@ -106,7 +106,11 @@ def promote_weak_varieties(clauses: Sequence[Clause], builder: MentionBuilder) -
             at = clause.loose.index(weak[0])
             # "half acre of russets": what a size or a plot is "of" is a crop
             planted = at > 0 and clause.loose[at - 1].role == "of"
-            if len(crops) == 1 and (planted or crops <= supported):
+            if len(crops) == 1 and (
+                planted
+                or crops <= supported
+                or (in_list and _listed_among_its_kind(clauses, position, crops, builder))
+            ):
                 # ("Albion on the table-tops and Centenary in the soil beds": two names of
                 # varieties of one crop name it together)
                 _promote(clause, weak[0], weak[0].senses_of("variety")[0])
@@ -119,6 +123,26 @@ def promote_weak_varieties(clauses: Sequence[Clause], builder: MentionBuilder) -
                 # "west to east: Lollo, then Imperator carrots": a capitalised name in a
                 # list of fields is its variety even when no field beside it is its crop
                 _promote(clause, weak[0], weak[0].senses_of("variety")[0])
+
+
+def _listed_among_its_kind(
+    clauses: Sequence[Clause], position: int, crops: set[str], builder: MentionBuilder
+) -> bool:
+    """'royal gala (ripe) + conference (ripe) + kordia cherries': a name listed between
+    fields of its crop's kind (fruit between fruit) names its variety."""
+    clause = clauses[position]
+    if [i.role for i in clause.loose] != ["weak_variety"] or (
+        clause.loose[0].norm in colour_words()
+    ):
+        return False  # (only a name said alone: not "bunches golden and ready to pick")
+    kinds = {builder.crop_categories.get(c) for c in crops}
+    before = [m for c in clauses[:position] for m in c.mentions][-1:]
+    after = [m for c in clauses[position + 1 :] for m in c.mentions][:1]
+    near = before + after
+    return len(near) == 2 and all(
+        (named := strong_crops(m)) and {builder.crop_categories.get(c) for c in named} == kinds
+        for m in near
+    )
 
 
 def _the_field(clause: Clause, mention: Mention) -> bool:
