@@ -14,7 +14,7 @@ import itertools
 from collections.abc import Sequence
 
 from agrirecipe.resolve._decompose import Clause, Mention
-from agrirecipe.resolve._links import OPPOSITE, link_norm
+from agrirecipe.resolve._links import OPPOSITE, PRONOUNS, link_norm
 from agrirecipe.resolve._words import SENTENCE_MARKS
 
 __all__ = [
@@ -72,10 +72,6 @@ def predicate_of_the_placed(clauses: Sequence[Clause]) -> None:
         subject.items.extend(moved)
 
 
-#: The words that point back at the field just named ("... beside it is young plants").
-_PRONOUNS = frozenset({"it", "them"})
-
-
 def _predicate_after_a_pronoun(clause: Clause, previous: Clause) -> None:
     """'and the strawberry field beside it is only young plants', '... next door is
     young plants': the field is placed against the one before (a pronoun, or a relation
@@ -83,7 +79,7 @@ def _predicate_after_a_pronoun(clause: Clause, previous: Clause) -> None:
     every field's plants."""
     words = sorted(clause.loose, key=lambda item: item.start)
     link = clause.link
-    if link is not None and link.role == "relation" and words and words[0].norm in _PRONOUNS:
+    if link is not None and link.role == "relation" and words and words[0].norm in PRONOUNS:
         words = words[1:]
     elif link is None or link.role != "trailer":
         return
