@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import pytest
 
-from agrirecipe.resolve._decompose import Mention
 from agrirecipe.resolve._lexicon import Item, Token
 from agrirecipe.resolve._member_refs import place_said
+from agrirecipe.resolve._mentions import Mention
 
 
 def _reference(words: str) -> Item:

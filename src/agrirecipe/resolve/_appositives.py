@@ -12,9 +12,9 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._lexicon import reader_words
 from agrirecipe.resolve._links import coordinated
+from agrirecipe.resolve._mentions import Clause, Mention
 from agrirecipe.resolve._structure import descriptive_words, names_a_variety, strong_crops
 from agrirecipe.resolve._words import SENTENCE_MARKS
 

@@ -12,8 +12,8 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._links import link_norm
+from agrirecipe.resolve._mentions import Clause, Mention
 from agrirecipe.resolve._structure import same_variety, strong_crops
 
 __all__ = ["drop_compared_headings"]

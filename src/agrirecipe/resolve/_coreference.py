@@ -13,11 +13,12 @@ from __future__ import annotations
 import itertools
 from collections.abc import Sequence
 
-from agrirecipe.resolve._decompose import Clause, Mention, MentionBuilder
+from agrirecipe.resolve._decompose import MentionBuilder
 from agrirecipe.resolve._descriptions import said_with_a_verb
 from agrirecipe.resolve._lexicon import Item
 from agrirecipe.resolve._links import ARTICLES
 from agrirecipe.resolve._members import ORDINAL_WORDS
+from agrirecipe.resolve._mentions import Clause, Mention
 from agrirecipe.resolve._placed_members import (
     in_another_zone,
     on_a_side_of_it,

@@ -18,179 +18,34 @@ import functools
 import itertools
 import math
 from collections.abc import Collection, Sequence
-from dataclasses import dataclass, field
 from typing import Any
 
-from agrirecipe._errors import PromptError, UnknownCropError
-from agrirecipe.resolve._intent import SizeIntent
+from agrirecipe._errors import PromptError
+from agrirecipe.resolve._contradictions import (
+    check_adjacent_variety,
+    names_plants_of,
+    plot_conflict,
+    plot_excludes,
+)
 from agrirecipe.resolve._lexicon import Item, Token, vocabulary
+from agrirecipe.resolve._mentions import (
+    PRE_HEAD,
+    Clause,
+    Interpretation,
+    Mention,
+    combine_interpretations,
+    head_interpretations,
+    split_clauses,
+)
 
 __all__ = [
-    "Clause",
-    "Mention",
     "MentionBuilder",
     "colour_words",
     "decompose",
     "resolve_weak_varieties",
 ]
 
-_BOUNDARIES = ("separator", "conjunction", "relation", "between", "trailer")
 _HEADS = ("head", "plot", "other_crop")
-# Roles that may stand right before a head as part of its noun phrase.
-_PRE_HEAD = (
-    "number",
-    "quantity",
-    "distinct",
-    "other",
-    "stage",
-    "health",
-    "negation",
-    "weak_variety",
-    "size",
-    "geometry",
-    "cue",
-    "zone",
-    "same_size",
-    "same_spacing",
-    "filler",
-    "unknown",
-    "reference",
-    "container",
-    "season",
-)
-
-Interpretation = tuple[str, str | None, bool]  # (crop, variety or None, weak)
-
-
-@dataclass
-class Mention:
-    """A field request being read: heads, attributes, count, refinements."""
-
-    items: list[Item] = field(default_factory=list)
-    heads: list[Item] = field(default_factory=list)
-    interpretations: list[Interpretation] | None = None
-    category: str | None = None
-    plot: dict[str, Any] | None = None
-    count: int | None = None
-    #: The count is only a plural's default ("plots"): a longer list after it wins.
-    implied_count: bool = False
-    #: A vague amount ("several", "lots of"): a count only of fields, not of plants.
-    quantity: int | None = None
-    distinct: bool = False
-    #: "three different vegetables" asks for different crops; "two different apple
-    #: orchards" (a crop already named) for different fields of that crop.
-    distinct_crops: bool = False
-    other: bool = False
-    #: A contradiction in the mention's own words ("a vineyard of cabbages"), raised
-    #: unless a correction ("..., no, I mean ...") drops the mention.
-    conflict: PromptError | None = None
-    #: The phrase goes on in the next mention ("a vineyard | of cabbages").
-    continued: bool = False
-    clause: int = 0
-    refinements: list[Mention] = field(default_factory=list)
-    #: Attribute words another mention of a list lent it ("ripe wheat and maize"):
-    #: its own words said later replace them ("..., maize still green").
-    borrowed: list[Item] = field(default_factory=list)
-    rest: Mention | None = None
-    is_refinement: bool = False
-    #: A member held open before one said by its place ("The middle one has blight"):
-    #: the others said later ("the other two look fine") fill it.
-    unsaid: bool = False
-
-    @property
-    def text(self) -> str:
-        """The mention's words as typed."""
-        ordered = sorted(self.items, key=lambda item: item.start)
-        return " ".join(item.raw for item in ordered)
-
-    @property
-    def has_crop(self) -> bool:
-        """Whether a crop was named (a strong interpretation exists)."""
-        return bool(self.interpretations) and any(
-            not weak for _, _, weak in self.interpretations or ()
-        )
-
-    def attributes(self, role: str) -> list[Item]:
-        """This mention's items of one attribute role."""
-        return [item for item in self.items if item.role == role]
-
-
-@dataclass
-class Clause:
-    """Items between two boundaries, with the boundary before it."""
-
-    items: list[Item]
-    link: Item | None
-    index: int
-    mentions: list[Mention] = field(default_factory=list)
-    loose: list[Item] = field(default_factory=list)
-    refined_parent: Mention | None = None
-    #: The member this clause named once it became a refinement of ``refined_parent``.
-    refinement: Mention | None = None
-
-    @property
-    def named(self) -> list[Mention]:
-        """The mentions of the clause, or the member it refined ("imperator" in "two
-        carrot plots, imperator on the north side"), for relations to point at."""
-        return self.mentions or ([self.refinement] if self.refinement is not None else [])
-
-    @property
-    def headless(self) -> bool:
-        """No mention in this clause."""
-        return not self.mentions
-
-
-def split_clauses(items: Sequence[Item]) -> list[Clause]:
-    """Cut the items at separators, conjunctions and relation words."""
-    clauses: list[Clause] = []
-    current: list[Item] = []
-    link: Item | None = None
-    for item in items:
-        if item.role in _BOUNDARIES:
-            clauses.append(Clause(current, link, len(clauses)))
-            current, link = [], item
-        else:
-            current.append(item)
-    clauses.append(Clause(current, link, len(clauses)))
-    return clauses
-
-
-def _interpretations(item: Item) -> list[Interpretation]:
-    result: list[Interpretation] = []
-    for sense in item.senses:
-        if sense.kind == "crop":
-            result.append((str(sense.value), None, False))
-        elif sense.kind == "variety" and sense.crop is not None:
-            # a weak name promoted to its clause's head ("west to east: Lollo, then ...")
-            # names its variety wherever the field is merged
-            # ("grove outside Valencia, navel trees": "navel" made the head of its plot)
-            weak = sense.weak and not (
-                item.data.get("promoted")
-                or (item.role == "head" and not item.has("crop", "category"))
-            )
-            result.append((sense.crop, str(sense.value), weak))
-    return result
-
-
-def _combine(
-    left: list[Interpretation] | None, right: list[Interpretation]
-) -> list[Interpretation] | None:
-    """Interpretations both sides allow; None when they cannot be the same field."""
-    if left is None:
-        return list(right)
-    if not right:
-        return list(left)
-    combined: list[Interpretation] = []
-    for crop_a, variety_a, weak_a in left:
-        for crop_b, variety_b, weak_b in right:
-            if crop_a != crop_b:
-                continue
-            if variety_a and variety_b and variety_a != variety_b:
-                continue
-            entry = (crop_a, variety_a or variety_b, weak_a and weak_b)
-            if entry not in combined:
-                combined.append(entry)
-    return combined or None
 
 
 def _plots_agree(one: dict[str, Any], other: dict[str, Any], categories: dict[str, str]) -> bool:
@@ -237,14 +92,14 @@ class MentionBuilder:
             ):
                 return False  # "the vegetable garden south of the vineyard": two fields
             if mention.has_crop and spec["options"]:
-                return not _plot_excludes(spec, mention)  # "a carrot orchard": two things
+                return not plot_excludes(spec, mention)  # "a carrot orchard": two things
             # "cereals at the top, root veg at the bottom": two fields
             return (
                 mention.category is None
                 or not spec["options"]
                 or any(self.crop_categories.get(c) == mention.category for c in spec["options"])
             )
-        interpretations = _interpretations(item)
+        interpretations = head_interpretations(item)
         categories = [str(s.value) for s in item.senses_of("category")]
         if categories and not interpretations:
             if mention.category is not None and mention.category not in categories:
@@ -287,7 +142,7 @@ class MentionBuilder:
             allowed = (*mention.plot["options"], *mention.plot["tolerates"])
             if not any(c in allowed for c, _, _ in interpretations):
                 return False
-        return _combine(mention.interpretations, interpretations) is not None
+        return combine_interpretations(mention.interpretations, interpretations) is not None
 
     def add_head(self, mention: Mention, item: Item) -> None:
         """Add a head to a mention, narrowing its crop, variety, category or plot."""
@@ -295,7 +150,7 @@ class MentionBuilder:
         mention.items.append(item)
         if item.role == "plot":
             spec = item.data["value"]
-            if spec["individual"] and mention.has_crop and _plot_excludes(spec, mention):
+            if spec["individual"] and mention.has_crop and plot_excludes(spec, mention):
                 return  # "tomato vines" are tomato plants, not a vineyard
             held = mention.plot["options"] if mention.plot is not None else ()
             if held and set(held) <= set(spec["options"]):
@@ -306,7 +161,7 @@ class MentionBuilder:
         if item.role == "other_crop":
             return
         categories = [str(s.value) for s in item.senses_of("category")]
-        interpretations = _interpretations(item)
+        interpretations = head_interpretations(item)
         if categories and not interpretations:
             mention.category = categories[0]
             if mention.interpretations is not None:
@@ -320,7 +175,7 @@ class MentionBuilder:
             interpretations = [
                 i for i in interpretations if self.crop_categories.get(i[0]) == mention.category
             ] or interpretations
-        combined = _combine(mention.interpretations, interpretations)
+        combined = combine_interpretations(mention.interpretations, interpretations)
         mention.interpretations = combined if combined is not None else interpretations
 
     def read(self, clause: Clause) -> None:
@@ -334,7 +189,7 @@ class MentionBuilder:
             if current is None:
                 current = Mention(clause=clause.index)
                 self._absorb(current, pending, before_head=True)
-            elif not pending and _names_plants_of(current, item):
+            elif not pending and names_plants_of(current, item):
                 item.role = "filler"  # "tomato vines": the tomato's own vines
                 current.items.append(item)
                 continue
@@ -387,12 +242,12 @@ class MentionBuilder:
                     and not any(p.role in ("of", "size", "geometry") for p in pending)
                 )
             ):
-                current.conflict = current.conflict or _plot_conflict(current, item, pending)
+                current.conflict = current.conflict or plot_conflict(current, item, pending)
                 self._absorb(current, pending, before_head=False, counts=_counts_fields(item))
             else:
-                conflict = _plot_conflict(current, item, pending)
+                conflict = plot_conflict(current, item, pending)
                 current.continued = conflict is not None
-                _check_adjacent_variety(current, item, pending)
+                check_adjacent_variety(current, item, pending)
                 cut = _pre_head_start(pending)
                 self._absorb(current, pending[:cut], before_head=False)
                 clause.mentions.append(current)
@@ -536,108 +391,11 @@ def _pre_head_start(pending: Sequence[Item]) -> int:
     # ("a block of 2 hectares with golden acre cabbages": the block's own size)
     if cut >= 2 and pending[-1].norm == "of" and pending[-2].role == "size":
         cut -= 2
-    while cut > 0 and pending[cut - 1].role in _PRE_HEAD:
+    while cut > 0 and pending[cut - 1].role in PRE_HEAD:
         cut -= 1
         if pending[cut].role == "number" or pending[cut].norm in ("a", "an", "the"):
             break
     return cut
-
-
-def _check_adjacent_variety(mention: Mention, item: Item, pending: Sequence[Item]) -> None:
-    """'Nantes apples': a variety right before another crop's name is an unknown variety."""
-    if pending or not mention.heads or item.role != "head":
-        return
-    last = mention.heads[-1]
-    crops = [str(s.value) for s in item.senses_of("crop")]
-    varieties = [s for s in last.senses_of("variety") if not s.weak]
-    if crops and varieties and not last.senses_of("crop"):
-        owner = varieties[0].crop or ""
-        raise UnknownCropError(
-            f"{last.raw!r} is a variety of {owner}, not of {crops[0]}: "
-            f"no {crops[0]} variety is called {last.raw!r}",
-            requested=f"{last.raw} {item.raw}",
-            stage="resolve",
-            hint=f"did you mean {last.raw} {owner.lower()}s, or another {crops[0]} variety?",
-        )
-
-
-# "of"-words that put the crop inside the plot ("a vineyard of cabbages", "an orchard
-# planted with carrots"); "with" may as well mean a neighbour ("an orchard with a
-# carrot field"), "under" a cover ("an orchard under snow").
-_NOT_CONTAINMENT = frozenset({"with", "under"})
-
-
-def _plot_conflict(mention: Mention, item: Item, pending: Sequence[Item]) -> PromptError | None:
-    """'a vineyard of cabbages', 'a carrot orchard': a plot noun that cannot hold the crop.
-
-    Only a plot noun for a kind of planting (orchard, grove, vineyard, cornfield)
-    restricts its crops; a noun for the plants themselves ("tomato vines", "banana
-    trees") just names the crop's plants, and crops a noun tolerates by usage
-    ("a banana orchard") pass.
-    """
-    if item.role == "plot":
-        plot, crops = item.data["value"], _named_crops(mention.interpretations)
-        joined = not pending  # "a carrot orchard"
-    elif item.role == "head" and mention.plot is not None and not mention.has_crop:
-        plot, crops = mention.plot, _named_crops(_interpretations(item))
-        # "a vineyard of (young) cabbages"
-        joined = (
-            bool(pending)
-            and pending[0].role == "of"
-            and pending[0].norm not in _NOT_CONTAINMENT
-            and all(p.role in _PRE_HEAD for p in pending[1:])
-        )
-    else:
-        return None
-    allowed = (*plot["options"], *plot["tolerates"])
-    if not joined or plot["individual"] or not plot["options"] or not crops:
-        return None
-    if any(crop in allowed for crop in crops):
-        return None
-    word = plot["noun"] or "plot"
-    if plot["noun"] == "field":  # "cornfield", "wheatfield"
-        word = next(h for h in (item, *mention.heads) if h.role == "plot").norm.rstrip("s")
-    article = "an" if word[0] in "aeiou" else "a"
-    crop = crops[0]
-    return PromptError(
-        f"{_phrase(mention, item, pending)!r} is a contradiction: {article} {word} holds "
-        f"{_listing(plot['options'])}, and {crop} is not grown in one",
-        stage="resolve",
-        hint=f"ask for a {crop.lower()} field, or {article} {word} next to a {crop.lower()} field",
-    )
-
-
-def _names_plants_of(mention: Mention, item: Item) -> bool:
-    """'tomato vines': a crop alias that is also a word for plants, right after another crop."""
-    if item.role != "head" or not mention.has_crop:
-        return False
-    plots = [s.value for s in item.senses_of("plot") if s.value["individual"]]
-    if not plots:
-        return False
-    return _combine(mention.interpretations, _interpretations(item)) is None
-
-
-def _plot_excludes(plot: dict[str, Any], mention: Mention) -> bool:
-    allowed = (*plot["options"], *plot["tolerates"])
-    crops = _named_crops(mention.interpretations)
-    return bool(plot["options"]) and not any(crop in allowed for crop in crops)
-
-
-def _listing(names: Sequence[str]) -> str:
-    return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " or " + names[-1]
-
-
-def _named_crops(interpretations: Sequence[Interpretation] | None) -> list[str]:
-    crops: list[str] = []
-    for crop, _, weak in interpretations or ():
-        if not weak and crop not in crops:
-            crops.append(crop)
-    return crops
-
-
-def _phrase(mention: Mention, item: Item, pending: Sequence[Item]) -> str:
-    words = sorted([*mention.heads, *pending, item], key=lambda i: i.start)
-    return " ".join(w.raw for w in words)
 
 
 def resolve_weak_varieties(mention: Mention) -> None:
@@ -654,7 +412,7 @@ def resolve_weak_varieties(mention: Mention) -> None:
             if s.crop in strong_crops
         ]
         if options and mention.interpretations is not None:
-            combined = _combine(mention.interpretations, options)
+            combined = combine_interpretations(mention.interpretations, options)
             if combined:
                 mention.interpretations = combined
                 item.role = "head"
@@ -751,8 +509,3 @@ def _split_bare_lists(clauses: list[Clause]) -> list[Clause]:
             mention.clause = len(split)
             split.append(Clause(list(mention.items), link, len(split), mentions=[mention]))
     return split
-
-
-def size_of(mention: Mention) -> list[SizeIntent]:
-    """The sizes stated in a mention."""
-    return [item.data["size"] for item in mention.items if item.role == "size"]

@@ -17,7 +17,6 @@ from agrirecipe._errors import PromptError
 from agrirecipe.recipe import HealthState, Season, Stage
 from agrirecipe.resolve._attributes import health_of, single_size, single_value, values_of
 from agrirecipe.resolve._cues import apply_cues
-from agrirecipe.resolve._decompose import Mention
 from agrirecipe.resolve._geometry import row_spec
 from agrirecipe.resolve._intent import (
     Candidate,
@@ -29,6 +28,7 @@ from agrirecipe.resolve._intent import (
     TraceStep,
 )
 from agrirecipe.resolve._lexicon import Item
+from agrirecipe.resolve._mentions import Mention
 
 __all__ = [
     "ATTRIBUTE_ROLES",

@@ -12,10 +12,10 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._fields import ATTRIBUTE_ROLES
 from agrirecipe.resolve._lexicon import Item
 from agrirecipe.resolve._measures import sentence_start
+from agrirecipe.resolve._mentions import Clause, Mention
 
 __all__ = ["say_in_turn"]
 

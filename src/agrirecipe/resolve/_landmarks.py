@@ -10,10 +10,10 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._intent import RelationIntent, TraceStep
 from agrirecipe.resolve._lexicon import Item
 from agrirecipe.resolve._links import ARTICLES, OPPOSITE, field_relations
+from agrirecipe.resolve._mentions import Clause, Mention
 
 __all__ = ["across_landmarks", "held_by", "landmark_of"]
 

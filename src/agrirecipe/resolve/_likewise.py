@@ -10,8 +10,8 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from agrirecipe.resolve._decompose import Clause
 from agrirecipe.resolve._lexicon import reader_words
+from agrirecipe.resolve._mentions import Clause
 from agrirecipe.resolve._structure import attribute_of
 
 __all__ = ["share_likewise"]

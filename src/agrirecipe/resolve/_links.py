@@ -13,9 +13,9 @@ from collections.abc import Sequence
 from typing import Any, get_args
 
 from agrirecipe.recipe import RelationKind
-from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._intent import RelationIntent, TraceStep
 from agrirecipe.resolve._lexicon import Item
+from agrirecipe.resolve._mentions import Clause, Mention
 
 __all__ = [
     "ARTICLES",

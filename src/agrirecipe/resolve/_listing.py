@@ -10,8 +10,8 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._links import PRONOUNS, listing
+from agrirecipe.resolve._mentions import Clause, Mention
 from agrirecipe.resolve._structure import (
     definite_before_head,
     names_a_variety,

@@ -14,10 +14,6 @@ from __future__ import annotations
 import itertools
 from collections.abc import Sequence
 
-from agrirecipe.resolve._decompose import (
-    Clause,
-    Mention,
-)
 from agrirecipe.resolve._fields import (
     ATTRIBUTE_ROLES,
 )
@@ -39,6 +35,7 @@ from agrirecipe.resolve._measures import (
     shared_by_all,
     shared_by_all_after,
 )
+from agrirecipe.resolve._mentions import Clause, Mention
 from agrirecipe.resolve._structure import (
     attribute_of,
     describing_verbs,

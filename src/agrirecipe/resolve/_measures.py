@@ -13,12 +13,12 @@ import itertools
 import math
 from collections.abc import Iterable, Sequence
 
-from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._geometry import geometry_nouns
 from agrirecipe.resolve._intent import FieldIntent, RowSpec
 from agrirecipe.resolve._lexicon import Item, number_value
 from agrirecipe.resolve._links import listing
 from agrirecipe.resolve._member_refs import said_per_plot
+from agrirecipe.resolve._mentions import Clause, Mention
 from agrirecipe.resolve._shares import HOLDINGS
 from agrirecipe.resolve._structure import per_bed, strong_crops
 from agrirecipe.resolve._words import SENTENCE_MARKS

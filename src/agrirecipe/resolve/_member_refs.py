@@ -15,8 +15,8 @@ from __future__ import annotations
 import itertools
 from collections.abc import Sequence
 
-from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._lexicon import Item, vocabulary
+from agrirecipe.resolve._mentions import Clause, Mention
 
 __all__ = [
     "BACK_POINTERS",

@@ -12,7 +12,7 @@ from __future__ import annotations
 from collections import Counter
 from collections.abc import Sequence
 
-from agrirecipe.resolve._decompose import Clause, Mention
+from agrirecipe.resolve._mentions import Clause, Mention
 from agrirecipe.resolve._structure import strong_crops
 
 __all__ = ["name_counted_in_order"]

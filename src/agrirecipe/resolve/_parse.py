@@ -33,7 +33,9 @@ step  pass                                        module (data)
       negations, colours and looks, plot words    (vocabulary.yaml
       of no field)                                ``reader_words``)
 8     scenery-only prompts, unknown crops         ``_refusals``
-9     clauses and mentions                        ``_decompose``
+9     clauses and mentions; contradictions        ``_decompose`` (data in
+      inside a noun phrase                        ``_mentions``),
+                                                  ``_contradictions``
 10    weak variety names; mentions taken back    ``_weak_varieties``,
       (corrections, alternatives, choices left    ``_retractions``,
       open, negations); counts, shared            ``_structure``,
@@ -66,13 +68,7 @@ from agrirecipe.resolve._casual import count_said_after_crop, end_reciprocals, e
 from agrirecipe.resolve._comparisons import drop_compared_headings
 from agrirecipe.resolve._coreference import merge_coreferences
 from agrirecipe.resolve._counted_crops import hoist_counted_crops
-from agrirecipe.resolve._decompose import (
-    Clause,
-    Mention,
-    MentionBuilder,
-    decompose,
-    resolve_weak_varieties,
-)
+from agrirecipe.resolve._decompose import MentionBuilder, decompose, resolve_weak_varieties
 from agrirecipe.resolve._descriptions import dissolve_plant_parts
 from agrirecipe.resolve._fields import (
     FieldReading,
@@ -115,6 +111,7 @@ from agrirecipe.resolve._measures import (
     same_spacing,
     share_each_measures,
 )
+from agrirecipe.resolve._mentions import Clause, Mention
 from agrirecipe.resolve._named_in_order import name_counted_in_order
 from agrirecipe.resolve._neighbours import (
     name_the_placed_plot,

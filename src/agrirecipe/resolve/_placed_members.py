@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from agrirecipe.resolve._decompose import Clause, Mention
+from agrirecipe.resolve._mentions import Clause, Mention
 from agrirecipe.resolve._structure import strong_crops
 from agrirecipe.resolve._zones import zone_of
 

@@ -13,8 +13,8 @@ from __future__ import annotations
 import itertools
 from collections.abc import Sequence
 
-from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._links import OPPOSITE, PRONOUNS, link_norm
+from agrirecipe.resolve._mentions import Clause, Mention
 from agrirecipe.resolve._words import SENTENCE_MARKS
 
 __all__ = [

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from agrirecipe.resolve._decompose import Clause, Mention
+from agrirecipe.resolve._mentions import Clause, Mention
 from agrirecipe.resolve._structure import strong_crops
 
 __all__ = ["count_the_crop"]

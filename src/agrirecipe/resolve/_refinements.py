@@ -13,7 +13,7 @@ import itertools
 from collections.abc import Sequence
 
 from agrirecipe._errors import PromptError
-from agrirecipe.resolve._decompose import Clause, Mention, MentionBuilder
+from agrirecipe.resolve._decompose import MentionBuilder
 from agrirecipe.resolve._geometry import geometry_nouns
 from agrirecipe.resolve._lexicon import Item
 from agrirecipe.resolve._links import link_norm, listing
@@ -36,6 +36,7 @@ from agrirecipe.resolve._member_refs import (
     place_said,
     plots_again,
 )
+from agrirecipe.resolve._mentions import Clause, Mention
 from agrirecipe.resolve._structure import (
     EACH,
     POINTER_WORDS,

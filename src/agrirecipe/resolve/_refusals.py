@@ -16,8 +16,8 @@ from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING
 
 from agrirecipe._errors import PromptError, UnknownCropError
-from agrirecipe.resolve._decompose import Mention
 from agrirecipe.resolve._lexicon import Item, OtherCrop, everyday_words, vocabulary
+from agrirecipe.resolve._mentions import Mention
 
 if TYPE_CHECKING:
     from agrirecipe.hierarchy import Hierarchy

@@ -20,7 +20,6 @@ from collections.abc import Sequence
 from typing import get_args
 
 from agrirecipe.recipe import RelationKind
-from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._intent import RelationIntent, TraceStep
 from agrirecipe.resolve._landmarks import across_landmarks, held_by, landmark_of
 from agrirecipe.resolve._lexicon import Item
@@ -35,6 +34,7 @@ from agrirecipe.resolve._links import (
     own_mentions,
     relation_mentions,
 )
+from agrirecipe.resolve._mentions import Clause, Mention
 from agrirecipe.resolve._placements import (
     a_distance,
     between_said_last,

@@ -18,8 +18,8 @@ from __future__ import annotations
 import itertools
 from collections.abc import Sequence
 
-from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._lexicon import Item, reader_words
+from agrirecipe.resolve._mentions import Clause, Mention
 from agrirecipe.resolve._structure import first_word, names_a_variety
 
 __all__ = [

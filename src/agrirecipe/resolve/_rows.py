@@ -19,7 +19,6 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
-from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._intent import RelationIntent, TraceStep
 from agrirecipe.resolve._lexicon import Item
 from agrirecipe.resolve._links import (
@@ -33,6 +32,7 @@ from agrirecipe.resolve._links import (
     says,
 )
 from agrirecipe.resolve._measures import sentence_start
+from agrirecipe.resolve._mentions import Clause, Mention
 
 __all__ = [
     "FURTHER",

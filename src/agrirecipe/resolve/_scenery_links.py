@@ -10,9 +10,9 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from agrirecipe.resolve._decompose import Clause
 from agrirecipe.resolve._lexicon import reader_words
 from agrirecipe.resolve._links import following_list, listed_after
+from agrirecipe.resolve._mentions import Clause
 from agrirecipe.resolve._rows import TOWARDS
 
 __all__ = [

@@ -19,9 +19,9 @@ import functools
 import itertools
 from collections.abc import Sequence
 
-from agrirecipe.resolve._decompose import Clause, Mention
 from agrirecipe.resolve._lexicon import Item, vocabulary
 from agrirecipe.resolve._links import link_norm, listing
+from agrirecipe.resolve._mentions import Clause, Mention
 
 __all__ = [
     "EACH",

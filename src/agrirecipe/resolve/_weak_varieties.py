@@ -14,9 +14,10 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-from agrirecipe.resolve._decompose import Clause, Mention, MentionBuilder, colour_words
+from agrirecipe.resolve._decompose import MentionBuilder, colour_words
 from agrirecipe.resolve._lexicon import Item, reader_words
 from agrirecipe.resolve._links import listing
+from agrirecipe.resolve._mentions import Clause, Mention
 from agrirecipe.resolve._structure import (
     definite_before_head,
     descriptive_words,
