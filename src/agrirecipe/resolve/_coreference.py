@@ -10,14 +10,27 @@ in ``_headings``.
 
 from __future__ import annotations
 
-import itertools
 from collections.abc import Sequence
 
+from agrirecipe.resolve._back_references import (
+    another_variety_in_brackets,
+    as_many_of_that_kind,
+    bare_one,
+    both_of_the_counted,
+    counted_host,
+    is_summary,
+    it_is_a,
+    its_plot_named,
+    labels_its_sentence,
+    listed_again,
+    look_then_its_place,
+    named_in_order,
+    of_it,
+    same_modifier,
+    with_one_named_before,
+)
 from agrirecipe.resolve._decompose import MentionBuilder
 from agrirecipe.resolve._descriptions import said_with_a_verb
-from agrirecipe.resolve._lexicon import Item
-from agrirecipe.resolve._links import ARTICLES
-from agrirecipe.resolve._members import ORDINAL_WORDS
 from agrirecipe.resolve._mentions import Clause, Mention
 from agrirecipe.resolve._placed_members import (
     in_another_zone,
@@ -35,91 +48,14 @@ from agrirecipe.resolve._structure import (
     definite_before_head,
     definite_words,
     first_word,
-    has_room,
     names_a_variety,
     one_of_the,
     pronoun_one,
-    said_of_all_plots,
     same_variety,
     strong_crops,
 )
 
 __all__ = ["merge_coreferences"]
-
-
-def _counted_host(
-    builder: MentionBuilder, kept: Sequence[Mention], mention: Mention
-) -> Mention | None:
-    """The counted plural of no crop named last ("three orchard blocks") that a definite
-    crop mention is one member of, if it still has room; else None. A counted plural of
-    one crop ("two cherry blocks: the Bing trees ..., the Kordia block ...") hosts the
-    varieties of its crop named after it."""
-    if not kept or mention.count is not None or not strong_crops(mention):
-        return None
-    host = kept[-1]
-    crops = strong_crops(host)
-    if (
-        (host.count or 1) < 2
-        or (crops and not (names_a_variety(mention) and strong_crops(mention) <= crops))
-        or not has_room(host)
-        or any(not r.is_refinement for r in host.refinements)
-    ):
-        return None
-    heads = [h for h in mention.heads if h.role in ("head", "plot")]
-    return host if heads and all(builder.compatible(host, h) for h in heads) else None
-
-
-def _labels_its_sentence(clauses: Sequence[Clause], clause: Clause) -> bool:
-    """Whether ``clause`` opens a sentence and a colon follows it ("... . Granny Smith:")."""
-    return (
-        clause.link is not None
-        and clause.link.norm in (".", "!", "?", ";")
-        and clause.index + 1 < len(clauses)
-        and clauses[clause.index + 1].link is not None
-        and clauses[clause.index + 1].link.norm == ":"  # type: ignore[union-attr]
-    )
-
-
-#: The words that say what "it" is ("it's a 3 hectare field", "it is a 2 ha block").
-_IT_IS = (("it s",), ("it", "is"), ("its",), ("it", "s"))
-
-
-def _it_is_a(mention: Mention) -> bool:
-    """Whether the mention says what the field named is, a plot of no crop of its own
-    ("it's a 3 hectare field with power lines across the middle")."""
-    words = [i.norm for i in mention.items]
-    opening = next((o for o in _IT_IS if tuple(words[: len(o)]) == o), None)
-    return (
-        opening is not None
-        and words[len(opening) : len(opening) + 1] in (["a"], ["an"])
-        and not mention.has_crop
-        and mention.category is None
-        and bool(mention.heads)
-        and all(h.role == "plot" for h in mention.heads)
-    )
-
-
-def _same_modifier(kept: Sequence[Mention], mention: Mention) -> Mention | None:
-    """'Valencia in the lower grove and Moro in the upper grove; the upper grove has ...':
-    the one field named before with the word that sets this plot apart ("upper")."""
-    plots = [h for h in mention.heads if h.role == "plot"]
-    if len(plots) != 1:
-        return None
-    before = [i for i in mention.items if i.end <= plots[0].start]
-    if (
-        not before
-        or before[-1].role not in ("unknown", "filler", "stage", "other", "zone")
-        or before[-1].norm in ARTICLES | definite_words()
-    ):
-        return None
-    word = before[-1].norm
-    fields = [r for m in kept for r in (m.refinements or [m])]
-    same = [
-        m
-        for m in fields
-        if any(a.norm == word and b.role == "plot" for a, b in itertools.pairwise(m.items))
-    ]
-    return same[0] if len(same) == 1 else None
 
 
 def _compatible(builder: MentionBuilder, target: Mention, mention: Mention) -> bool:
@@ -155,14 +91,14 @@ def merge_coreferences(
             or (
                 clause.mentions[0] is not mention
                 and not later_definite
-                and not _with_one_named_before(clause, kept, mention)
+                and not with_one_named_before(clause, kept, mention)
             )
         ):
             if first is not None and first.norm == "both" and mention.count is None:
                 mention.count = 2  # "Both cereal fields beside the dryer": two, named now
             kept.append(mention)
             continue
-        said_of_all = _both_of_the_counted(kept, mention)
+        said_of_all = both_of_the_counted(kept, mention)
         if said_of_all:
             # "Two apple blocks: Jonagored ..., and Pink Lady ... Rows NW-SE in both
             # blocks.": what is said of "both blocks" is said of each member
@@ -172,7 +108,7 @@ def merge_coreferences(
             clause.mentions.remove(mention)
             merged.add(clause.index)
             continue
-        by_order = _named_in_order(kept, mention)
+        by_order = named_in_order(kept, mention)
         if by_order is not None:
             # "Bintje, Agria and Fontane potatoes, ..., the sprayer boom folded up by the
             # first field": the field named first
@@ -182,15 +118,15 @@ def merge_coreferences(
             continue
         # "the carrots ...", "fire blight on the pears", "the Roma one"; "one big field
         # of it" (of the crop just named)
-        it_is_a = _it_is_a(mention)
+        says_what_it_is = it_is_a(mention)
         is_definite = (
             (first is not None and first.norm in definite)
             or definite_before_head(clause, mention)
-            or _of_it(mention)
-            or _bare_one(kept, mention)
-            or it_is_a
+            or of_it(mention)
+            or bare_one(kept, mention)
+            or says_what_it_is
         )
-        if it_is_a:
+        if says_what_it_is:
             # "Durum wheat, ears out ...; it's a 3 hectare field": the field named, its size
             mention.count = None
         # "two potato plots with a maize plot between them ... One of the potato plots has
@@ -206,7 +142,7 @@ def merge_coreferences(
         if (
             is_definite
             and mention.count == 1
-            and (pronoun_one(mention) or one_of_the(clause, mention) or _of_it(mention))
+            and (pronoun_one(mention) or one_of_the(clause, mention) or of_it(mention))
         ):
             mention.count = None
         bare = clause.link is not None and (
@@ -225,9 +161,9 @@ def merge_coreferences(
             )
             # "Lettuce heads tight and ready to cut in the near field": where the look
             # just said is, the field before's plot
-            or (clause.link.role == "conjunction" and _look_then_its_place(clause, mention))
+            or (clause.link.role == "conjunction" and look_then_its_place(clause, mention))
         )
-        summary = _is_summary(mention) or (
+        summary = is_summary(mention) or (
             # "the peppers between the two tomato strips": fields of a crop named before
             is_definite
             and (mention.count or 1) >= 2
@@ -236,7 +172,7 @@ def merge_coreferences(
                 not names_a_variety(mention)
                 # ("sweetcorn / popcorn / sweetcorn, ... between the two sweetcorn plots":
                 # the fields of that kind named before, as many as counted)
-                or _as_many_of_that_kind(kept, mention)
+                or as_many_of_that_kind(kept, mention)
             )
         )
         # "imperator and danvers carrots, ..., imperator north of danvers": a variety
@@ -251,14 +187,14 @@ def merge_coreferences(
         ]
         if repeated and related_to(clauses, clause, repeated[0]):
             repeated = []  # "Valencia oranges next to Valencia oranges": two fields
-        if repeated and _listed_again(clauses, clause, repeated[0]):
+        if repeated and listed_again(clauses, clause, repeated[0]):
             # "sweetcorn, popcorn and sweetcorn": a third member (said with commas only
             # too, "sweetcorn, popcorn, sweetcorn": the comma joins no kind named again)
             repeated, bare = [], False
         if bare and not repeated and (own_kind := strong_crops(mention)):
             # "apples, pears, apples": a crop listed again in a plain list is another field
             earlier = next((m for m in reversed(kept) if strong_crops(m) == own_kind), None)
-            if earlier is not None and _listed_again(clauses, clause, earlier):
+            if earlier is not None and listed_again(clauses, clause, earlier):
                 bare = False
         placed_again: Mention | None = None
         if (
@@ -285,7 +221,7 @@ def merge_coreferences(
         # "Valencia in the lower grove and Moro in the upper grove; the upper grove has
         # ...": the one field whose plot the same word set apart
         same_plot = (
-            _same_modifier(kept, mention)
+            same_modifier(kept, mention)
             if is_definite and mention.count is None and not strong_crops(mention)
             else None
         )
@@ -300,14 +236,14 @@ def merge_coreferences(
                 another_field(clauses, clause, mention)
                 # ("San Marzano and Beefsteak tomatoes ... Beefsteak plot to the south of
                 # it": the variety named bare in a list, now with its plot)
-                and not _its_plot_named(repeated, clause, mention)
+                and not its_plot_named(repeated, clause, mention)
             )
             # ("North plot, ..., Fontane potatoes; south plot, ...": another side, another plot)
             and not (kept and other_side(kept[-1], mention))
             # ("Top left wheat, top right maize, bottom left maize": another quarter)
             and not in_another_zone(kept, mention)
             # ("tomatoes (beefsteak), tomatoes (roma)": the crop again, another variety)
-            and not _another_variety_in_brackets(clauses, clause, mention, kept)
+            and not another_variety_in_brackets(clauses, clause, mention, kept)
             # ("Grain maize on the big field and, beside it, sweetcorn": a kind named
             # bare, placed against it)
             and not (
@@ -348,7 +284,7 @@ def merge_coreferences(
             # named again, past other fields named since
             member = placed_again
         host = (
-            _counted_host(builder, kept, mention)
+            counted_host(builder, kept, mention)
             if (
                 is_definite
                 or placed_first(clauses, clause)
@@ -361,7 +297,7 @@ def merge_coreferences(
                 or (bare and on_a_side_of_it(mention))
                 # ("Two-block orchard for the mapping robot. Granny Smith: 15 rows, ...
                 # Conferance pears: 15 rows, ...": each member under its own label)
-                or (bare and _labels_its_sentence(clauses, clause))
+                or (bare and labels_its_sentence(clauses, clause))
             )
             and not summary
             and (first is None or first.norm not in EACH)
@@ -506,210 +442,6 @@ def merge_coreferences(
     return kept
 
 
-def _as_many_of_that_kind(kept: Sequence[Mention], mention: Mention) -> bool:
-    """Whether the fields named before that grow the kind ``mention`` names are exactly as
-    many as it counts ("the two sweetcorn plots" after two sweetcorn plots)."""
-
-    def kinds(m: Mention) -> set[tuple[str, str]]:
-        return {(c, v) for c, v, weak in m.interpretations or () if v is not None and not weak}
-
-    own = kinds(mention)
-    members = {id(r): r for m in kept for r in (m.refinements or [m])}.values()
-    same = [r for r in members if own and kinds(r) == own]
-    return sum(r.count or 1 for r in same) == mention.count
-
-
-def _listed_again(clauses: Sequence[Clause], clause: Clause, earlier: Mention) -> bool:
-    """Whether ``clause`` names a kind again as the next member of the plain list that
-    named it first ("sweetcorn, popcorn and sweetcorn"): every clause from the first to
-    this one names one bare field and is joined by a comma or "and", and none is placed
-    (not "Valencia and Hamlin, Valencia east of Hamlin")."""
-    run = clauses[earlier.clause : clause.index + 1]
-    following = clauses[clause.index + 1] if clause.index + 1 < len(clauses) else None
-    if len(run) < 3 or earlier.clause >= clause.index:
-        return False
-    if (
-        following is not None
-        and following.link is not None
-        and following.link.role in ("relation", "between", "trailer")
-    ):
-        return False
-    return all(
-        len(c.mentions) == 1
-        and c.mentions[0].count is None
-        # (each member only named: not "riesling & chardonnay, riesling on the left ...",
-        # "spuds & carrots & onions, spuds r flowering", "cherries 5 x 3 m over 2 ha")
-        and all(_naming_only(i) for i in c.items)
-        and (c is run[0] or (c.link is not None and c.link.role in ("separator", "conjunction")))
-        # ("butterhead (boston) lettuce": a name in brackets is the same kind again)
-        and (
-            c is run[0]
-            or (c.link is not None and c.link.norm not in (".", ";", ":", "!", "?", "(", ")"))
-        )
-        for c in run
-    )
-
-
-def _naming_only(item: Item) -> bool:
-    """Whether a word of a listed member only names it ("sweetcorn", "a", "plot")."""
-    return item.role in ("head", "weak_variety", "plot") or item.norm in ("a", "an", "the", "some")
-
-
-#: Where an ordinal word points among the fields named in order.
-_ORDER_OF = {**{word: at for at, word in enumerate(ORDINAL_WORDS)}, "the last": -1}
-
-
-def _named_in_order(kept: Sequence[Mention], mention: Mention) -> Mention | None:
-    """The field "the first field" / "the second plot" / "the last block" points at among
-    two or more fields named before, in the order named; None for any other mention."""
-    first = first_word(mention)
-    if (
-        first is None
-        or first.role != "reference"
-        or first.norm not in _ORDER_OF
-        or mention.has_crop
-        or mention.category is not None
-        or mention.count not in (None, 1)
-        or not mention.heads
-        or any(h.role != "plot" or h.data["value"].get("plural") for h in mention.heads)
-    ):
-        return None
-    fields = list({id(r): r for m in kept for r in (m.refinements or [m])}.values())
-    at = _ORDER_OF[first.norm]
-    if len(fields) < 2 or at >= len(fields):
-        return None
-    return fields[at]
-
-
-def _both_of_the_counted(kept: Sequence[Mention], mention: Mention) -> list[Mention]:
-    """The members of the counted plural named last, when ``mention`` is only "both" (or
-    "all") and a plural plot noun naming no crop ("in both blocks"); else none."""
-    if mention.has_crop or mention.count is not None or not said_of_all_plots(mention):
-        return []
-    host = next((m for m in reversed(kept) if m.refinements), None)
-    if host is None:
-        return []
-    members = list({id(r): r for r in host.refinements}.values())
-    if len(members) < 2 or (any(i.norm == "both" for i in mention.items) and len(members) != 2):
-        return []
-    return members
-
-
-def _bare_one(kept: Sequence[Mention], mention: Mention) -> bool:
-    """'fruit one north of the veg one', 'agria one south of the fontane': a crop said
-    with "one" after it and nothing before it stands for the field of that crop named
-    before (not "a spring wheat one", a new field)."""
-    first = first_word(mention)
-    own = strong_crops(mention)
-    if first is None or first not in mention.heads or not pronoun_one(mention):
-        return False
-    if own:
-        return any(own <= strong_crops(m) for m in kept)
-    # ("fruit one north of the veg one": a field of a group of crops named before)
-    return mention.category is not None and any(
-        m.category == mention.category and not m.has_crop for m in kept
-    )
-
-
-def _with_one_named_before(clause: Clause, kept: Sequence[Mention], mention: Mention) -> bool:
-    """'carrots + onions + peppers w/ the onions in the middle': "with the" and a crop a
-    field named before (no variety, no count) after another field in the same clause is
-    that field again, placed by what follows."""
-    first = first_word(mention)
-    if first is None or first.norm != "the" or mention.count is not None:
-        return False
-    before = [i for i in clause.items if i.end <= first.start]
-    own = strong_crops(mention)
-    return (
-        bool(before)
-        and before[-1].norm == "with"
-        and bool(own)
-        and not names_a_variety(mention)
-        and not own & strong_crops(clause.mentions[0])
-        and any(strong_crops(m) == own for m in kept if m not in clause.mentions)
-    )
-
-
-def _of_it(mention: Mention) -> bool:
-    """'one big field of it', 'a field of those': a plot word whose crop is "it", "them" or
-    "those", named before."""
-    if mention.has_crop or not any(h.role == "plot" for h in mention.heads):
-        return False
-    norms = [i.norm for i in mention.items]
-    return any(
-        a == "of" and b in ("it", "them", "those", "these") for a, b in itertools.pairwise(norms)
-    )
-
-
 def _last_named(clauses: Sequence[Clause], clause: Clause) -> int:
     """The index of the last clause before ``clause`` that names a field (-1 if none)."""
     return next((c.index for c in reversed(clauses[: clause.index]) if c.mentions), -1)
-
-
-def _look_then_its_place(clause: Clause, mention: Mention) -> bool:
-    """Whether the clause opens with a look and names only a singular plot of no crop
-    after "in the" or "on the" ("ready to cut in the near field")."""
-    words = sorted(clause.items, key=lambda i: i.start)
-    plots = [i for i in words if i.role == "plot"]
-    if (
-        not words
-        or words[0].role not in ("cue", "stage")
-        or mention.has_crop
-        or mention.category is not None
-        or mention.count is not None
-        or mention.plot is None
-        or mention.plot["plural"]
-        or len(plots) != 1
-    ):
-        return False
-    # ("in the near field": at most one word between "the" and the plot)
-    before = [i.norm for i in words if i.start < plots[0].start][-3:]
-    return any(a in ("in", "on") and b == "the" for a, b in itertools.pairwise(before))
-
-
-def _is_summary(mention: Mention) -> bool:
-    """'..., three fields', '..., two orchards': a count of plots restating the fields just
-    listed (a plot noun that narrows must fit them: the coreference check sees to it)."""
-    return (
-        (mention.count or 1) >= 2
-        and mention.interpretations is None
-        and all(h.role == "plot" for h in mention.heads)
-        and (mention.category is None or all(h.data["value"]["narrows"] for h in mention.heads))
-    )
-
-
-def _another_variety_in_brackets(
-    clauses: Sequence[Clause], clause: Clause, mention: Mention, kept: Sequence[Mention]
-) -> bool:
-    """Whether a crop named bare is followed by a variety of it in brackets that no field
-    of that crop named before has: "tomatoes (beefsteak) + tomatoes (roma)" is two."""
-    following = clauses[clause.index + 1] if clause.index + 1 < len(clauses) else None
-    if (
-        names_a_variety(mention)
-        or clause.mentions[-1:] != [mention]
-        or following is None
-        or following.link is None
-        or following.link.norm != "("
-        or len(following.mentions) != 1
-    ):
-        return False
-    said = following.mentions[0]
-    crops = strong_crops(mention)
-    if not crops or not names_a_variety(said) or strong_crops(said) != crops:
-        return False
-    same_crop = [k for k in kept if strong_crops(k) == crops]
-    return bool(same_crop) and all(
-        names_a_variety(k) and not same_variety(k, said) for k in same_crop
-    )
-
-
-def _its_plot_named(repeated: Sequence[Mention], clause: Clause, mention: Mention) -> bool:
-    """Whether ``mention`` ("Beefsteak plot") names the plot of the one field of its
-    variety named bare before ("San Marzano and Beefsteak tomatoes"), not a second one."""
-    return (
-        len(repeated) == 1
-        and repeated[0].plot is None
-        and (repeated[0].count or 1) == 1
-        and names_a_variety(mention)
-        and not any(i.norm in ("second", "another", "new", "other") for i in clause.items)
-    )

@@ -42,10 +42,11 @@ step  pass                                        module (data)
       attributes; the members a plural lists;     ``_refinements``, ``_listing``,
       descriptions of plants named;               ``_descriptions``,
       back-references (and where a mention is     ``_coreference``,
-      placed); plots said with a field;           ``_placed_members``,
-      list headings, titles and comparison        ``_appositives``, ``_headings``,
-      headings; summaries of fields; plots        ``_titles``, ``_comparisons``,
-      counted after the only crop named           ``_summaries``,
+      placed); plots said with a field;           ``_back_references``,
+      list headings, titles and comparison        ``_placed_members``,
+      headings; summaries of fields; plots        ``_appositives``, ``_headings``,
+      counted after the only crop named           ``_titles``, ``_comparisons``,
+                                                  ``_summaries``,
                                                   ``_plots_of_the_crop``
 11    head-less clauses' words to their fields    ``_loose``,
       (which fields a measure is said of)         ``_measures``
