@@ -38,6 +38,7 @@ __all__ = [
     "counted_host",
     "is_summary",
     "it_is_a",
+    "it_is_the_crop",
     "its_plot_named",
     "labels_its_sentence",
     "listed_again",
@@ -98,6 +99,27 @@ def it_is_a(mention: Mention) -> bool:
         and mention.category is None
         and bool(mention.heads)
         and all(h.role == "plot" for h in mention.heads)
+    )
+
+
+def it_is_the_crop(kept: Sequence[Mention], mention: Mention) -> bool:
+    """Whether the mention says what crop the field named last, a plot of no crop,
+    holds ("just the one field behind the dairy sheds, and it's carrots")."""
+    words = [i.norm for i in mention.items]
+    opening = next((o for o in _IT_IS if tuple(words[: len(o)]) == o), None)
+    last = kept[-1] if kept else None
+    return (
+        opening is not None
+        and mention.heads[:1] == mention.items[len(opening) : len(opening) + 1]
+        and (mention.has_crop or mention.category is not None)
+        and mention.plot is None
+        and mention.count is None
+        and last is not None
+        and last.plot is not None
+        and last.interpretations is None
+        and last.category is None
+        and not last.refinements
+        and (last.count or 1) == 1
     )
 
 

@@ -20,6 +20,7 @@ from agrirecipe.resolve._back_references import (
     counted_host,
     is_summary,
     it_is_a,
+    it_is_the_crop,
     its_plot_named,
     labels_its_sentence,
     listed_again,
@@ -125,6 +126,8 @@ def merge_coreferences(
             or of_it(mention)
             or bare_one(kept, mention)
             or says_what_it_is
+            # ("just the one field behind the dairy sheds, and it's carrots")
+            or it_is_the_crop(kept, mention)
         )
         if says_what_it_is:
             # "Durum wheat, ears out ...; it's a 3 hectare field": the field named, its size

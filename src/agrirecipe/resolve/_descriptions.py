@@ -107,7 +107,7 @@ def dissolve_plant_parts(clauses: Sequence[Clause], crop_categories: dict[str, s
             continue  # "Bare vines pruned back ..., and the pear trees ... are bare too"
         if (
             definite
-            and not predicate
+            and (not predicate or _said_to_be_somewhere(mention))
             and _placed_crop_of_its_own(clauses, position, mention, crop_categories)
         ):
             continue  # "pear trees beyond them and the vines on the hill": the grapes
@@ -234,9 +234,15 @@ def _placed_crop_of_its_own(
         (clause.link is not None and clause.link.role == "relation")
         or (bool(before) and before[0].norm in reader_words("placed_past"))
     )
+    # ("the strawberry field, the vines are across the road": said to be somewhere)
+    placed_by_be = _said_to_be_somewhere(mention)
     return (
         clause.link is not None
-        and (clause.link.role == "conjunction" or past_scenery)
+        and (
+            clause.link.role == "conjunction"
+            or past_scenery
+            or (clause.link.role == "separator" and placed_by_be)
+        )
         and bool(crops)
         and bool(earlier)
         and all(e and not e & crops for e in earlier)
@@ -250,6 +256,20 @@ def _placed_crop_of_its_own(
                 and following.link.role in ("relation", "between")
             )
         )
+    )
+
+
+def _said_to_be_somewhere(mention: Mention) -> bool:
+    """Whether the words after the mention's heads say where it is, by scenery ("the
+    vines are across the road", "the vines are on the hill")."""
+    head = max(h.end for h in mention.heads)
+    after = [i for i in sorted(mention.items, key=lambda i: i.start) if i.start >= head]
+    # (a place: "across the road", not how they grow: "on stakes")
+    return (
+        len(after) >= 3
+        and after[0].norm in ("are", "is")
+        and after[1].norm in _PLACING
+        and any(i.scenery for i in after[2:])
     )
 
 

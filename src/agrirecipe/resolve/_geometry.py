@@ -303,7 +303,58 @@ def find_geometry(
             for index in range(first, last):
                 claimed[index] = True
     found.sort(key=lambda m: m.first)
-    return _respectively(tokens, found, claimed, tables)
+    found = _respectively(tokens, found, claimed, tables)
+    return sorted([*found, *_counted_alike(tokens, found, claimed, tables)], key=lambda m: m.first)
+
+
+#: Counts of rows or beds that the counts listed after them repeat ("four beds of
+#: lettuce, four of onions").
+_ALIKE_KEYS = frozenset({"rows", "beds"})
+_OF_THOSE = frozenset({"them", "those", "these", "which", "it", "the", "each"})
+#: How many words of a crop's name may stand between "of" and the next member.
+_NAME_WORDS = 4
+
+
+def _counted_alike(
+    tokens: Sequence[Token], found: Sequence[GeometryMatch], claimed: list[bool], tables: _Tables
+) -> list[GeometryMatch]:
+    """'four beds of lettuce, four of onions, four of carrots', '10 rows of maize and 12
+    of soybean': a bare count "of" a crop listed after a count of rows or beds "of" a
+    crop counts the same thing (not fields)."""
+    alike: list[GeometryMatch] = []
+    for match in found:
+        if match.key not in _ALIKE_KEYS or match.share is not None:
+            continue
+        cursor = match.last
+        while cursor < len(tokens) and tokens[cursor].norm == "of":
+            join = next(
+                (
+                    at
+                    for at in range(cursor + 2, min(cursor + 2 + _NAME_WORDS, len(tokens)))
+                    if tokens[at].norm in _LIST_JOINS or claimed[at]
+                ),
+                None,
+            )
+            if join is None or claimed[join] or join + 3 > len(tokens):
+                break
+            number_at = join + 1
+            if (
+                claimed[number_at]
+                or tokens[number_at + 1].norm != "of"
+                # (not "10 rows of maize and 2 of them weedy": some of the rows said)
+                or (number_at + 2 < len(tokens) and tokens[number_at + 2].norm in _OF_THOSE)
+            ):
+                break
+            try:
+                value = _number(tokens[number_at].norm, tables.number_words)
+            except ValueError:
+                break
+            raw = _raw(tokens, number_at, number_at + 1)
+            _check(match.key, value, raw)
+            alike.append(GeometryMatch(match.key, value, number_at, number_at + 1, raw))
+            claimed[number_at] = True
+            cursor = number_at + 1
+    return alike
 
 
 _PLURAL_ROWS = re.compile(r"\b(?:one|1) (?:rows|lines|drills|beds|ridges)\b")

@@ -19,6 +19,7 @@ from agrirecipe.resolve._mentions import Clause, Mention
 
 __all__ = [
     "ARTICLES",
+    "OPENING_MARKS",
     "OPPOSITE",
     "PRONOUNS",
     "THE_TWO",
@@ -37,6 +38,10 @@ __all__ = [
 
 
 ARTICLES = frozenset({"the", "a", "an", "our", "my", "their", "its"})
+
+#: The marks after a heading that open the list it heads ("west to east: wheat, ...",
+#: "from north to south - potatoes, corn, wheat").
+OPENING_MARKS = frozenset({":", "-", "–", "—"})
 
 
 #: Words that point back at a field named before ("north of it", "beside them").
@@ -153,7 +158,7 @@ def listed_after(clauses: Sequence[Clause], position: int) -> list[Mention]:
     """'in two polytunnels next to each other: tunnel 1 is Elsanta, tunnel 2 is
     Centenary': the fields listed after a colon, when nothing before it named one."""
     following = clauses[position + 1 :]
-    if not following or following[0].link is None or following[0].link.norm != ":":
+    if not following or following[0].link is None or following[0].link.norm not in OPENING_MARKS:
         return []
     listed: list[Mention] = []
     for clause in following:
@@ -312,7 +317,7 @@ def following_list(
             continue
         # ("Going from west to east the plots are: Chantenay carrots, ...": the list after
         # the colon of the heading's own clause)
-        colon = index == position + 1 and link == ":"
+        colon = index == position + 1 and link in OPENING_MARKS
         if group and not listing(clause.link) and not colon:
             if not clause.mentions and all(
                 i.role in ("filler", "non_agricultural") for i in clause.items
@@ -325,7 +330,7 @@ def following_list(
             not group
             and clause.link is not None
             # ("heading north you cross a hedge, then the strawberry beds, then ...")
-            and clause.link.norm not in (":", ",", "then")
+            and clause.link.norm not in (*OPENING_MARKS, ",", "then")
             and (clause.mentions or clause.link.role not in ("separator", "conjunction"))
             # ("North to south along the lane: Kordia cherries, ...": scenery on the way)
             and not _along_scenery(clause)

@@ -62,6 +62,7 @@ from agrirecipe.resolve._rows import (
     then_chain,
 )
 from agrirecipe.resolve._scenery_links import (
+    between_scenery,
     pronoun_of_scenery,
     scenery_in_the_middle,
     scenery_placed_by_a_field,
@@ -100,7 +101,8 @@ def read_relations(
         link = clauses[position].link
         assert link is not None
         kind = link.data["value"]
-        if link.norm.split()[0] in FURTHER:
+        # ("further east", "and east again the Fuji": past the last one placed that way)
+        if link.norm.split()[0] in FURTHER or link.norm.endswith(" again"):
             further.append((kind, subject, centre, link))  # read once the others are
             continue
         relations.extend(field_relations(kind, subject, (centre,), members, link, trace))
@@ -322,7 +324,7 @@ def read_relations(
         if listed is not None:
             relations.extend(field_relations("between", listed[0], listed[1], members, link, trace))
             continue
-        if scenery_in_the_middle(clauses, position):
+        if scenery_in_the_middle(clauses, position) or between_scenery(clauses, position):
             # "There's an irrigation reel in the middle of the lettuce": scenery placed
             trace.append(
                 TraceStep(stage="decompose", subject=link.raw, detail="said of scenery: not used")

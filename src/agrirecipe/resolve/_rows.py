@@ -22,6 +22,7 @@ from typing import Any
 from agrirecipe.resolve._intent import RelationIntent, TraceStep
 from agrirecipe.resolve._lexicon import Item
 from agrirecipe.resolve._links import (
+    OPENING_MARKS,
     coordinated,
     field_relations,
     fields_of,
@@ -154,8 +155,9 @@ def _named_again_in_order(
     each once, in order ("... north to south as veg, fruit, veg")."""
     named = clauses[position].named[-1:]
     for index, clause in enumerate(clauses[position + 1 :], start=position + 1):
-        # (after the colon of the direction's own clause: "west to east: wheat, ...")
-        colon = index == position + 1 and link_norm(clause) == ":"
+        # (after the colon or dash of the direction's own clause: "west to east: wheat,
+        # ...", "from north to south - potatoes, corn, wheat")
+        colon = index == position + 1 and link_norm(clause) in OPENING_MARKS
         if not (listing(clause.link) or colon) or len(clause.named) != 1:
             break
         named.append(clause.named[0])

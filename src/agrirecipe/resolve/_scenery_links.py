@@ -10,12 +10,13 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from agrirecipe.resolve._lexicon import reader_words
+from agrirecipe.resolve._lexicon import Item, reader_words
 from agrirecipe.resolve._links import following_list, listed_after
 from agrirecipe.resolve._mentions import Clause
 from agrirecipe.resolve._rows import TOWARDS
 
 __all__ = [
+    "between_scenery",
     "not_placed",
     "pronoun_of_scenery",
     "pronoun_past_an_aside",
@@ -95,6 +96,32 @@ def pronoun_of_scenery(clauses: Sequence[Clause], position: int, *, the_two: boo
         )
         and not pronoun_past_an_aside(clauses, position)
     )
+
+
+def between_scenery(clauses: Sequence[Clause], position: int) -> bool:
+    """Whether "between" at clause ``position`` has scenery on both sides ("Between the
+    house and the road is the strawberry field"): the field lies between landmarks, no
+    field between two others."""
+    clause = clauses[position]
+    other = clauses[position + 1] if position + 1 < len(clauses) else None
+    if (
+        clause.link is None
+        or clause.link.role != "between"
+        or clause.mentions
+        or not any(_landmark(i) for i in clause.items)
+        or other is None
+        or other.link is None
+        or other.link.norm != "and"
+    ):
+        return False
+    heads = [h.start for m in other.mentions for h in m.heads]
+    first_head = min(heads, default=None)
+    return any(_landmark(i) and (first_head is None or i.end <= first_head) for i in other.items)
+
+
+def _landmark(item: Item) -> bool:
+    """A word for scenery or for a thing of no farm ("the house", "the road")."""
+    return item.scenery or item.role == "non_agricultural"
 
 
 def scenery_in_the_middle(clauses: Sequence[Clause], position: int) -> bool:

@@ -84,7 +84,7 @@ def apply_plural_counts(clauses: Sequence[Clause], plural_count: int) -> None:
                 one_field = bool(plots) and plots[-1].data["value"].get("one_field")
                 if one_field and mention.has_crop:
                     continue
-                first = first_word(mention)
+                first = _own_first_word(mention)
                 if first is not None and (first.norm in definite or first.role == "reference"):
                     continue  # "the harvester has lifted the first few beds": of a field named
                 if fields_named or (mention.category is not None and not mention.has_crop):
@@ -107,7 +107,7 @@ def apply_plural_counts(clauses: Sequence[Clause], plural_count: int) -> None:
                 continue
             if spec.get("one_field") and mention.has_crop:
                 continue  # "Elsanta strawberry beds": one field of beds
-            first = first_word(mention)
+            first = _own_first_word(mention)
             if first is not None and first.norm in definite:
                 continue
             if definite_before_head(clause, mention):
@@ -304,6 +304,15 @@ def count_plots_of_a_list(clauses: Sequence[Clause]) -> None:
         for member in listed:
             if not any(i.role == "size" for i in member.items):
                 member.items.extend(size)
+
+
+def _own_first_word(mention: Mention) -> Item | None:
+    """The mention's first word, past the article of a place that holds its fields
+    ("The farm's got some fruit fields": "the" is the farm's, not the fields')."""
+    ordered = sorted(mention.items, key=lambda item: item.start)
+    if len(ordered) >= 2 and ordered[1].role == "container" and ordered[1] not in mention.heads:
+        return next((i for i in ordered[2:] if i.norm not in ("s", "has", "have", "got")), None)
+    return ordered[0] if ordered else None
 
 
 def first_word(mention: Mention) -> Item | None:

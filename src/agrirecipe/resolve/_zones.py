@@ -85,6 +85,11 @@ def _patterns() -> tuple[tuple[str, re.Pattern[str]], ...]:
             rf"(?<![a-z0-9])(?<!along )(?<!on )(?<!by )(?:{alternation})(?= [,.;:!?]| -| and |$)"
         )
         patterns.append((str(zone), re.compile(pattern)))
+    for zone, words in data["bare_sides"].items():
+        alternation = "|".join(re.escape(str(w)) for w in words)
+        after_a_name = r"(?<=[a-z] )(?<!all )(?<! s )(?<! is )(?<! was )(?<! are )(?<!nothing )"
+        pattern = rf"{after_a_name}(?:{alternation})(?= [,.;]| and |$)"
+        patterns.append((str(zone), re.compile(pattern)))
     for zone, words in data["leading_places"].items():
         alternation = "|".join(re.escape(str(w)) for w in sorted(words, key=len, reverse=True))
         opening = r"(?:^|(?<=[,.;:!?] )|(?<= and ))"
@@ -112,6 +117,7 @@ def find_zones(tokens: Sequence[Token], claimed: Sequence[bool] = ()) -> list[Zo
     """
     found, taken = _zone_matches(tokens, claimed)
     found = _as_seen(found, tokens)
+    found = _paired_sides(found, tokens)
     compass = any(m.zone in _PLACES and "depth" not in _PLACES[m.zone] for m in found)
     # "looking east ...: potatoes closest to me": the compass places, not the depth; the
     # depth words stay zone words ("potatoes closest to the camera at the bottom"), read
@@ -125,6 +131,30 @@ def find_zones(tokens: Sequence[Token], claimed: Sequence[bool] = ()) -> list[Zo
     if len(sides) < 2 and not (sides and any(m.zone == "middle" for m in found)):
         return []
     return sorted(found, key=lambda m: m.first)
+
+
+@functools.cache
+def _bare_sides() -> dict[str, str]:
+    """The bare side words ("left", "right") and the zone each names."""
+    data: dict[str, Any] = yaml.safe_load((DATA_DIR / "zones.yaml").read_text("utf-8"))
+    return {str(w): str(zone) for zone, words in data["bare_sides"].items() for w in words}
+
+
+def _paired_sides(found: Sequence[ZoneMatch], tokens: Sequence[Token]) -> list[ZoneMatch]:
+    """A bare "left" or "right" is a zone only across from a zone on the other side
+    ("cereals left, fruit right"; not "potatoes with a few tubers left, ...")."""
+    across = {"west": "east", "east": "west"}
+    zones = {m.zone for m in found}
+    sides = _bare_sides()
+    return [
+        m
+        for m in found
+        if not (
+            m.last - m.first == 1
+            and sides.get(tokens[m.first].norm) == m.zone
+            and across[m.zone] not in zones
+        )
+    ]
 
 
 def _zone_matches(
