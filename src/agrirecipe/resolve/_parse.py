@@ -48,8 +48,9 @@ step  pass                                        module (data)
       counted after the only crop named           ``_titles``, ``_comparisons``,
                                                   ``_summaries``,
                                                   ``_plots_of_the_crop``
-11    head-less clauses' words to their fields    ``_loose``,
-      (which fields a measure is said of)         ``_measures``
+11    head-less clauses' words to their fields    ``_loose`` (signs in
+      (which fields a measure is said of)         ``_loose_owners``),
+                                                  ``_measures``
 12    fields of each mention, their attributes    ``_fields``
       (stated, else visual cues), sizes, rows
 13    relations between fields (words between     ``_relations``, ``_links``;
