@@ -89,7 +89,7 @@ def build_examples(
     """Records for the ``dev`` prompts (default: every shipped benchmark prompt file)."""
     from agrirecipe.hierarchy import default_hierarchy
     from agrirecipe.knowledge import default_knowledge_base
-    from agrirecipe.resolve._lexicon import build_lexicon
+    from agrirecipe.resolve._lexicon_build import build_lexicon
     from agrirecipe.resolve.llm import LlmResolver
 
     if prompts is None:

@@ -22,8 +22,9 @@ step  pass                                        module (data)
 3     stated row geometry (and measures no        ``_geometry`` (geometry.yaml)
       recipe holds, as not used)
 4     zones of a farm                             ``_zones`` (zones.yaml)
-5     phrases and their senses; visual cues,      ``_lexicon`` (vocabulary.yaml,
-      scenery and purpose words                   cues.yaml, scenery.yaml, ...)
+5     phrases and their senses; visual cues,      ``_lexicon``, built by
+      scenery and purpose words                   ``_lexicon_build`` (vocabulary.yaml,
+                                                  cues.yaml, scenery.yaml, ...)
 6     typos and unseen names                      the strategy's reader
 7     each phrase's role; a season, stage or      ``_scan``, ``_retractions``,
       health taken back; purposes; latitudes,     ``_purposes``, ``_sizes``

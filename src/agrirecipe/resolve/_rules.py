@@ -15,10 +15,10 @@ from agrirecipe.resolve._lexicon import (
     Item,
     Lexicon,
     Sense,
-    build_lexicon,
     normalise,
     number_value,
 )
+from agrirecipe.resolve._lexicon_build import build_lexicon
 from agrirecipe.resolve._parse import PromptReader
 
 __all__ = ["LexicalResolver", "RulesResolver", "fuzzy_unknown_words", "nearest_by_spelling"]

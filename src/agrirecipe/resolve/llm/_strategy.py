@@ -176,7 +176,7 @@ class LlmResolver(Resolver):
 
     def resolve_intent(self, prompt: str, context: ResolveContext) -> SceneIntent:
         """What ``prompt`` asks for, read by the language model under grammars."""
-        from agrirecipe.resolve._lexicon import build_lexicon
+        from agrirecipe.resolve._lexicon_build import build_lexicon
 
         # Texting forms are words; stated row geometry is read by its own reader and
         # given back to the field named before it (the model never sees "10 rows" as
