@@ -11,7 +11,7 @@ from __future__ import annotations
 import itertools
 from collections.abc import Sequence
 
-from agrirecipe.resolve._lexicon import Item, reader_words
+from agrirecipe.resolve._lexicon import Item, reader_words, vocabulary
 from agrirecipe.resolve._mentions import Clause, Mention
 from agrirecipe.resolve._structure import (
     definite_before_head,
@@ -105,6 +105,8 @@ def dissolve_plant_parts(clauses: Sequence[Clause], crop_categories: dict[str, s
             continue  # "the vines are on the left and the orange grove on the right": placed
         if _names_another_crop(clauses, position, mention, others_before):
             continue  # "Bare vines pruned back ..., and the pear trees ... are bare too"
+        if definite and _plants_of_no_field_before(clauses, position, mention):
+            continue  # "the pear orchard has fire blight, the vines have downy mildew"
         if (
             definite
             and (not predicate or _said_to_be_somewhere(mention))
@@ -205,6 +207,19 @@ def _names_another_crop(
         return False
     following = [strong_crops(m) for c in clauses[position + 1 :] for m in c.mentions][:1]
     return bool(following) and bool(following[0]) and not crops & following[0]
+
+
+def _plants_of_no_field_before(clauses: Sequence[Clause], position: int, mention: Mention) -> bool:
+    """Whether the mention is only a word for plants that names a crop ("the vines") and
+    no field named before grows a crop whose plants it may stand for
+    (``plant_words_of`` in vocabulary.yaml): a field of that crop."""
+    words = vocabulary().get("plant_words_of", {})
+    heads = [h for h in mention.heads if h.role == "head"]
+    if len(heads) != 1 or heads[0].norm not in words or not strong_crops(mention):
+        return False
+    may_be = set(words[heads[0].norm])
+    earlier = [strong_crops(m) for c in clauses[:position] for m in c.mentions]
+    return bool(earlier) and all(crops and not crops & may_be for crops in earlier)
 
 
 #: Words that open a place after a word for plants ("the vines on the hill").

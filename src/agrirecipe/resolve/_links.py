@@ -53,6 +53,7 @@ THE_TWO = frozenset(
         "the two",
         "both",
         "the two of them",
+        "both of them",
         "those two",
         "these two",
         "the pair",

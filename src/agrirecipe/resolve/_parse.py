@@ -199,6 +199,21 @@ UnknownWords = Callable[[list[Item], Lexicon], tuple[list[Item], list[TraceStep]
 _MAX_FIELDS = 64
 
 
+def _listed_after_a_colon(items: Sequence[Item], container: Item) -> list[Item]:
+    """The words after the first colon that follows ``container`` up to the end of its
+    sentence (what a farm is said to hold), or [] when no colon follows it."""
+    after = [i for i in items if i.start >= container.end]
+    colon = next((k for k, i in enumerate(after) if i.norm == ":"), None)
+    if colon is None or any(i.norm in (".", "!", "?", ";") for i in after[:colon]):
+        return []
+    listed: list[Item] = []
+    for item in after[colon + 1 :]:
+        if item.norm in (".", "!", "?", ";"):
+            break
+        listed.append(item)
+    return listed
+
+
 class PromptReader(FieldReading):
     """Reads prompts for one hierarchy and knowledge base with one strategy's word readers."""
 
@@ -458,6 +473,17 @@ class PromptReader(FieldReading):
             # "a drone survey scene over the yard: two tractors, a sprayer and the shed"
             raise PromptError(
                 f"{NOTHING_FOUND}: only scenery ({', '.join(repr(w) for w in scenery[:5])})",
+                stage="resolve",
+                hint="name a crop, a variety or a kind of field, e.g. " + EXAMPLES,
+            )
+        listed = _listed_after_a_colon(items, containers[0])
+        if listed and all(not i.has("crop", "variety", "category", "plot") for i in listed):
+            # "Describe our farm for the drone survey: farmhouse, two sheds, gravel lanes,
+            # a pond ...": what the farm holds, said, is scenery alone
+            named = [i.raw for i in listed if i.scenery or i.role == "non_agricultural"]
+            raise PromptError(
+                f"{NOTHING_FOUND}: the {containers[0].raw} holds only scenery"
+                + (f" ({', '.join(repr(w) for w in named[:5])})" if named else ""),
                 stage="resolve",
                 hint="name a crop, a variety or a kind of field, e.g. " + EXAMPLES,
             )

@@ -33,6 +33,17 @@ __all__ = [
 #: The verbs that open what is said of a sentence's subject ("... is ripe", "... are
 #: covered in ripe fruit").
 _COPULAS = frozenset({"is", "are"})
+#: Verbs whose words after a placed field may be said of the subject ("... have blight").
+_VERBS = frozenset({*_COPULAS, "has", "have"})
+_PLURAL_VERBS = frozenset({"are", "have"})
+
+
+def _plural(mention: Mention) -> bool:
+    """Whether a mention names its field(s) in the plural ("the tomatoes", "two plots")."""
+    if mention.plot is not None:
+        return bool(mention.plot.get("plural"))
+    last = max(mention.heads, key=lambda h: h.end, default=None)
+    return last is not None and last.tokens[-1].norm.endswith("s")
 
 
 def predicate_of_the_placed(clauses: Sequence[Clause]) -> None:
@@ -50,9 +61,6 @@ def predicate_of_the_placed(clauses: Sequence[Clause]) -> None:
             or len(clause.mentions) != 1
             or len(previous.mentions) != 1
             or previous.loose
-            # (the subject is its sentence's first field: not "apples and the wheat
-            # north of ...", but "February, and the strawberries next to ...")
-            or not _first_of_its_sentence(clauses, previous)
         ):
             continue
         subject, placed = previous.mentions[0], clause.mentions[0]
@@ -62,9 +70,17 @@ def predicate_of_the_placed(clauses: Sequence[Clause]) -> None:
         if not subject.has_crop or said or not heads:
             continue
         copula = next(
-            (n for n, i in enumerate(words) if i.norm in _COPULAS and i.start > max(heads)), None
+            (n for n, i in enumerate(words) if i.norm in _VERBS and i.start > max(heads)), None
         )
         if copula is None:
+            continue
+        verb = words[copula].norm
+        # (the subject is its sentence's first field: not "apples and the wheat north of
+        # ... is ripe", but "February, and the strawberries next to ..."; or the verb
+        # agrees with it and not with the field it is placed against: "..., and the
+        # tomatoes next to the vineyard have late blight")
+        agrees = _plural(subject) == (verb in _PLURAL_VERBS) != _plural(placed)
+        if not (agrees or (verb in _COPULAS and _first_of_its_sentence(clauses, previous))):
             continue
         moved = words[copula:]
         gone = {id(i) for i in moved}
@@ -385,6 +401,14 @@ def placements(clauses: Sequence[Clause], members: dict[int, list[int]]) -> dict
             continue
         if not before.items and link_norm(before) in (".", "!", "?"):
             continue  # ("... 14 rows. To the south, a Navel block": it places what follows)
+        if (
+            not before.items
+            and link_norm(before) == ";"
+            and position + 1 < len(clauses)
+            and link_norm(clauses[position + 1]) == ","
+            and clauses[position + 1].named
+        ):
+            continue  # ("...; on the west, Elsanta in the same layout": so after a semicolon)
         previous = clauses[_past_a_bracket(clauses, position - 1)].named
         if len(previous) == 1 and id(previous[0]) in members:
             placed[position] = previous[0]

@@ -565,8 +565,10 @@ def _attached(clauses: Sequence[Clause], position: int) -> bool:
     side; Valencia Late on the south side")."""
     index, described = position - 1, False
     previous = clauses[index]
-    if not previous.items and link_norm(previous) in _FULL_STOPS:
-        return False  # ("... 14 rows. To the south, a Navel block": it opens a sentence)
+    if not previous.items and link_norm(previous) in (*_FULL_STOPS, ";"):
+        # ("... 14 rows. To the south, a Navel block": it opens a sentence; so it does
+        # after a semicolon: "On the east, Albion ...; on the west, Elsanta ...")
+        return False
     while index > 0 and not clauses[index].named:
         clause = clauses[index]
         if (

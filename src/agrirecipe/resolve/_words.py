@@ -413,6 +413,8 @@ def _every_plot(items: Sequence[Item]) -> None:
             continue
         if item.norm == "both" and not _named_in_a_sentence_before(items, index):
             continue  # ("grapes ripening in both blocks. Chardonnay: ...": the two named after)
+        if item.norm == "all" and index and items[index - 1].norm in ("is", "s", "was"):
+            continue  # ("the top is all fruit trees": what the place is, a field of them)
         at = index + 1
         if item.norm == "all" and at < len(items) and items[at].norm == "the":
             at += 1
