@@ -127,3 +127,21 @@ def test_both_of_them_after_a_relation() -> None:
     assert {("south_of", riesling, (kordia,)), ("south_of", riesling, (regina,))} <= _relations(
         recipe
     )
+
+
+def test_a_crop_said_again_after_a_heading_is_its_counted_members() -> None:
+    recipe = generate(
+        "Cereal strips for a yield-monitor simulation: a maize strip between two wheat "
+        "strips, each strip 30 m wide and 300 m long. Maize in 75 cm rows running "
+        "north-south, wheat drilled at 15 cm."
+    ).recipe
+    assert _crops(recipe) == ["Maize", "Wheat", "Wheat"]
+    assert [f.agronomy.row_spacing_m for f in recipe.fields[1:]] == [0.15, 0.15]
+
+
+def test_inches_said_as_in_before_a_plant_spacing() -> None:
+    field = generate(
+        "synthetic scene of spuds for a row-following camera: 48 rows on 36-inch centers, "
+        "12 in seed piece spacing, 1000 ft rows running E-W"
+    ).recipe.fields[0]
+    assert field.agronomy.in_row_spacing_m == pytest.approx(0.3048)

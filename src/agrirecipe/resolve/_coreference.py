@@ -372,7 +372,10 @@ def merge_coreferences(
             # "three fields: potatoes, carrots and onions ..., the carrots have blight";
             # "pear trees and apple trees ..., pears to the west": a crop named again
             # after a comma is the one earlier field it can be (if only one can).
-            members = [r for m in reversed(kept) for r in (m.refinements[::-1] or [m])]
+            # (each field once: "two wheat strips" is two members of a heading, one mention)
+            members = list(
+                {id(r): r for m in reversed(kept) for r in (m.refinements[::-1] or [m])}.values()
+            )
             candidates = [m for m in members if _compatible(builder, m, mention)]
             named = [m for m in candidates if strong_crops(m) & own]
             if own and len(named) == 1 and len(candidates) > 1:
