@@ -304,7 +304,8 @@ def find_geometry(
                 claimed[index] = True
     found.sort(key=lambda m: m.first)
     found = _respectively(tokens, found, claimed, tables)
-    return sorted([*found, *_counted_alike(tokens, found, claimed, tables)], key=lambda m: m.first)
+    alike = _counted_alike(tokens, found, claimed, tables)
+    return sorted([*found, *alike], key=lambda m: m.first) if alike else found
 
 
 #: Counts of rows or beds that the counts listed after them repeat ("four beds of
