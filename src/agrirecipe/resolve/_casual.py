@@ -56,6 +56,12 @@ _MIXED_IN = re.compile(
 )
 #: ", all in one block", "all in a single field": the one plot a crop is grown in.
 _ALL_IN_ONE = re.compile(r"\s*,?\s+(?i:all)\s+(?i:in)\s+(?=(?i:one|a\s+single)\s)")
+#: "smthn w/ cereals & smthn w/ fruit": a field said as "something with" its crop, at the
+#: start of a clause (not "something with the light", later in one)
+_SOMETHING_WITH = re.compile(
+    r"(?P<lead>^|[,;:.!?&(]|\b(?i:and|plus|then|also)\b)\s*(?i:something|anything)\s+"
+    r"(?i:with|of)\s+(?!(?i:the|a|an|it|them|this|that)\b)"
+)
 #: "minus 2", "negative 3": a sign said as a word before a number.
 _MINUS = re.compile(r"\b(?i:minus|negative)\s+(?=\d)")
 #: An arrow written between two words ("west→east", "wheat -> maize").
@@ -97,6 +103,7 @@ def expand_casual(prompt: str) -> str:
     text = _MINUS.sub("-", text)
     text = pattern.sub(replace, text)
     text = lower.sub(lambda match: lower_forms[match.group(0)], text)
+    text = _SOMETHING_WITH.sub(r"\g<lead> some ", text)
     # "sweet corn next to cherry tomatoes, ripe, aug, both": what was said before a
     # closing "both" is said of both ("..., both ripe, aug")
     text = _BOTH_AFTER.sub(lambda m: f", both {m.group('said').strip().rstrip(',')}", text)

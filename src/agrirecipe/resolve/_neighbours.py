@@ -409,6 +409,16 @@ _SAID_AGAIN = re.compile(
 )
 
 
+# "cabbage up top (north) & lettuce under it": on a map of the farm (one with a top, a
+# bottom or a compass side), what lies under a field lies below it on the map
+_UNDER_IT = re.compile(
+    r"\b(?i:under|beneath|underneath)\s+(?P<it>(?i:it|them|that|those)(?:\s+(?i:one|ones))?)\b"
+)
+_A_MAP = re.compile(
+    r"\b(?i:top|bottom|north|south|northern|southern|above|upper|lower|uphill|downhill)\b"
+)
+
+
 def _placed_by_a_thing(match: re.Match[str]) -> str:
     """ "East of the barn: Savoy cabbage." written "Savoy cabbage east of the barn."."""
     return (
@@ -426,6 +436,8 @@ def place_sides(text: str) -> str:
     # "directly below it, so south of the maize, a field of cabbages": the side said
     # again in compass words
     text = _SAID_AGAIN.sub(r"\g<again>", text)
+    if _A_MAP.search(text):
+        text = _UNDER_IT.sub(r"below \g<it>", text)
     # (the same thing on two sides: "East of the barn: ... West of the barn: ...")
     things = [m.group("thing").lower() for m in _SIDE_OF_A_THING_LABEL.finditer(text)]
     text = _SIDE_OF_A_THING_LABEL.sub(

@@ -45,9 +45,10 @@ step  pass                                        module (data)
       back-references (and where a mention is     ``_coreference``,
       placed); plots said with a field;           ``_back_references``,
       list headings, titles and comparison        ``_placed_members``,
-      headings; summaries of fields; plots        ``_appositives``, ``_headings``,
-      counted after the only crop named           ``_titles``, ``_comparisons``,
-                                                  ``_summaries``,
+      headings; summaries of fields; lists said   ``_appositives``, ``_headings``,
+      again as their fields; plots counted        ``_titles``, ``_comparisons``,
+      after the only crop named                   ``_summaries``,
+                                                  ``_restated_lists``,
                                                   ``_plots_of_the_crop``
 11    head-less clauses' words to their fields    ``_loose`` (signs in
       (which fields a measure is said of)         ``_loose_owners``),
@@ -138,6 +139,7 @@ from agrirecipe.resolve._refusals import (
     reject_unknown_names,
 )
 from agrirecipe.resolve._relations import read_relations
+from agrirecipe.resolve._restated_lists import drop_restated_lists
 from agrirecipe.resolve._retractions import (
     apply_corrections,
     drop_alternatives,
@@ -325,6 +327,7 @@ class PromptReader(FieldReading):
         mentions = fill_counted_lists(clauses, mentions)
         mentions = drop_titles(clauses, mentions, self.crop_categories)
         mentions = drop_trailing_summaries(clauses, drop_plural_headings(clauses, mentions))
+        mentions = drop_restated_lists(clauses, mentions, self.crop_categories)
         mentions = drop_announced_plots(clauses, drop_restated_counts(clauses, mentions))
         mentions = spread_counted_totals(clauses, drop_single_plot_counts(clauses, mentions))
         mentions = lend_heading_crop(clauses, name_counted_plots(clauses, mentions))
