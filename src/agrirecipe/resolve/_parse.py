@@ -16,8 +16,8 @@ step  pass                                        module (data)
 1     texting forms become words; value lists     ``_casual`` (casual.yaml),
       and counts said once; labels, members       ``_lists`` (value_lists.yaml),
       named again, walks and sides said in        ``_labels``, ``_sides``,
-      other words; plots said to touch; counts    ``_members``, ``_neighbours``,
-      of a crop's rows or plants                  ``_counted_crops``
+      other words; plots said to touch; counts    ``_members``, ``_side_phrases``,
+      of a crop's rows or plants                  ``_neighbours``, ``_counted_crops``
 2     words, numbers and marks                    ``_lexicon.tokenize``
 3     stated row geometry (and measures no        ``_geometry`` (geometry.yaml)
       recipe holds, as not used)
@@ -124,7 +124,6 @@ from agrirecipe.resolve._neighbours import (
     place_divided_plots,
     place_flanks,
     place_neighbouring_plots,
-    place_sides,
 )
 from agrirecipe.resolve._placements import predicate_of_the_placed
 from agrirecipe.resolve._plots_of_the_crop import count_the_crop
@@ -148,6 +147,7 @@ from agrirecipe.resolve._retractions import (
     drop_negated,
 )
 from agrirecipe.resolve._scan import assign_roles
+from agrirecipe.resolve._side_phrases import place_sides
 from agrirecipe.resolve._sides import (
     place_compass_members,
     place_leading_directions,
