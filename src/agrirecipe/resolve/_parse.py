@@ -41,6 +41,7 @@ step  pass                                        module (data)
       (corrections, alternatives, choices left    ``_retractions``,
       open, negations); counts, shared            ``_structure``,
       attributes; the members a plural lists;     ``_refinements``, ``_listing``,
+                                                  ``_listed_members``,
       descriptions of plants named;               ``_descriptions``, ``_own_crop``,
       back-references (and where a mention is     ``_coreference``,
       placed); plots said with a field;           ``_back_references``,
