@@ -9,7 +9,7 @@ mentions into relations between their fields (plural mentions expand).
 from __future__ import annotations
 
 import itertools
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from typing import Any, get_args
 
 from agrirecipe.recipe import RelationKind
@@ -382,10 +382,12 @@ def relation_mentions(
     *,
     pronoun: bool,
     attached: bool = False,
+    fields: Callable[[Mention], int] | None = None,
 ) -> tuple[Any, Mention, tuple[Mention, ...]] | None:
     """The kind, subject and objects a relation word links among the mentions named
     ``before`` and ``after`` it (``pronoun``: said as "north of them"; ``attached``: the
-    word ends the clause of the field it places), or None."""
+    word ends the clause of the field it places; ``fields``: how many fields a mention
+    stands for, its count when not given), or None."""
     kind = link.data.get("value", "between") if link.role != "between" else "between"
     if kind == "flanks":
         # "Durondeau and Williams pears on either side of a Jonagold block"
@@ -422,7 +424,8 @@ def relation_mentions(
     if link.role == "between":
         # each once ("carrots (nantes) & cabbage (savoy)" names each twice)
         after = list({id(m): m for m in after}.values())
-        if after and before and (after[0].count or 1) >= 2:
+        # ("Three strips: a maize strip between two wheat strips": a member counted two)
+        if after and before and (fields(after[0]) if fields else after[0].count or 1) >= 2:
             return "between", before[-1], (after[0], after[0])
         if len(after) == 1 and len(before) >= 2 and attached:
             # "cabbages nearest to me, a strip of onions in between, and a field of

@@ -357,7 +357,14 @@ def read_relations(
             # "pears on the north block, bananas ...": a trailer right after a field
             # places that field ("..., and to the north, pears" places the one after).
             attached = _attached(clauses, position)
-            pairs = relation_mentions(link, before, after, pronoun=pronoun, attached=attached)
+            pairs = relation_mentions(
+                link,
+                before,
+                after,
+                pronoun=pronoun,
+                attached=attached,
+                fields=lambda m: len(members.get(id(m), ())) or m.count or 1,
+            )
         if pairs is None:
             warnings.append(f"ignored {link.raw!r}: it needs a field on each side")
             continue

@@ -15,7 +15,7 @@ import re
 from collections.abc import Callable, Sequence
 
 from agrirecipe.resolve._labels import NAMING
-from agrirecipe.resolve._lexicon import Item
+from agrirecipe.resolve._lexicon import Item, reader_words
 
 __all__ = [
     "place_compass_members",
@@ -171,7 +171,7 @@ def place_compass_members(text: str, tag: Callable[[str], Sequence[Item]]) -> st
     sides = first.group("side").lower(), second.group("side").lower()
     if _OPPOSITE_SIDES[sides[0]] != sides[1]:
         return text
-    if any(item.has(*NAMING) for m in matches for item in tag(m.group("rest"))):
+    if any(_names_a_crop(m.group("rest"), tag) for m in matches):
         return text
     one = "One" if (first.group("at") or first.group("the"))[0].isupper() else "one"
     other = "The other" if (second.group("at") or second.group("the"))[0].isupper() else "the other"
@@ -182,6 +182,29 @@ def place_compass_members(text: str, tag: Callable[[str], Sequence[Item]]) -> st
         + f"{other} to the {sides[1]}"
         + text[second.end() :]
     )
+
+
+def _names_a_crop(phrase: str, tag: Callable[[str], Sequence[Item]]) -> bool:
+    """Whether ``phrase`` names a crop, a variety or a category (not "yellow-orange
+    stripes of rust": a crop word joined by a hyphen to a colour is a colour)."""
+    items = list(tag(phrase))
+    colours = reader_words("colours")
+
+    def a_colour(index: int) -> bool:
+        item = items[index]
+        return item.norm in colours and any(
+            0 <= other < len(items)
+            and items[other].norm in colours
+            and phrase[
+                min(items[index].end, items[other].end) : max(
+                    items[index].start, items[other].start
+                )
+            ]
+            == "-"
+            for other in (index - 1, index + 1)
+        )
+
+    return any(item.has(*NAMING) and not a_colour(k) for k, item in enumerate(items))
 
 
 # "the top field", "the bottom plot": north and south, as zones read them
