@@ -51,13 +51,18 @@ __all__ = [
 
 
 def counted_host(
-    builder: MentionBuilder, kept: Sequence[Mention], mention: Mention
+    builder: MentionBuilder, kept: Sequence[Mention], mention: Mention, *, label: bool = False
 ) -> Mention | None:
     """The counted plural of no crop named last ("three orchard blocks") that a definite
     crop mention is one member of, if it still has room; else None. A counted plural of
     one crop ("two cherry blocks: the Bing trees ..., the Kordia block ...") hosts the
-    varieties of its crop named after it."""
-    if not kept or mention.count is not None or not strong_crops(mention):
+    varieties of its crop named after it. With ``label`` (the mention labels its
+    sentence) a plot that says its crops is a member too ("two blocks. Vineyard: ...")."""
+    if not kept or mention.count is not None:
+        return None
+    if not strong_crops(mention) and not (
+        label and mention.plot is not None and mention.plot["options"]
+    ):
         return None
     host = kept[-1]
     crops = strong_crops(host)

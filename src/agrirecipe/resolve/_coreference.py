@@ -287,7 +287,9 @@ def merge_coreferences(
             # named again, past other fields named since
             member = placed_again
         host = (
-            counted_host(builder, kept, mention)
+            counted_host(
+                builder, kept, mention, label=bare and labels_its_sentence(clauses, clause)
+            )
             if (
                 is_definite
                 or placed_first(clauses, clause)

@@ -50,7 +50,8 @@ def drop_counted_summaries(clauses: Sequence[Clause], mentions: list[Mention]) -
         or (first.count or 1) < 2
         or first.count != len(members) + len(later)
         or not all(strong_crops(m) and (m.count or 1) == 1 and not m.refinements for m in later)
-        or not all(strong_crops(m) for m in members)
+        # ("two blocks. Vineyard: ...": a member labelled by a plot that says its crops)
+        or not all(strong_crops(m) or (m.plot or {}).get("options") for m in members)
     ):
         return mentions
     ends = next(
