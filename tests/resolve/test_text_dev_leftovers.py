@@ -6,7 +6,8 @@ named before, the vines of a farm whose other fields cannot hold them, a field a
 compass edge as a zone, "further north again, past the lane, ..." from the field before,
 "around the farmhouse: wheat to the north of it, maize to the south, ..." as zones, "2,000
 m² in total, plus a 1,000 m² cabbage block" (the first field's own total), and the end of
-a "with" list ("with late blight, blackened leaves and collapsed plants") as its field's."""
+a "with" list ("with late blight, blackened leaves and collapsed plants") as its field's,
+"the one 12 hectare block and it's all wheat"."""
 
 from __future__ import annotations
 
@@ -170,3 +171,10 @@ def test_the_end_of_a_with_list_is_its_fields(prompt: str) -> None:
     russet, fontane = recipe(prompt).fields
     assert (russet.variety, russet.health) == ("Russet Burbank", "Healthy")
     assert (fontane.variety, fontane.health) == ("Fontane", "Ill")
+
+
+@pytest.mark.parametrize("said", ["it's all wheat", "it's wheat"])
+def test_it_is_all_the_crop_of_the_one_block(said: str) -> None:
+    (field,) = recipe(f"We only farm the one 12 hectare block and {said}.").fields
+    assert field.crop == "Wheat"
+    assert field.geometry.size_m[0] * field.geometry.size_m[1] == pytest.approx(120000, rel=0.01)

@@ -109,13 +109,16 @@ def it_is_a(mention: Mention) -> bool:
 
 def it_is_the_crop(kept: Sequence[Mention], mention: Mention) -> bool:
     """Whether the mention says what crop the field named last, a plot of no crop,
-    holds ("just the one field behind the dairy sheds, and it's carrots")."""
+    holds ("just the one field behind the dairy sheds, and it's carrots", "..., and it's
+    all wheat")."""
     words = [i.norm for i in mention.items]
     opening = next((o for o in _IT_IS if tuple(words[: len(o)]) == o), None)
     last = kept[-1] if kept else None
+    # ("..., and it's all wheat": past a word that says the crop fills it)
+    said = len(opening or ()) + (words[len(opening or ()) : len(opening or ()) + 1] == ["all"])
     return (
         opening is not None
-        and mention.heads[:1] == mention.items[len(opening) : len(opening) + 1]
+        and mention.heads[:1] == mention.items[said : said + 1]
         and (mention.has_crop or mention.category is not None)
         and mention.plot is None
         and mention.count is None
