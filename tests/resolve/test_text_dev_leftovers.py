@@ -7,7 +7,8 @@ compass edge as a zone, "further north again, past the lane, ..." from the field
 "around the farmhouse: wheat to the north of it, maize to the south, ..." as zones, "2,000
 m² in total, plus a 1,000 m² cabbage block" (the first field's own total), and the end of
 a "with" list ("with late blight, blackened leaves and collapsed plants") as its field's,
-"the one 12 hectare block and it's all wheat"."""
+"the one 12 hectare block and it's all wheat", a comparison heading whose fields are
+named after its colon."""
 
 from __future__ import annotations
 
@@ -178,3 +179,11 @@ def test_it_is_all_the_crop_of_the_one_block(said: str) -> None:
     (field,) = recipe(f"We only farm the one 12 hectare block and {said}.").fields
     assert field.crop == "Wheat"
     assert field.geometry.size_m[0] * field.geometry.size_m[1] == pytest.approx(120000, rel=0.01)
+
+
+def test_a_comparison_heading_whose_fields_are_named_after_the_colon() -> None:
+    fields = recipe(
+        "Cherry vs cherry-tomato confusion test for the classifier: a Lapins cherry block with "
+        "rows 5 m apart and trees 3 m apart, and beside it 4 rows of cherry tomatoes at 1.5 m."
+    ).fields
+    assert [(f.crop, f.variety) for f in fields] == [("Cherry", "Lapins"), ("Tomato", "Cherry")]
