@@ -8,7 +8,8 @@ compass edge as a zone, "further north again, past the lane, ..." from the field
 m² in total, plus a 1,000 m² cabbage block" (the first field's own total), and the end of
 a "with" list ("with late blight, blackened leaves and collapsed plants") as its field's,
 "the one 12 hectare block and it's all wheat", a comparison heading whose fields are
-named after its colon."""
+named after its colon, members placed "one east of the other" then told apart by their
+sides."""
 
 from __future__ import annotations
 
@@ -187,3 +188,18 @@ def test_a_comparison_heading_whose_fields_are_named_after_the_colon() -> None:
         "rows 5 m apart and trees 3 m apart, and beside it 4 rows of cherry tomatoes at 1.5 m."
     ).fields
     assert [(f.crop, f.variety) for f in fields] == [("Cherry", "Lapins"), ("Tomato", "Cherry")]
+
+
+def test_members_placed_one_against_the_other_then_told_apart_by_their_sides() -> None:
+    north, south = recipe(
+        "Two potato fields, one north of the other; the north one has blight, the south one "
+        "is clean."
+    ).fields
+    assert (north.health, south.health) == ("Ill", "Healthy")
+    assert [
+        (r.kind, r.subject, r.objects)
+        for r in recipe(
+            "Two cherry orchards, one east of the other; the eastern one is white with blossom, "
+            "the western one not yet."
+        ).relations
+    ][:1] == [("east_of", "cherry_orchard_1", ("cherry_orchard_2",))]

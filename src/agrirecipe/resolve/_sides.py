@@ -175,13 +175,26 @@ def place_compass_members(text: str, tag: Callable[[str], Sequence[Item]]) -> st
         return text
     one = "One" if (first.group("at") or first.group("the"))[0].isupper() else "one"
     other = "The other" if (second.group("at") or second.group("the"))[0].isupper() else "the other"
+    before = text[: first.start()]
+    # ("Two cherry orchards, one east of the other; the eastern one is ...": the sides
+    # said again by the members, which place them)
+    said = _ONE_OF_THE_OTHER.search(before)
+    if said is not None and said.group("side").lower() in sides:
+        before = before[: said.start()] + before[said.end() :]
     return (
-        text[: first.start()]
+        before
         + f"{one} to the {sides[0]}"
         + text[first.end() : second.start()]
         + f"{other} to the {sides[1]}"
         + text[second.end() :]
     )
+
+
+#: "one east of the other": two members placed against each other, before their sides.
+_ONE_OF_THE_OTHER = re.compile(
+    r"\s*,?\s*\b(?i:one)\s+(?:(?i:to the)\s+)?(?P<side>(?i:north|south|east|west))\s+(?i:of)\s+"
+    r"(?i:the)\s+(?i:other)\b"
+)
 
 
 def _names_a_crop(phrase: str, tag: Callable[[str], Sequence[Item]]) -> bool:
