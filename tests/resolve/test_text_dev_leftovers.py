@@ -9,7 +9,7 @@ m² in total, plus a 1,000 m² cabbage block" (the first field's own total), and
 a "with" list ("with late blight, blackened leaves and collapsed plants") as its field's,
 "the one 12 hectare block and it's all wheat", a comparison heading whose fields are
 named after its colon, members placed "one east of the other" then told apart by their
-sides."""
+sides, a disease named of a lush field."""
 
 from __future__ import annotations
 
@@ -17,7 +17,7 @@ from collections.abc import Callable
 
 import pytest
 
-from agrirecipe import generate
+from agrirecipe import PromptError, generate
 from agrirecipe.recipe import SceneRecipe
 
 NamedRelations = set[tuple[str, str, tuple[str, ...]]]
@@ -203,3 +203,16 @@ def test_members_placed_one_against_the_other_then_told_apart_by_their_sides() -
             "the western one not yet."
         ).relations
     ][:1] == [("east_of", "cherry_orchard_1", ("cherry_orchard_2",))]
+
+
+def test_a_disease_named_of_a_lush_field_makes_it_ill() -> None:
+    (wheat,) = recipe(
+        "Winter wheat, photo taken in late April. Lush and dark green, shin high, with a bit of "
+        "yellow rust striping on the lower leaves. Skylarks overhead."
+    ).fields
+    assert wheat.health == "Ill"
+
+
+def test_a_field_said_healthy_and_diseased_is_still_refused() -> None:
+    with pytest.raises(PromptError, match="both healthy and ill"):
+        recipe("a healthy wheat field with yellow rust")

@@ -79,6 +79,8 @@ def _fruit_that_ripens(items: Sequence[Item], roles: tuple[str, ...]) -> list[st
 def health_of(items: Sequence[Item], text: str) -> HealthState | None:
     ordered = sorted(items, key=lambda item: item.start)
     values: list[HealthState] = []
+    vigour = {str(w) for w in vocabulary()["vigour_words"]}
+    only_vigour = True  # every Healthy word only says the plants grow well ("lush")
     for index, item in enumerate(ordered):
         if item.role != "health":
             continue
@@ -86,8 +88,12 @@ def health_of(items: Sequence[Item], text: str) -> HealthState | None:
         negated = index > 0 and ordered[index - 1].role == "negation"
         if negated:
             value = "Healthy"
+        if value == "Healthy" and (negated or item.norm not in vigour):
+            only_vigour = False
         values.append(value)
     distinct: list[HealthState] = sorted(set(values))
+    if len(distinct) > 1 and only_vigour:
+        return "Ill"  # "Lush and dark green, with a bit of yellow rust on the lower leaves"
     if len(distinct) > 1:
         words = [i.raw for i in ordered if i.role == "health"]
         raise PromptError(
