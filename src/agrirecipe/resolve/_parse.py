@@ -39,7 +39,7 @@ step  pass                                        module (data)
                                                   ``_contradictions``
 10    weak variety names; mentions taken back    ``_weak_varieties``,
       (corrections, alternatives, choices left    ``_retractions``,
-      open, negations); counts, shared            ``_structure``,
+      open, negations); counts, shared            ``_counts``, ``_structure``,
       attributes; the members a plural lists;     ``_refinements``, ``_listing``,
                                                   ``_listed_members``,
       descriptions of plants named;               ``_descriptions``, ``_own_crop``,
@@ -73,6 +73,13 @@ from agrirecipe.resolve._casual import count_said_after_crop, end_reciprocals, e
 from agrirecipe.resolve._comparisons import drop_compared_headings
 from agrirecipe.resolve._coreference import merge_coreferences
 from agrirecipe.resolve._counted_crops import hoist_counted_crops
+from agrirecipe.resolve._counts import (
+    apply_plural_counts,
+    count_a_list_after_it,
+    count_plots_of_a_list,
+    share_count_over_a_list,
+    take_the_lower_count,
+)
 from agrirecipe.resolve._decompose import MentionBuilder, decompose, resolve_weak_varieties
 from agrirecipe.resolve._descriptions import dissolve_plant_parts
 from agrirecipe.resolve._fields import (
@@ -158,15 +165,10 @@ from agrirecipe.resolve._sides import (
 from agrirecipe.resolve._sizes import read_heights, read_latitude, read_sizes
 from agrirecipe.resolve._structure import (
     apply_each_side,
-    apply_plural_counts,
-    count_a_list_after_it,
-    count_plots_of_a_list,
     raise_conflicts,
-    share_count_over_a_list,
     share_counted_fields,
     share_leading_attributes,
     share_trailing_attributes,
-    take_the_lower_count,
 )
 from agrirecipe.resolve._summaries import (
     drop_announced_plots,
