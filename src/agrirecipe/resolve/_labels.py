@@ -110,6 +110,28 @@ def _crops_in_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
     return text
 
 
+# "Plot register: P1 Imperator carrots, P2 Danvers carrots, ...": a capital and a number
+# as one word, the code of a plot (never a count of fields)
+_CODE = re.compile(r"(?<![\w-])(?P<letter>[A-Z])(?P<number>\d{1,2})(?![\w-]|\.\d)")
+_ITEM_OPENING = re.compile(r"(?:^|[,;:.(]|\n)\s*$")
+
+
+def _code_labels(text: str) -> str:
+    """``text`` with plot codes written as numbered plots ("P2 Danvers" -> "plot 2
+    Danvers") when two or more codes of one letter each open an item of a list."""
+    openers: dict[str, set[str]] = {}
+    for match in _CODE.finditer(text):
+        if _ITEM_OPENING.search(text[: match.start()]):
+            openers.setdefault(match.group("letter"), set()).add(match.group("number"))
+    letters = {letter for letter, numbers in openers.items() if len(numbers) >= 2}
+    if not letters:
+        return text
+    return _CODE.sub(
+        lambda m: f"plot {m.group('number')}" if m.group("letter") in letters else m.group(0),
+        text,
+    )
+
+
 def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str, list[str]]:
     """``text`` with field labels dropped and references to them spelled out.
 
@@ -117,7 +139,7 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
     label ("Block A = Jonagored apples"). Text with fewer than two labels that name
     crops is returned unchanged.
     """
-    text = _crops_in_labels(text, tag)
+    text = _crops_in_labels(_code_labels(text), tag)
     text = _BRACKETED_THEN_NAMED.sub(r"\g<head>: ", text)
     text = _PLACED_THEN_MEASURED.sub(r"\g<head> \g<rest>, \g<where>", text)
     text = _NAME_PLACED_THEN_MEASURED.sub(r"\g<name>: \g<rest>, \g<where>\g<end>", text)

@@ -316,7 +316,8 @@ def past_and_other_readiness(items: Sequence[Item]) -> None:
                 item.role = "filler"
         if item.role != "month" or len(times) < 2:
             continue
-        before = [i.norm for i in items[max(0, index - 3) : index]]
+        # ("they went in back in April": past "back")
+        before = [i.norm for i in items[max(0, index - 4) : index]]
         last = before[-1] if before else ""
         if (
             last == "last"

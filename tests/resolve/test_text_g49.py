@@ -1,0 +1,40 @@
+"""Text of blind set g49 (issue 8): each miss of its blind run fixed as the general
+mechanism (plot codes "P1", "P2" opening a list's items; a month the crop went in)."""
+
+from __future__ import annotations
+
+import pytest
+
+from agrirecipe import generate
+
+
+def test_plot_codes_opening_a_lists_items_are_labels_not_counts() -> None:
+    recipe = generate(
+        "Plot register: P1 Imperator carrots, P2 Danvers carrots, P3 Savoy cabbage, P4 January "
+        "King cabbage, P5 Stuttgarter onions."
+    ).recipe
+    assert [f.variety for f in recipe.fields] == [
+        "Imperator",
+        "Danvers",
+        "Savoy",
+        "January King",
+        "Stuttgarter",
+    ]
+
+
+def test_a_lone_code_is_left_alone() -> None:
+    recipe = generate("an F1 hybrid tomato field").recipe
+    assert [f.crop for f in recipe.fields] == ["Tomato"]
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "The Nantes carrots on the sandy field went in back in April; now it's June and "
+        "they're still young, no disease.",
+        "Nantes carrots, put in in April, now it's June, still young.",
+    ],
+)
+def test_the_month_a_crop_went_in_is_not_the_scenes_time(prompt: str) -> None:
+    (carrots,) = generate(prompt).recipe.fields
+    assert (carrots.variety, carrots.season, carrots.stage) == ("Nantes", "Summer", "Vegetative")
