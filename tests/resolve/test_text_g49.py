@@ -1,5 +1,6 @@
 """Text of blind set g49 (issue 8): each miss of its blind run fixed as the general
-mechanism (plot codes "P1", "P2" opening a list's items; a month the crop went in)."""
+mechanism (plot codes "P1", "P2" opening a list's items; a month the crop went in;
+members of a counted heading said by crop group, each in its own part of the farm)."""
 
 from __future__ import annotations
 
@@ -38,3 +39,16 @@ def test_a_lone_code_is_left_alone() -> None:
 def test_the_month_a_crop_went_in_is_not_the_scenes_time(prompt: str) -> None:
     (carrots,) = generate(prompt).recipe.fields
     assert (carrots.variety, carrots.season, carrots.stage) == ("Nantes", "Summer", "Vegetative")
+
+
+def test_members_of_a_counted_heading_each_in_a_part_of_the_farm() -> None:
+    recipe = generate(
+        "Our place is basically three strips. Cherries across the top end, root veg through "
+        "the middle, and cereals down at the bottom by the river."
+    ).recipe
+    cherries, roots, cereals = recipe.fields
+    assert cherries.crop == "Cherry"
+    assert roots.crop in ("Carrot", "Potato", "Onion")
+    assert cereals.crop in ("Wheat", "Maize")
+    relations = {(r.kind, r.subject, r.objects) for r in recipe.relations}
+    assert ("north_of", roots.id, (cereals.id,)) in relations

@@ -51,17 +51,20 @@ __all__ = [
 
 
 def counted_host(
-    builder: MentionBuilder, kept: Sequence[Mention], mention: Mention, *, label: bool = False
+    builder: MentionBuilder, kept: Sequence[Mention], mention: Mention, *, member: bool = False
 ) -> Mention | None:
     """The counted plural of no crop named last ("three orchard blocks") that a definite
     crop mention is one member of, if it still has room; else None. A counted plural of
     one crop ("two cherry blocks: the Bing trees ..., the Kordia block ...") hosts the
-    varieties of its crop named after it. With ``label`` (the mention labels its
-    sentence) a plot that says its crops is a member too ("two blocks. Vineyard: ...")."""
+    varieties of its crop named after it. With ``member`` (the mention is said as a
+    member: under a label of its own, or in its own part of the farm) a plot that says
+    its crops, or a category, is a member too ("two blocks. Vineyard: ...", "three strips.
+    Cherries across the top end, root veg through the middle, ...")."""
     if not kept or mention.count is not None:
         return None
     if not strong_crops(mention) and not (
-        label and mention.plot is not None and mention.plot["options"]
+        member
+        and (mention.category is not None or (mention.plot is not None and mention.plot["options"]))
     ):
         return None
     host = kept[-1]

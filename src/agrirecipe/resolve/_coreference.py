@@ -288,7 +288,14 @@ def merge_coreferences(
             member = placed_again
         host = (
             counted_host(
-                builder, kept, mention, label=bare and labels_its_sentence(clauses, clause)
+                builder,
+                kept,
+                mention,
+                member=bare
+                and (
+                    labels_its_sentence(clauses, clause)
+                    or any(i.role == "zone" for i in mention.items)
+                ),
             )
             if (
                 is_definite

@@ -49,7 +49,7 @@ def drop_counted_summaries(clauses: Sequence[Clause], mentions: list[Mention]) -
         or first.plot is None
         or (first.count or 1) < 2
         or first.count != len(members) + len(later)
-        or not all(strong_crops(m) and (m.count or 1) == 1 and not m.refinements for m in later)
+        or not all(_names_its_crops(m) and (m.count or 1) == 1 and not m.refinements for m in later)
         # ("two blocks. Vineyard: ...": a member labelled by a plot that says its crops)
         or not all(strong_crops(m) or (m.plot or {}).get("options") for m in members)
     ):
@@ -70,6 +70,15 @@ def drop_counted_summaries(clauses: Sequence[Clause], mentions: list[Mention]) -
         mention.is_refinement = True
         first.refinements.append(mention)
     return [first]
+
+
+def _names_its_crops(mention: Mention) -> bool:
+    """A crop named, or (in a part of the farm of its own: "and cereals down at the
+    bottom") a category or a plot that says its crops."""
+    return bool(strong_crops(mention)) or (
+        any(i.role == "zone" for i in mention.items)
+        and (mention.category is not None or bool((mention.plot or {}).get("options")))
+    )
 
 
 #: Attributes a summary said before its fields gives each of them.
