@@ -1,6 +1,8 @@
 """Text of blind set g49 (issue 8): each miss of its blind run fixed as the general
 mechanism (plot codes "P1", "P2" opening a list's items; a month the crop went in;
-members of a counted heading said by crop group, each in its own part of the farm)."""
+members of a counted heading said by crop group, each in its own part of the farm; "a
+fruit tree block"; a density right after the plants; a grid in brackets that fits some of
+the crops a plot may be)."""
 
 from __future__ import annotations
 
@@ -52,3 +54,36 @@ def test_members_of_a_counted_heading_each_in_a_part_of_the_farm() -> None:
     assert cereals.crop in ("Wheat", "Maize")
     relations = {(r.kind, r.subject, r.objects) for r in recipe.relations}
     assert ("north_of", roots.id, (cereals.id,)) in relations
+
+
+def test_a_fruit_tree_block_is_an_orchard() -> None:
+    recipe = generate(
+        "grapevines, 18 rows x 80 m, 2.2 m between rows, 1 m between vines, 8 m headland for "
+        "the tractor to turn; put a fruit tree block just north of the vines"
+    ).recipe
+    vines, trees = recipe.fields
+    assert trees.crop in ("Apple", "Pear", "Cherry", "Orange")
+    assert ("north_of", trees.id, (vines.id,)) in {
+        (r.kind, r.subject, r.objects) for r in recipe.relations
+    }
+
+
+def test_a_density_said_right_after_the_plants() -> None:
+    (tomatoes,) = generate(
+        "For a LiDAR dataset: half a hectare of tomato plants, 33,333 per hectare, 1.5 m "
+        "between rows."
+    ).recipe.fields
+    width, length = tomatoes.geometry.size_m
+    assert width * length == pytest.approx(5000, rel=0.01)
+    density = 10_000 / (tomatoes.agronomy.row_spacing_m * tomatoes.agronomy.in_row_spacing_m)
+    assert density == pytest.approx(33_333, rel=0.01)
+
+
+def test_a_grid_in_brackets_fits_some_of_the_crops_a_plot_may_be() -> None:
+    recipe = generate(
+        "Drone test: a fruit tree block (3.5 m x 1 m) north of a strawberry plot with beds on "
+        "1.5 m centres, each plot with its own 6 m headland."
+    ).recipe
+    trees = recipe.fields[0]
+    assert trees.crop in ("Apple", "Pear")
+    assert (trees.agronomy.row_spacing_m, trees.agronomy.in_row_spacing_m) == (3.5, 1.0)

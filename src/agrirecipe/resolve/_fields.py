@@ -218,7 +218,11 @@ class FieldReading:
             options = deciduous or options
         if crop is None and len(options) == 1:
             crop = options[0]
-        sizes, rows = self._planting_grid(sizes, rows, (crop,) if crop else options, text)
+        sizes, rows, fitting = self._planting_grid(sizes, rows, (crop,) if crop else options, text)
+        if crop is None and fitting:
+            # "a fruit tree block (3.5 m x 1 m)": the crops that grid fits
+            options = tuple(o for o in options if o in fitting)
+            crop = options[0] if len(options) == 1 else None
         size = single_size(sizes, text)
         heads = [h for h in member.mention.heads if h.role in ("head", "plot")]
         mention_words = " ".join(h.raw for h in heads) or None
@@ -246,21 +250,24 @@ class FieldReading:
         rows: RowSpec | None,
         crops: Sequence[str],
         text: str,
-    ) -> tuple[list[SizeIntent], RowSpec | None]:
+    ) -> tuple[list[SizeIntent], RowSpec | None, tuple[str, ...]]:
         """'Cripps Pink 3.4 x 1.0 m, 18 rows', 'Savoy cabbage, 60 x 40 cm': two lengths
         that fit the crop's row and plant spacing, and no field, are its planting grid
-        (rows that far apart, plants that far apart in the row), not the field's size."""
+        (rows that far apart, plants that far apart in the row), not the field's size.
+        Of several crops the field may be, the grid need fit only some: those are
+        returned (empty when no grid was read)."""
         spaced = _SPACED & rows.stated().keys() if rows is not None else set()
         density = rows.plants_per_ha if rows is not None and spaced == {"plants_per_ha"} else None
         if not crops or (spaced and density is None):
-            return sizes, rows
+            return sizes, rows, ()
         for size in sizes:
             width, length = size.width_m, size.length_m
             if width is None or length is None or max(width, length) > _GRID_MAX_M:
                 continue
             if density is not None and abs(density * width * length / 10_000 - 1) > 0.02:
                 continue  # "3 m by 3 m, 1,111 plants per hectare": the grid the density is
-            if all(self._fits_grid(crop, width, length) for crop in crops):
+            fitting = tuple(crop for crop in crops if self._fits_grid(crop, width, length))
+            if fitting:
                 said = rows.stated() if rows is not None else {}
                 grid = RowSpec(
                     **said,
@@ -276,8 +283,8 @@ class FieldReading:
                         f"plants {length:g} m apart), not its size",
                     )
                 )
-                return [s for s in sizes if s is not size], grid
-        return sizes, rows
+                return [s for s in sizes if s is not size], grid, fitting
+        return sizes, rows, ()
 
     def _fits_grid(self, crop: str, row: float, plant: float) -> bool:
         planting = self.context.knowledge.crop_file(crop).planting

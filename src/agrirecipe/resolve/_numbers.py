@@ -133,7 +133,13 @@ def _counts_of_each_plant(items: Sequence[Item]) -> None:
     for index, item in enumerate(items):
         if item.role == "plot" and index and items[index - 1].norm in ("per", "each", "a"):
             spec = item.data.get("value")
-            if isinstance(spec, dict) and spec.get("individual"):
+            # (not "a fruit tree block": the plants of the plot after it)
+            after = items[index + 1] if index + 1 < len(items) else None
+            if (
+                isinstance(spec, dict)
+                and spec.get("individual")
+                and not (after is not None and after.role == "plot")
+            ):
                 item.role = "filler"
         if (
             item.role == "number"
