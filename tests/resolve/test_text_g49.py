@@ -2,7 +2,7 @@
 mechanism (plot codes "P1", "P2" opening a list's items; a month the crop went in;
 members of a counted heading said by crop group, each in its own part of the farm; "a
 fruit tree block"; a density right after the plants; a grid in brackets that fits some of
-the crops a plot may be)."""
+the crops a plot may be; the time a list heading says)."""
 
 from __future__ import annotations
 
@@ -87,3 +87,14 @@ def test_a_grid_in_brackets_fits_some_of_the_crops_a_plot_may_be() -> None:
     trees = recipe.fields[0]
     assert trees.crop in ("Apple", "Pear")
     assert (trees.agronomy.row_spacing_m, trees.agronomy.in_row_spacing_m) == (3.5, 1.0)
+
+
+def test_the_time_a_list_heading_says_is_its_fields() -> None:
+    recipe = generate(
+        "Citrus harvest robot trial in Chile in July: a Navel block north of a Hamlin block, "
+        "6 m x 3 m spacing, 200 trees in each, fruit ripe."
+    ).recipe
+    assert [(f.variety, f.season) for f in recipe.fields] == [
+        ("Navel", "Winter"),
+        ("Hamlin", "Winter"),
+    ]

@@ -121,6 +121,9 @@ def drop_list_headings(
             and (sum(m.count or 1 for m in later) >= 2 or _counts_one(mention, later))
             and later[0].clause >= following.index
         ):
+            # ("Citrus harvest robot trial in Chile in July: a Navel block ...": the time
+            # the heading says is its fields')
+            lend_and_drop(clauses, mention, later)
             clauses[mention.clause].mentions = []
             continue
         if (
