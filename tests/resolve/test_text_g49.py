@@ -2,7 +2,7 @@
 mechanism (plot codes "P1", "P2" opening a list's items; a month the crop went in;
 members of a counted heading said by crop group, each in its own part of the farm; "a
 fruit tree block"; a density right after the plants; a grid in brackets that fits some of
-the crops a plot may be; the time a list heading says)."""
+the crops a plot may be; the time a list heading says; terraces named by their side)."""
 
 from __future__ import annotations
 
@@ -98,3 +98,12 @@ def test_the_time_a_list_heading_says_is_its_fields() -> None:
         ("Navel", "Winter"),
         ("Hamlin", "Winter"),
     ]
+
+
+def test_terraces_named_by_their_side() -> None:
+    recipe = generate("the south terraces are bananas, the north terraces are citrus").recipe
+    bananas, citrus = recipe.fields
+    assert (bananas.crop, citrus.crop) == ("Banana", "Orange")
+    assert ("south_of", bananas.id, (citrus.id,)) in {
+        (r.kind, r.subject, r.objects) for r in recipe.relations
+    }

@@ -34,7 +34,7 @@ _SIDE_PART = (
 _LEADING = re.compile(
     r"(?<!in )(?<!on )(?<!of )(?<!at )(?<!to )"
     r"(?:\b(?i:the)\s+|(?:^|(?<=[,;.:]\s)))(?P<side>(?i:north|south|east|west|top|bottom|upper|lower))(?i:ern)?\s+"
-    r"(?P<noun>(?i:plot|block|field|one|part|half|strip|parcel|section|paddock|area))\b\s*"
+    r"(?P<noun>(?i:plot|block|field|one|part|half|strip|parcel|section|paddock|area|terraces|terrace))\b\s*"
     r"(?:(?i:is|are|has|holds|gets|grows|has got)\s+|[:\-–—]\s*)?"
     # (the rest runs to a mark, past a decimal point or a thousands comma: "drilled in
     # 12.5 cm rows", "at 80,000 plants/ha"; or to the next side's plot: "the south block
