@@ -23,6 +23,7 @@ from agrirecipe.resolve._structure import (
     definite_words,
     first_word,
     has_room,
+    names_a_group,
     names_a_variety,
     pronoun_one,
     said_of_all_plots,
@@ -62,10 +63,7 @@ def counted_host(
     Cherries across the top end, root veg through the middle, ...")."""
     if not kept or mention.count is not None:
         return None
-    if not strong_crops(mention) and not (
-        member
-        and (mention.category is not None or (mention.plot is not None and mention.plot["options"]))
-    ):
+    if not strong_crops(mention) and not (member and names_a_group(mention)):
         return None
     host = kept[-1]
     crops = strong_crops(host)

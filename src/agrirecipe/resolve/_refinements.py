@@ -264,7 +264,6 @@ def apply_refinements(
             clause.refined_parent, clause.refinement = parent, listed_member
             continue
         if parent is not None and joined and len(clause.mentions) <= 1:
-            assert link is not None
             folded = fold_listed_member(
                 clauses,
                 clause,

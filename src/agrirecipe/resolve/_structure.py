@@ -37,6 +37,7 @@ __all__ = [
     "descriptive_words",
     "first_word",
     "has_room",
+    "names_a_group",
     "names_a_variety",
     "one_of_the",
     "per_bed",
@@ -54,6 +55,12 @@ __all__ = [
 
 def strong_crops(mention: Mention) -> set[str]:
     return {crop for crop, _, weak in mention.interpretations or () if not weak}
+
+
+def names_a_group(mention: Mention) -> bool:
+    """Whether the mention says a group of crops without naming one: a category ("cereals",
+    "veg") or a plot that says its crops ("vineyard", "root veg", "fruit trees")."""
+    return mention.category is not None or bool((mention.plot or {}).get("options"))
 
 
 def first_word(mention: Mention) -> Item | None:

@@ -15,6 +15,7 @@ from collections.abc import Sequence
 from agrirecipe.resolve._links import link_norm
 from agrirecipe.resolve._mentions import Clause, Mention
 from agrirecipe.resolve._structure import (
+    names_a_group,
     names_a_variety,
     said_of_all_plots,
     strong_crops,
@@ -76,8 +77,7 @@ def _names_its_crops(mention: Mention) -> bool:
     """A crop named, or (in a part of the farm of its own: "and cereals down at the
     bottom") a category or a plot that says its crops."""
     return bool(strong_crops(mention)) or (
-        any(i.role == "zone" for i in mention.items)
-        and (mention.category is not None or bool((mention.plot or {}).get("options")))
+        any(i.role == "zone" for i in mention.items) and names_a_group(mention)
     )
 
 
@@ -228,10 +228,7 @@ def spread_counted_totals(clauses: Sequence[Clause], mentions: list[Mention]) ->
             # fields total", is no count said)
             or any((m.count is not None and not m.implied_count) or m.refinements for m in named)
             # (or plots of a kind: "some fruit trees")
-            or not all(
-                m.has_crop or m.category is not None or (m.plot is not None and m.plot["options"])
-                for m in named
-            )
+            or not all(m.has_crop or names_a_group(m) for m in named)
             or total.count < len(named)
             or len(named) != len(mentions) - 1
         ):
