@@ -107,3 +107,39 @@ def test_terraces_named_by_their_side() -> None:
     assert ("south_of", bananas.id, (citrus.id,)) in {
         (r.kind, r.subject, r.objects) for r in recipe.relations
     }
+
+
+def test_a_field_split_down_the_middle_is_its_two_halves() -> None:
+    recipe = generate(
+        "The tomato field is split down the middle, San Marzano on the left half and Beefsteak "
+        "on the right half, both flowering."
+    ).recipe
+    sanmarzano, beefsteak = recipe.fields
+    assert (sanmarzano.variety, beefsteak.variety) == ("San Marzano", "Beefsteak")
+    assert ("west_of", sanmarzano.id, (beefsteak.id,)) in {
+        (r.kind, r.subject, r.objects) for r in recipe.relations
+    }
+
+
+def test_down_the_middle_of_a_zoned_farm_is_still_a_zone() -> None:
+    recipe = generate(
+        "Potatoes along the top, wheat down the middle and carrots at the bottom."
+    ).recipe
+    assert [f.crop for f in recipe.fields] == ["Potato", "Wheat", "Carrot"]
+    assert ("between", recipe.fields[1].id) in {(r.kind, r.subject) for r in recipe.relations}
+
+
+@pytest.mark.parametrize("garden", ["the market garden", "the veg plot"])
+def test_the_first_member_of_a_list_after_a_colon_is_a_field_of_its_own(garden: str) -> None:
+    recipe = generate(
+        f"Left to right across {garden}: leafy greens, then peppers, then tomatoes."
+    ).recipe
+    assert [f.crop for f in recipe.fields][1:] == ["Pepper", "Tomato"]
+    assert recipe.fields[0].crop in ("Lettuce", "Cabbage")
+
+
+def test_a_field_before_a_colon_and_its_own_description_stay_one() -> None:
+    recipe = generate(
+        "The only field we have is behind the barn: 3 acres of Riesling, the grapes ripe."
+    ).recipe
+    assert [f.variety for f in recipe.fields] == ["Riesling"]

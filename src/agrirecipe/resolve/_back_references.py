@@ -46,6 +46,7 @@ __all__ = [
     "look_then_its_place",
     "named_in_order",
     "of_it",
+    "opens_a_list",
     "same_modifier",
     "with_one_named_before",
 ]
@@ -87,6 +88,49 @@ def labels_its_sentence(clauses: Sequence[Clause], clause: Clause) -> bool:
         and clauses[clause.index + 1].link is not None
         and clauses[clause.index + 1].link.norm == ":"  # type: ignore[union-attr]
     )
+
+
+def opens_a_list(
+    clauses: Sequence[Clause], clause: Clause, kept: Sequence[Mention], mention: Mention
+) -> bool:
+    """Whether ``mention``, a group of crops ("leafy greens") right after a colon that
+    follows one field of a group of crops, is the first member of a list ("the market
+    garden: leafy greens, then peppers, ...") and not that field named again: the next
+    clause that names a field, joined to it by commas or "and"/"then" only, names
+    another one (not "the grapes", the field described). (A member that names its crop
+    makes the field before the colon that crop's field, as a list heading's member.)"""
+    if clause.link is None or clause.link.norm != ":" or not kept or strong_crops(mention):
+        return False
+    host = kept[-1]
+    if (
+        strong_crops(host)
+        # (a garden of a category, not "Plot register: P1 Imperator carrots, P2 ...")
+        or not (names_a_group(host) or (host.plot or {}).get("category"))
+        or host.count is not None
+        or (host.plot and host.plot["plural"])
+    ):
+        return False
+    start = clause.index
+    while start > 0 and not (
+        clauses[start].link is not None and clauses[start].link.norm in (".", "!", "?", ";")  # type: ignore[union-attr]
+    ):
+        start -= 1
+    if any(c.mentions for c in clauses[start : host.clause]):
+        return False  # ("Orchard and vineyard ...: Royal Gala apples ... and Cabernet vines")
+    for following in clauses[clause.index + 1 :]:
+        link = following.link
+        if link is None or link.role not in ("separator", "conjunction"):
+            return False
+        if link.norm in (".", "!", "?", ";", ":", "(", ")"):
+            return False
+        if following.mentions:
+            first = first_word(following.mentions[0])
+            return following.mentions[0].has_crop and (
+                first is None or first.norm not in definite_words()
+            )
+        if following.items:
+            return False
+    return False
 
 
 #: The words that say what "it" is ("it's a 3 hectare field", "it is a 2 ha block").

@@ -27,6 +27,7 @@ from agrirecipe.resolve._back_references import (
     look_then_its_place,
     named_in_order,
     of_it,
+    opens_a_list,
     same_modifier,
     with_one_named_before,
 )
@@ -149,7 +150,9 @@ def merge_coreferences(
         ):
             mention.count = None
         bare = clause.link is not None and (
-            clause.link.role == "separator"
+            # ("Left to right across the market garden: leafy greens, then peppers, then
+            # tomatoes": the first member of a list after a colon, not the garden again)
+            (clause.link.role == "separator" and not opens_a_list(clauses, clause, kept, mention))
             # "; cabbage and potato rows 75 cm apart": a list of fields named again
             # ("apples to the north and pears to the south": past the placement)
             or (clause.link.role == "conjunction" and _last_named(clauses, clause) in merged)
