@@ -23,6 +23,7 @@ __all__ = [
     "OPPOSITE",
     "PRONOUNS",
     "THE_TWO",
+    "before_brackets",
     "coordinated",
     "field_relations",
     "fields_of",
@@ -285,6 +286,18 @@ def _before_a_bracket(
 
 def link_norm(clause: Clause) -> str | None:
     return clause.link.norm if clause.link is not None else None
+
+
+def before_brackets(clauses: Sequence[Clause], position: int) -> int:
+    """The clause before ``position``, past a bracketed aside that ends right before it
+    ("carrots (nantes) east of them": the carrots' clause)."""
+    index = position - 1
+    if index > 0 and not clauses[index].items and link_norm(clauses[index]) == ")":
+        index -= 1
+        while index > 0 and link_norm(clauses[index]) != "(":
+            index -= 1
+        index = max(index - 1, 0)
+    return index
 
 
 def _placed_by_pronoun(clause: Clause) -> bool:

@@ -13,7 +13,7 @@ from __future__ import annotations
 import itertools
 from collections.abc import Sequence
 
-from agrirecipe.resolve._links import OPPOSITE, PRONOUNS, link_norm
+from agrirecipe.resolve._links import OPPOSITE, PRONOUNS, before_brackets, link_norm
 from agrirecipe.resolve._mentions import Clause, Mention
 from agrirecipe.resolve._words import SENTENCE_MARKS
 
@@ -27,6 +27,7 @@ __all__ = [
     "placement_pairs",
     "placements",
     "predicate_of_the_placed",
+    "shared_subject",
 ]
 
 
@@ -489,3 +490,32 @@ def placement_pairs(
     for position, _ in waiting:
         del placed[position]
     return pairs
+
+
+def shared_subject(
+    clauses: Sequence[Clause],
+    position: int,
+    read: Sequence[tuple[str, Mention, tuple[Mention, ...]]],
+) -> Mention | None:
+    """The subject of the relation said just before, when the relation at ``position``
+    goes on with "and" and no subject of its own ("a potato field east of a carrot field
+    and west of a cabbage field": the potatoes are west of the cabbage, not the carrots).
+    """
+    clause = clauses[position]
+    joint = clauses[position - 1] if position else None
+    if (
+        len(clause.mentions) != 1
+        or clause.mentions[0].clause != clause.index
+        or not clause.items
+        or clause.items[0].norm in PRONOUNS
+        or joint is None
+        or joint.items
+        or link_norm(joint) != "and"
+        or position < 2
+    ):
+        return None
+    said = clauses[before_brackets(clauses, position - 1)]
+    if said.link is None or said.link.role != "relation" or len(said.mentions) != 1:
+        return None
+    object_ = said.mentions[0]
+    return next((subject for _, subject, objects in reversed(read) if objects == (object_,)), None)

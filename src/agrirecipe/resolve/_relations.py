@@ -28,6 +28,7 @@ from agrirecipe.resolve._links import (
     OPPOSITE,
     PRONOUNS,
     THE_TWO,
+    before_brackets,
     field_relations,
     last_named,
     link_norm,
@@ -44,6 +45,7 @@ from agrirecipe.resolve._placements import (
     placed_by_the_middle,
     placement_pairs,
     placements,
+    shared_subject,
 )
 from agrirecipe.resolve._rows import (
     FURTHER,
@@ -230,7 +232,7 @@ def read_relations(
             )
             continue
         # ("carrots (nantes) east of them": past the brackets after the subject)
-        said_before = clauses[_before_brackets(clauses, position)] if position else None
+        said_before = clauses[before_brackets(clauses, position)] if position else None
         if (
             pronoun
             # ("east of that block": a field named before, not one of its own)
@@ -336,6 +338,9 @@ def read_relations(
             # "To the north an orchard; in the middle wheat; to the south potatoes": each
             # side's field against the one in the middle
             pairs = (str(link.data["value"]), sides[0], (sides[1],))
+        elif link.role == "relation" and (shared := shared_subject(clauses, position, read)):
+            # "a potato field east of a carrot field and west of a cabbage field"
+            pairs = (link.data.get("value", "next_to"), shared, (clause.mentions[0],))
         elif (earlier := _the_first(clause, before)) is not None:
             # "one field of wheat, one of maize, and a second wheat field beside the
             # first": the first field of the same crop
@@ -468,18 +473,6 @@ def _both_fronted(clause: Clause) -> bool:
         and before[0].norm == "both"
         and any(i.role in ("head", "plot") for i in before)
     )
-
-
-def _before_brackets(clauses: Sequence[Clause], position: int) -> int:
-    """The clause before ``position``, past a bracketed aside that ends right before it
-    ("carrots (nantes) east of them": the carrots' clause)."""
-    index = position - 1
-    if index > 0 and not clauses[index].items and link_norm(clauses[index]) == ")":
-        index -= 1
-        while index > 0 and link_norm(clauses[index]) != "(":
-            index -= 1
-        index = max(index - 1, 0)
-    return index
 
 
 #: The marks that end a sentence for a placement's fields ("." and not ";").

@@ -1,0 +1,46 @@
+"""Text of blind set g50 (issue 8): each miss of its blind run fixed as the general
+mechanism (a relation that goes on with "and" and no subject of its own; a field with no
+crop in it, ploughed or fallow, as scenery)."""
+
+from __future__ import annotations
+
+import pytest
+
+from agrirecipe import generate
+
+
+def _relations(prompt: str) -> set[tuple[str, str, tuple[str, ...]]]:
+    recipe = generate(prompt).recipe
+    crop = {f.id: f.crop for f in recipe.fields}
+    return {(r.kind, crop[r.subject], tuple(crop[o] for o in r.objects)) for r in recipe.relations}
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "A potato field east of a carrot field and west of a cabbage field.",
+        "Sensor-test farm: a potato field (rows 75 cm, in-row 35 cm) east of a carrot field "
+        "(75 cm ridges, two rows each) and west of a cabbage field (rows 60 cm, in-row 40 cm).",
+    ],
+)
+def test_a_relation_going_on_with_and_keeps_its_subject(prompt: str) -> None:
+    relations = _relations(prompt)
+    assert {("east_of", "Potato", ("Carrot",)), ("west_of", "Potato", ("Cabbage",))} <= relations
+    assert ("west_of", "Carrot", ("Cabbage",)) not in relations
+
+
+def test_a_relation_said_of_a_field_named_after_and_is_that_fields() -> None:
+    relations = _relations("wheat north of the maize and potatoes south of it")
+    assert ("north_of", "Wheat", ("Maize",)) in relations
+    assert not any(subject == "Wheat" and kind == "south_of" for kind, subject, _ in relations)
+
+
+@pytest.mark.parametrize(
+    "ground",
+    ["a big bare ploughed field with a tractor working it", "a fallow field", "a plowed field"],
+)
+def test_a_field_with_no_crop_in_it_is_scenery(ground: str) -> None:
+    recipe = generate(
+        f"A potato field in flower, a carrot field next to it and beyond that {ground}."
+    )
+    assert [f.crop for f in recipe.recipe.fields] == ["Potato", "Carrot"]
