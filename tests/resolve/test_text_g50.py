@@ -44,3 +44,26 @@ def test_a_field_with_no_crop_in_it_is_scenery(ground: str) -> None:
         f"A potato field in flower, a carrot field next to it and beyond that {ground}."
     )
     assert [f.crop for f in recipe.recipe.fields] == ["Potato", "Carrot"]
+
+
+@pytest.mark.parametrize("plot", ["a vineyard", "an orchard"])
+def test_a_plot_of_a_crop_the_field_cannot_hold_is_a_field_of_its_own(plot: str) -> None:
+    relations = _relations(f"{plot} with a block of carrots to the north of it")
+    assert any(kind == "north_of" and subject == "Carrot" for kind, subject, _ in relations)
+
+
+def test_a_plot_of_the_fields_own_crop_after_with_is_still_its_block() -> None:
+    recipe = generate("an orchard with a block of Gala and a block of Fuji").recipe
+    assert [f.variety for f in recipe.fields] == ["Gala", "Fuji"]
+
+
+def test_a_fence_on_a_side_of_the_farm_places_the_field_along_it() -> None:
+    relations = _relations("Jonagored along the east fence and Cripps Pink along the west fence.")
+    assert ("west_of", "Apple", ("Apple",)) in relations
+
+
+def test_the_season_before_is_not_the_fields() -> None:
+    recipe = generate(
+        "our Royal Gala trees flowering in December after the mild autumn, pink blossom"
+    ).recipe
+    assert (recipe.fields[0].stage, recipe.fields[0].season) == ("Reproductive", "Winter")

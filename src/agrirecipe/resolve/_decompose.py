@@ -207,6 +207,12 @@ class MentionBuilder:
                         )
                         or _possessed(pending)
                         or (current.has_crop and _with_a_plot_of(clause.items, index, pending))
+                        # ("a vineyard with a block of carrots to the north of it": a
+                        # plot of a crop the vineyard cannot hold)
+                        or (
+                            _with_a_plot_of(clause.items, index, pending)
+                            and not self.compatible(current, clause.items[index + 2])
+                        )
                         or _placed_new(clause, pending)
                     )
                 )
