@@ -67,3 +67,15 @@ def test_the_season_before_is_not_the_fields() -> None:
         "our Royal Gala trees flowering in December after the mild autumn, pink blossom"
     ).recipe
     assert (recipe.fields[0].stage, recipe.fields[0].season) == ("Reproductive", "Winter")
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "fruit trees at 5 m spacing",
+        "fruit-tree rows at 5 m spacing between two maize strips sown in 75 cm rows",
+    ],
+)
+def test_the_plants_word_a_spacing_takes_still_says_the_plot(prompt: str) -> None:
+    trees = generate(prompt).recipe.fields[0]
+    assert trees.crop in ("Apple", "Pear", "Cherry", "Orange")

@@ -9,7 +9,8 @@ else from visual cues), size and stated row geometry.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+import itertools
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any, cast
 
@@ -36,6 +37,7 @@ __all__ = [
     "FieldReading",
     "describe_intent",
     "give_respectively",
+    "plot_of_the_plants",
 ]
 
 #: The largest side a planting grid said like a size can have ("4.5 x 2.5 m").
@@ -433,3 +435,22 @@ def give_respectively(fields: Sequence[FieldDraft]) -> None:
         for item in items:
             index = cast(tuple[int, int, int], _share(item))[0]
             named[len(named) - count + index].items.append(item)
+
+
+def plot_of_the_plants(mentions: Sequence[Mention], tag: Callable[[str], list[Item]]) -> None:
+    """'fruit trees at 5 m spacing', 'fruit-tree rows at 5 m': the plants' word that a
+    spacing took ("trees at 5 m") still says the plot with the category before it ("fruit
+    trees": trees, not bananas), for a field that names no crop and no plot."""
+    for mention in mentions:
+        if mention.plot is not None or mention.has_crop:
+            continue
+        items = mention.items
+        for head, after in itertools.pairwise(items):
+            if head.role != "head" or "geometry" not in after.data or not after.raw.strip():
+                continue
+            words = after.raw.replace("-", " ").split()
+            said = tag(f"{head.norm} {words[0]}")
+            plots = [s.value for s in said[0].senses if s.kind == "plot"] if len(said) == 1 else []
+            if len(plots) == 1 and plots[0]["narrows"]:
+                mention.plot = plots[0]
+                break

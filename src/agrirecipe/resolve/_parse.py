@@ -86,6 +86,7 @@ from agrirecipe.resolve._fields import (
     FieldReading,
     describe_intent,
     give_respectively,
+    plot_of_the_plants,
 )
 from agrirecipe.resolve._geometry import find_geometry
 from agrirecipe.resolve._headings import (
@@ -351,6 +352,7 @@ class PromptReader(FieldReading):
             mentions = self._container_fields(items, clauses)
         reject_unknown_names(items, mentions, self.context.hierarchy, self.nearest_crops)
         reject_no_crop(items, mentions)
+        plot_of_the_plants(mentions, tag)
         fields = self._expand(mentions)
         if len(fields) > _MAX_FIELDS:
             raise PromptError(
