@@ -17,6 +17,7 @@ from collections.abc import Sequence
 from agrirecipe.resolve._decompose import MentionBuilder
 from agrirecipe.resolve._lexicon import Item
 from agrirecipe.resolve._links import ARTICLES
+from agrirecipe.resolve._measures import sentence_start
 from agrirecipe.resolve._members import ORDINAL_WORDS
 from agrirecipe.resolve._mentions import Clause, Mention
 from agrirecipe.resolve._structure import (
@@ -110,11 +111,7 @@ def opens_a_list(
         or (host.plot and host.plot["plural"])
     ):
         return False
-    start = clause.index
-    while start > 0 and not (
-        clauses[start].link is not None and clauses[start].link.norm in (".", "!", "?", ";")  # type: ignore[union-attr]
-    ):
-        start -= 1
+    start = sentence_start(clauses, clause.index)
     if any(c.mentions for c in clauses[start : host.clause]):
         return False  # ("Orchard and vineyard ...: Royal Gala apples ... and Cabernet vines")
     for following in clauses[clause.index + 1 :]:
