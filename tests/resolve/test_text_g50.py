@@ -79,3 +79,101 @@ def test_the_season_before_is_not_the_fields() -> None:
 def test_the_plants_word_a_spacing_takes_still_says_the_plot(prompt: str) -> None:
     trees = generate(prompt).recipe.fields[0]
     assert trees.crop in ("Apple", "Pear", "Cherry", "Orange")
+
+
+# Leftovers of g50, fixed after it moved into the development set.
+
+
+def _fields(prompt: str) -> list[dict[str, object]]:
+    return [
+        {
+            "crop": f.crop,
+            "variety": f.variety,
+            "health": f.health,
+            "area": round(f.geometry.size_m[0] * f.geometry.size_m[1]),
+            "row_spacing": f.agronomy.row_spacing_m,
+            "in_row": f.agronomy.in_row_spacing_m,
+        }
+        for f in generate(prompt).recipe.fields
+    ]
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "A wheat field with a field of spuds to the east, both ill: the wheat has rust and "
+        "the potatoes have blight.",
+        "A wheat field with a field of spuds to the east, both a bit sorry for themselves: "
+        "the wheat has rust pustules on the leaves and the potato leaves are blotched brown.",
+    ],
+)
+def test_fields_described_again_after_a_colon_keep_their_relation(prompt: str) -> None:
+    assert _relations(prompt) == {("east_of", "Potato", ("Wheat",))}
+    assert [f["health"] for f in _fields(prompt)] == ["Ill", "Ill"]
+
+
+def test_sorry_for_itself_is_a_poorly_look_not_a_correction() -> None:
+    fields = _fields("a potato field next to a carrot field looking sorry for itself")
+    assert [(f["crop"], f["health"]) for f in fields] == [
+        ("Potato", "Healthy"),
+        ("Carrot", "Ill"),
+    ]
+
+
+def test_between_the_two_with_a_look_after_it_is_still_between_them() -> None:
+    relations = _relations(
+        "winter wheat just up; a block of maize, dry and brown; and a cabbage field in "
+        "between the two with fat blue-green heads."
+    )
+    assert relations == {("between", "Cabbage", ("Wheat", "Maize"))}
+
+
+def test_measures_each_member_says_before_in_each_stay_its_own() -> None:
+    fields = _fields(
+        "Two Gala blocks: one with rows 3 m apart and trees every 0.6 m, the other with "
+        "rows 4 m apart and trees every 1.5 m, 10 rows in each."
+    )
+    assert [(f["row_spacing"], f["in_row"]) for f in fields] == [(3.0, 0.6), (4.0, 1.5)]
+
+
+@pytest.mark.parametrize(
+    ("prompt", "crops", "area"),
+    [
+        (
+            "Split a 1-acre test field into four quarter-acre plots - lettuce, cabbage, onions "
+            "and carrots - with all rows running east-west.",
+            ["Lettuce", "Cabbage", "Onion", "Carrot"],
+            1012,
+        ),
+        (
+            "a 1 ha field split into four plots: lettuce, cabbage, onions and carrots",
+            ["Lettuce", "Cabbage", "Onion", "Carrot"],
+            2500,
+        ),
+        (
+            "a 1 ha field split into lettuce, cabbage, onions and carrots",
+            ["Lettuce", "Cabbage", "Onion", "Carrot"],
+            2500,
+        ),
+        ("a 2 ha wheat field divided into four plots", ["Wheat"] * 4, 5000),
+        (
+            "3 ha split equally between Royal Gala and Granny, the Granny block to the south",
+            ["Apple", "Apple"],
+            15000,
+        ),
+    ],
+)
+def test_an_area_split_into_parts_is_shared_out(prompt: str, crops: list[str], area: int) -> None:
+    fields = _fields(prompt)
+    assert [f["crop"] for f in fields] == crops
+    assert all(abs(f["area"] - area) <= area * 0.01 for f in fields)
+
+
+def test_a_group_opening_a_list_after_a_patch_is_its_first_member() -> None:
+    prompt = (
+        "we keep a veg patch: greens by the gate, peppers at the far end, and the tomatoes "
+        "between the greens and the peppers."
+    )
+    crops = sorted(str(f["crop"]) for f in _fields(prompt))
+    assert len(crops) == 3 and {"Pepper", "Tomato"} < set(crops)
+    assert any(kind == "between" and subject == "Tomato" for kind, subject, _ in _relations(prompt))

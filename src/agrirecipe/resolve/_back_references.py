@@ -107,7 +107,8 @@ def opens_a_list(
         strong_crops(host)
         # (a garden of a category, not "Plot register: P1 Imperator carrots, P2 ...")
         or not (names_a_group(host) or (host.plot or {}).get("category"))
-        or host.count is not None
+        # ("a veg patch: greens, peppers and tomatoes": one patch, said with "a")
+        or host.count not in (None, 1)
         or (host.plot and host.plot["plural"])
     ):
         return False
@@ -116,6 +117,8 @@ def opens_a_list(
         return False  # ("Orchard and vineyard ...: Royal Gala apples ... and Cabernet vines")
     for following in clauses[clause.index + 1 :]:
         link = following.link
+        if link is not None and link.role == "relation" and not following.mentions:
+            continue  # ("greens by the gate, peppers ...": where the member is)
         if link is None or link.role not in ("separator", "conjunction"):
             return False
         if link.norm in (".", "!", "?", ";", ":", "(", ")"):

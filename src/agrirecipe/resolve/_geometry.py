@@ -139,6 +139,7 @@ def _tables() -> _Tables:
         "{ROWS}": _alternatives(words["rows"]),
         "{ROWMOD}": _alternatives(words["row_modifiers"]),
         "{PLANTS}": _alternatives(words["plants"]),
+        "{CROP_PLANTS}": _alternatives(words["crop_plants"]),
         "{BEDS}": _alternatives(words["beds"]),
         "{PER}": _alternatives(words["per"]),
         "{AREA}": _alternatives(areas),
@@ -256,6 +257,8 @@ def find_geometry(
             ):
                 continue
             groups = match.groupdict()
+            if groups.get("crop") and not _named_elsewhere(tokens, first, last, groups["crop"]):
+                continue  # ("plant 40 carrots per metre": the only words naming the crop)
             if pattern.same_unit:
                 groups["unit"] = groups.get("unit2")
             value = _value(pattern, groups, tables)
@@ -487,6 +490,17 @@ def _negated(tokens: Sequence[Token], index: int) -> bool:
         and tokens[index - 1].raw in _MINUS
         and tokens[index - 1].end == tokens[index].start
     )
+
+
+def _named_elsewhere(tokens: Sequence[Token], first: int, last: int, plants: str) -> bool:
+    """Whether the crop of ``plants`` ("onions", "apple trees") is named outside the
+    tokens ``first:last`` (as "onion strips", "the onions")."""
+    word = plants.split()[0]
+    for plural, singular in (("ies", "y"), ("oes", "o"), ("s", "")):
+        if word.endswith(plural):
+            word = word[: -len(plural)] + singular
+            break
+    return any(t.norm.startswith(word) for i, t in enumerate(tokens) if not first <= i < last)
 
 
 def _raw(tokens: Sequence[Token], first: int, last: int) -> str:

@@ -15,6 +15,8 @@ from collections.abc import Sequence
 from agrirecipe.resolve._links import link_norm
 from agrirecipe.resolve._mentions import Clause, Mention
 from agrirecipe.resolve._structure import (
+    definite_words,
+    first_word,
     names_a_variety,
     same_variety,
     strong_crops,
@@ -337,6 +339,10 @@ def _joint_headings(
             continue
         if colon.link.norm != ":" and any(m.category is None for m in before):
             continue  # (a dash heads a list of kinds only)
+        if after and all(_definite(m) for m in after):
+            # ("A wheat field with a field of spuds to the east, both ill: the wheat has
+            # rust and the potatoes ... blight": the fields named before, described)
+            continue
         owners: dict[int, int] = {}
         seen: list[Mention] = []
         for member in after:
@@ -345,8 +351,11 @@ def _joint_headings(
             if any(same_variety(earlier, member) for earlier in seen):
                 continue
             seen.append(member)
-            fitting = [h for h in before if strong_crops(member) <= kinds(h)]
-            if len(fitting) != 1 or not strong_crops(member):
+            # ("Fruit and veg in this one: an apple orchard ... and a big vegetable
+            # plot": a member of a kind the heading named)
+            own = strong_crops(member) or kinds(member)
+            fitting = [h for h in before if own <= kinds(h)]
+            if len(fitting) != 1 or not own:
                 break
             owners[id(fitting[0])] = owners.get(id(fitting[0]), 0) + (member.count or 1)
         else:
@@ -372,6 +381,11 @@ def _varieties_named_again(before: Sequence[Mention], after: Sequence[Mention]) 
     return all(
         sum(1 for m in after if same_variety(heading, m)) == 1 for heading in before
     ) and all(any(same_variety(heading, m) for heading in before) for m in after)
+
+
+def _definite(mention: Mention) -> bool:
+    first = first_word(mention)
+    return first is not None and first.norm in definite_words()
 
 
 def _ends_sentence(clause: Clause) -> bool:

@@ -260,10 +260,11 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
 
 
 # "plot 2 is 10 m west of plot 1 and is wheat": a label placed first and named after
-# "and is" defines its field, like "plot 2, 10 m west of plot 1, is wheat"
+# "and is" defines its field, like "plot 2, 10 m west of plot 1, is wheat" (also against
+# a letter said bare: "Block B sits immediately east of A and is Williams pears")
 _PLACED_THEN_NAMED = re.compile(
     rf"(?P<head>\b{_LABEL})\s+(?i:is|lies|sits)\s+"
-    rf"(?P<where>[^;.,:]*?\b(?i:{_BEFORE_REFERENCE})\s+(?:(?i:the)\s+)?{_LABEL})"
+    rf"(?P<where>[^;.,:]*?\b(?i:{_BEFORE_REFERENCE})\s+(?:(?i:the)\s+)?(?:{_LABEL}|[A-H]))"
     r"\s+(?i:and)\s+(?i:is)\b"
 )
 

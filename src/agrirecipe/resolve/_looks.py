@@ -265,8 +265,20 @@ def ripening_colours(items: Sequence[Item]) -> None:
                 item.role = "filler"
 
 
-#: Words between a crop and the colour said of it ("the wheat is now golden").
-_COLOUR_LINKS = frozenset({"is", "are", "now", "all", "gone", "turned", "looking", "looks"})
+#: Words between a crop and the colour said of it ("the wheat is now golden"), and the
+#: parts whose colour shows ripeness ("Cabernet vines with the bunches gone nearly black",
+#: "a block of Chardonnay where the grapes are golden", "peppers gone bright red").
+_COLOUR_LINKS = frozenset(
+    {
+        *("is", "are", "now", "all", "gone", "turned", "looking", "looks", "going", "turning"),
+        *("with", "the", "its", "their", "where", "whose", "have", "has", "got"),
+        *("nearly", "almost", "fully", "mostly", "bright", "deep", "dark", "rich"),
+        *("bunches", "grapes", "berries", "fruit", "fruits", "cobs", "kernels", "ears"),
+        *("heads", "husks", "stalks", "pods", "vines"),
+    }
+)
+#: How many of those words a colour may stand after its crop.
+_COLOUR_REACH = 6
 
 
 def ripe_colours(items: Sequence[Item]) -> None:
@@ -276,7 +288,7 @@ def ripe_colours(items: Sequence[Item]) -> None:
         if item.role not in ("filler", "weak_variety", "unknown", ""):
             continue
         back = index - 1
-        while back >= 0 and items[back].norm in _COLOUR_LINKS:
+        while back >= 0 and index - back <= _COLOUR_REACH and items[back].norm in _COLOUR_LINKS:
             back -= 1
         head = items[back] if back >= 0 else None
         if head is None or head.role != "head" or len(crops := crops_of(head)) != 1:

@@ -431,14 +431,12 @@ def shared_by_all_after(clauses: Sequence[Clause], position: int) -> bool:
             # ("cherry tomatoes, 10 rows at 1.5 m, and beef tomatoes, 10 rows at 1.8 m,
             # both 0.5 m in-row": "both" said before a measure of its own, after a run
             # that says again what an earlier field said for itself, is about that
-            # measure only)
-            leads = any(
-                g.role == "geometry" and g.start > a.start for a in alls for g in clause.items
-            )
+            # measure only; so is "in each" after one: "one with ... trees every 0.6 m,
+            # the other with ... trees every 1.5 m, 10 rows in each")
             run = _measure_keys([i for c in clauses[position:index] for i in c.items])
             start = sentence_start(clauses, position)
             said_before = _measure_keys([i for c in clauses[start:position] for i in c.items])
-            return not (leads and run & said_before)
+            return not run & said_before
         index += 1
     return False
 

@@ -103,10 +103,11 @@ def place_neighbouring_plots(text: str) -> str:
 
 
 # "an orchard ..., a vineyard ..., and between the two a strip of strawberries": the two
-# fields just named (not "between the two tomato strips", which names them)
+# fields just named (not "between the two tomato strips", which names them); "a cabbage
+# field in between the two with fat blue-green heads": what it looks like, after
 _BETWEEN_THE_TWO = re.compile(
     r"\b(?P<between>(?i:between|in between))\s+(?i:the two|the pair|both)"
-    r"(?=\s+(?i:a|an|the|some|is|are|there|sits|lies|runs|we|you|i)\b)"
+    r"(?=\s+(?i:a|an|the|some|is|are|there|sits|lies|runs|we|you|i|with)\b)"
 )
 # "the Padron peppers sit between the two paddocks": the two fields named before, by the
 # plot word they share (not "between the two tomato strips", which names a crop)

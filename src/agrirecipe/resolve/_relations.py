@@ -577,7 +577,13 @@ def _attached(clauses: Sequence[Clause], position: int) -> bool:
             or any(i.role not in _DESCRIBING for i in clause.items)
         ):
             return False
-        described = described or any(i.role in ("cue", "stage", "health") for i in clause.items)
+        # ("Winter Wheat just emerged, thin green lines, on the west side of the lane":
+        # words after a comma describe it, read as a look or not; not "... and zone C on
+        # the south side is peppers", a label of the field after)
+        described = described or (
+            any(i.role in ("cue", "stage", "health") for i in clause.items)
+            or (bool(clause.items) and clause.link.norm == ",")
+        )
         index -= 1
     # (not "apples, and to the north, pears": nothing said of the apples in between)
     return index >= 0 and bool(clauses[index].named) and (index == position - 1 or described)

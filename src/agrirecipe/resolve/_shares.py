@@ -50,6 +50,7 @@ _SHARES = {
     "three quarters": 0.75,
 }
 _UNIT_PLURALS = {"acre": "acres", "hectare": "hectares"}
+_UNIT_SINGULARS = {"acres": "acre", "hectares": "hectare"}
 
 
 def _farm_shares(text: str) -> str:
@@ -109,6 +110,90 @@ _ONE_THEN_WHICH = re.compile(
 )
 
 
+#: An area and the plot word it sizes ("a 1-acre test field", "3 ha"), in the words
+#: that split it.
+_AREA = r"(?P<n>\d+(?:\.\d+)?)[\s-]*(?P<unit>(?i:acres?|ha|hectares?|m2|m²))"
+_CONTAINER = (
+    r"(?:[\s-]+(?P<kind>(?:[A-Za-z-]+\s+){0,2}?)"
+    r"(?P<noun>(?i:field|plot|block|area|site|paddock|parcel|orchard|vineyard|grove|plantation)))?"
+)
+#: Plot words that say what grows there ("our 10 acre orchard ... 4 blocks": orchard blocks).
+_KIND_NOUNS = frozenset({"orchard", "vineyard", "grove", "plantation"})
+_SPLIT = r"(?i:split|divided|cut|broken up|subdivided|partitioned|shared)"
+_EVENLY = r"(?:\s+(?i:equally|evenly|in equal parts))?"
+_COUNTS = {"two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8}
+_PLOTS = r"(?i:plots|blocks|strips|sections|fields|beds|parcels|areas|parts|subplots)"
+#: "a 1 ha field split into four plots", "Split a 1-acre test field into four quarter-acre
+#: plots": the whole, then the plots it is split into.
+_SPLIT_INTO_PLOTS = re.compile(
+    r"(?:\b(?i:a|an|one|the|our|my)\s+)?"
+    + _AREA
+    + _CONTAINER
+    + r"\s+(?:(?i:that is|which is|is|was)\s+)?"
+    + _SPLIT
+    + _EVENLY
+    + r"\s+(?i:into|in|between|among)\s+"
+    + r"|\b"
+    + r"(?i:split|divide|cut|break up|subdivide|partition)\s+(?:(?i:a|an|one|the|our|my)\s+)?"
+    + _AREA.replace("<n>", "<n2>").replace("<unit>", "<unit2>")
+    + _CONTAINER.replace("<kind>", "<kind2>").replace("<noun>", "<noun2>")
+    + _EVENLY
+    + r"\s+(?i:into)\s+"
+)
+_INTO_COUNTED = re.compile(
+    r"(?P<count>\d+|(?i:two|three|four|five|six|seven|eight))\s+"
+    r"(?P<each>(?:(?i:quarter|half|third)|\d+(?:\.\d+)?)[\s-]*(?i:acres?|ha|hectares?|m2|m²)[\s-]+)?"
+    r"(?P<plots>(?:[A-Za-z-]+\s+)?" + _PLOTS + r")\b"
+)
+#: A plain list of a few crops or varieties ("lettuce, cabbage, onions and carrots",
+#: "Royal Gala and Granny"), ending where the list does.
+_MEMBER = r"[A-Za-z][\w'-]*(?:\s+(?!(?i:and)\b)[A-Za-z][\w'-]*){0,2}?"
+_INTO_LIST = re.compile(
+    r"(?P<list>" + _MEMBER + r"(?:\s*,\s*" + _MEMBER + r")*\s*,?\s+(?i:and|&)\s+" + _MEMBER + r")"
+    r"(?=\s*(?:[,.;:!?()–—-]|$)|\s+(?i:with|in|at|on|for|all)\b)"
+)
+
+
+def _split_areas(text: str) -> str:
+    """``text`` with a stated area split into plots or between crops said as each part's
+    area: "a 1 ha field split into four plots" is "four 0.25 ha plots", "3 ha split
+    equally between Royal Gala and Granny" is "Royal Gala and Granny, 1.5 ha each"; when
+    the parts have their own size ("into four quarter-acre plots") the whole's is dropped."""
+    out: list[str] = []
+    position = 0
+    for whole in _SPLIT_INTO_PLOTS.finditer(text):
+        if whole.start() < position:
+            continue
+        size = float(whole.group("n") or whole.group("n2"))
+        unit = (whole.group("unit") or whole.group("unit2")).lower()
+        unit = _UNIT_PLURALS.get(unit, unit)
+        rest = text[whole.end() :]
+        if (counted := _INTO_COUNTED.match(rest)) is not None:
+            count = _COUNTS.get(counted.group("count").lower()) or int(counted.group("count"))
+            if count < 2:
+                continue
+            adjective = _UNIT_SINGULARS.get(unit, unit)
+            each = counted.group("each") or f"{round(size / count, 4):g}-{adjective} "
+            # ("a 2 ha wheat field split into four plots": the whole's crop stays)
+            kind = whole.group("kind") or whole.group("kind2") or ""
+            noun = (whole.group("noun") or whole.group("noun2") or "").lower()
+            if noun in _KIND_NOUNS:
+                kind += f"{noun} "
+            said = f"{counted.group('count')} {each}{kind}{counted.group('plots')}"
+            end = whole.end() + counted.end()
+        elif (listed := _INTO_LIST.match(rest)) is not None:
+            members = re.split(r"\s*,\s*(?:(?i:and|&)\s+)?|\s+(?i:and|&)\s+", listed.group("list"))
+            if len(members) < 2:
+                continue
+            said = f"{listed.group('list')}, {round(size / len(members), 4):g} {unit} each"
+            end = whole.end() + listed.end()
+        else:
+            continue
+        out.append(text[position : whole.start()] + said)
+        position = end
+    return "".join(out) + text[position:]
+
+
 def read_shares(text: str) -> str:
     """``text`` with the parts of a whole said plainly (see the module's words)."""
     # "..., one big orchard but 3 blocks pls": three blocks, in the one orchard
@@ -129,5 +214,7 @@ def read_shares(text: str) -> str:
     )
     # "9 plants/m2 in one and 7 plants/m2 in the other": each of the two, in turn
     text = _IN_ONE_IN_THE_OTHER.sub(r"one with \g<a> and the other with \g<b>", text)
+    # "a 1 ha field split into four plots": each plot's share of the area
+    text = _split_areas(text)
     # "A 100-acre farm: half in wheat, ...": a share of the farm's size, as an area
     return _farm_shares(text)

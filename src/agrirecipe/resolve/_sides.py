@@ -121,6 +121,9 @@ def place_leading_directions(text: str) -> str:
     return _IN_SIDE_PLOT.sub(lambda m: f"{m.group('at')} the {m.group('side').lower()} block", text)
 
 
+#: Verbs that open what is said of a member named by its side ("the west one looks fine").
+_SAID_OF_IT = re.compile(r"(?i:looks?|seems?|appears?|shows?|has|have|had|got|was|were)\b")
+
 #: How many sides' parts said one after another without a mark are read.
 _MAX_UNMARKED_SIDES = 4
 
@@ -133,6 +136,10 @@ def _placed_on_its_side(match: re.Match[str]) -> str:
     rest = match.group("rest").rstrip()
     # ("top half corn bottom half wheat": the next side's part begins)
     mark = "," if _NEXT_SIDE.match(match.string, match.end()) else ""
+    if _SAID_OF_IT.match(rest) and side.lower() in _OPPOSITE_SIDES:
+        # ("The one on the east side has got blight, the west one looks fine": what is
+        # said of the member on that side, not a field it names)
+        return f"the {match.group('noun')} on the {side.lower()} side {rest}{mark}"
     if side.lower() in _OPPOSITE_SIDES:
         return f"{rest} in the {side.lower()}ern block{mark}"
     return f"{rest} in the {side} {match.group('noun')}{mark}"

@@ -22,7 +22,7 @@ import itertools
 from collections.abc import Sequence
 
 from agrirecipe.resolve._lexicon import Item, vocabulary
-from agrirecipe.resolve._links import listing
+from agrirecipe.resolve._links import link_norm, listing
 from agrirecipe.resolve._mentions import Clause, Mention
 
 __all__ = [
@@ -247,6 +247,10 @@ def apply_each_side(clauses: Sequence[Clause]) -> None:
         said = clauses[position - 1].items if position else []
         if said and "scenery" in max(said, key=lambda i: i.start).data:
             continue  # "... with hawthorn hedges on both sides": the hedges' sides
+        following = clauses[position + 1] if position + 1 < len(clauses) else None
+        if following is not None and link_norm(following) == ":" and following.mentions:
+            continue  # ("Veg on both sides of the maize: onions to the west ..., cabbages
+            # to the east": each side's field named after the colon)
         before = [m for c in clauses[:position] for m in c.mentions]
         if len(before) >= 2 and (before[-1].count or 1) == 1 and not before[-1].refinements:
             before[-1].count = 2

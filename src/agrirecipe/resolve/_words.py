@@ -364,10 +364,11 @@ def _all_as_intensifier(items: Sequence[Item]) -> None:
             item.role = "filler"
     for before, item, following in zip(items, items[1:], items[2:], strict=False):
         # "Albion still all flowers and no fruit": all of its own plants, not every field
+        # ("the corn south of the track is all tasselled out": one field, said with "is")
         if (
             item.role == "all"
             and item.norm == "all"
-            and before.norm in ("still", "now", "already")
+            and before.norm in ("still", "now", "already", "is", "was", "s")
             and following.role in ("stage", "cue")
         ):
             item.role = "filler"
