@@ -138,3 +138,11 @@ def test_a_label_placed_against_a_bare_letter_then_named_after_and_is() -> None:
         ("Williams", 3.5),
     ]
     assert _relations(prompt) == {("east_of", "Pear", ("Apple",))}
+
+
+def test_a_capitalised_name_a_plot_holds_is_its_variety() -> None:
+    recipe = generate(
+        "Along the top of the plantation we have Big Mike. Below that is a block of Grande "
+        "Naine, and right at the bottom the Ladyfinger bananas."
+    ).recipe
+    assert [f.variety for f in recipe.fields] == ["Gros Michel", "Grand Nain", "Lady Finger"]

@@ -249,13 +249,23 @@ def _promote_into_plot(clauses: Sequence[Clause], clause: Clause, supported: set
                 for s in item.senses_of("variety")
             )
         )
+        # ("Along the top of the plantation we have Big Mike. Below that ... Grande Naine,
+        # ... the Ladyfinger bananas": a capitalised name said as what the plot holds,
+        # beside varieties of its crop anywhere in the prompt)
+        held = (
+            index > 0 and item.tokens[0].capitalised and ordered[index - 1].norm in _HOLDING_VERBS
+        )
         opens = (index == 0 and (item.tokens[0].capitalised or listed)) or labelled
-        if item.role not in ("weak_variety", "filler") or not (
-            opens or (index > 0 and ordered[index - 1].role == "of")
+        if (
+            item.role not in ("weak_variety", "filler")
+            or not item.senses_of("variety")  # ("of the plantation": not a name)
+            or not (opens or held or (index > 0 and ordered[index - 1].role == "of"))
         ):
             continue
         named = {c for c2 in clauses[: clause.index] for m in c2.mentions for c in strong_crops(m)}
         named |= supported
+        if held:
+            named |= {c for c2 in clauses for m in c2.mentions for c in strong_crops(m)}
         if opens:
             # "Big Mike in the first block, Ladyfinger in the second": a capitalised name
             # beside a variety of its crop later in the sentence
@@ -282,6 +292,10 @@ def _promote_into_plot(clauses: Sequence[Clause], clause: Clause, supported: set
             mention.heads.append(item)
             mention.interpretations = [(str(senses[0].crop), str(senses[0].value), False)]
         return
+
+
+#: Verbs after which a name is what a plot holds ("... we have Big Mike").
+_HOLDING_VERBS = frozenset({"have", "grow", "got", "planted", "holds", "has"})
 
 
 def _promote(clause: Clause, item: Item, sense: Any) -> Mention:
