@@ -146,3 +146,9 @@ def test_a_capitalised_name_a_plot_holds_is_its_variety() -> None:
         "Naine, and right at the bottom the Ladyfinger bananas."
     ).recipe
     assert [f.variety for f in recipe.fields] == ["Gros Michel", "Grand Nain", "Lady Finger"]
+
+
+@pytest.mark.parametrize("closing", ["thx a lot", "thanks!", "cheers"])
+def test_a_side_said_last_before_a_sign_off_still_places_the_field(closing: str) -> None:
+    relations = _relations(f"apples up north, cherries in the middle, pears south. {closing}")
+    assert ("south_of", "Pear", ("Cherry",)) in relations

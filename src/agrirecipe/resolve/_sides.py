@@ -305,7 +305,7 @@ def place_trailing_directions(text: str) -> str:
     if (
         len(matches) == 1
         and text[: matches[0].start()].rstrip().endswith(",")
-        and not text[matches[0].end() :].strip(" .!")
+        and _SIGN_OFF.fullmatch(text[matches[0].end() :])
     ):
         # "hamlin & valencia oranges, ripe, jan, valencia east": one field named again
         # last, with its side
@@ -317,6 +317,13 @@ def place_trailing_directions(text: str) -> str:
         start, end = match.span("side")
         text = f"{text[:start]}in the {match.group('side')}{text[end:]}"
     return text
+
+
+#: What may close a prompt after the last field's side ("... pears south. thx a lot").
+_SIGN_OFF = re.compile(
+    r"[\s.!]*(?:(?i:thanks|thx|thank you|ty|cheers|ta|pls|please)\s*)?"
+    r"(?:(?i:a lot|so much|very much|heaps|mate|in advance))?[\s.!]*"
+)
 
 
 #: The side words a walk across the farm starts and ends at, with the side opposite.
