@@ -177,3 +177,18 @@ def test_a_group_opening_a_list_after_a_patch_is_its_first_member() -> None:
     crops = sorted(str(f["crop"]) for f in _fields(prompt))
     assert len(crops) == 3 and {"Pepper", "Tomato"} < set(crops)
     assert any(kind == "between" and subject == "Tomato" for kind, subject, _ in _relations(prompt))
+
+
+def test_a_structure_in_a_fields_name_is_a_landmark_that_field_holds() -> None:
+    relations = _relations(
+        "The polytunnel field is planted with Albion strawberries and the outdoor Sonata field "
+        "lies south of the tunnels."
+    )
+    assert relations == {("south_of", "Strawberry", ("Strawberry",))}
+    recipe = generate(
+        "The polytunnel field is planted with Albion strawberries and the outdoor Sonata field "
+        "lies south of the tunnels."
+    ).recipe
+    variety = {f.id: f.variety for f in recipe.fields}
+    [relation] = recipe.relations
+    assert (variety[relation.subject], variety[relation.objects[0]]) == ("Sonata", "Albion")

@@ -50,16 +50,30 @@ def held_by(
 
 
 def _holds(mention: Mention, landmark: str) -> bool:
-    """Whether ``mention`` is said to grow in ``landmark`` ("In the tomato tunnel")."""
+    """Whether ``mention`` is said to grow in ``landmark`` ("In the tomato tunnel"; "The
+    polytunnel field is planted with Albion", then "... south of the tunnels")."""
     items = sorted(mention.items, key=lambda i: i.start)
     for index, item in enumerate(items):
         if (
-            item.role == "filler"
-            and item.data.get("scenery") in ("structures", "buildings")
-            and item.norm.removeprefix("farm").strip() == landmark
-        ):
-            return any(i.norm in ("in", "inside") for i in items[max(0, index - 4) : index])
+            (item.role == "filler" and item.data.get("scenery") in ("structures", "buildings"))
+            or item.role == "non_agricultural"
+        ) and _same_structure(item.norm, landmark):
+            following = items[index + 1] if index + 1 < len(items) else None
+            return any(i.norm in ("in", "inside") for i in items[max(0, index - 4) : index]) or (
+                following is not None and following.role == "plot"
+            )
     return False
+
+
+def _same_structure(word: str, landmark: str) -> bool:
+    """Whether a structure said in a field's words is the landmark said later ("the
+    farmhouse" and "the house", "polytunnel" and "the tunnels")."""
+
+    def singular(text: str) -> str:
+        return text.removesuffix("es") if text.endswith("ses") else text.removesuffix("s")
+
+    own, other = singular(word.removeprefix("farm").strip()), singular(landmark)
+    return own == other or (len(other) >= 4 and own.endswith(other))
 
 
 def landmark_of(clause: Clause) -> str | None:

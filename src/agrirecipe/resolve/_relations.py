@@ -135,11 +135,7 @@ def read_relations(
             landmarks.append((str(link.data.get("value")), landmark_at[position], named[-1], link))
             continue
         landmark = landmark_of(clause)
-        if (
-            landmark is not None
-            and clause.mentions
-            and (held := held_by(clauses, position, landmark)) is not None
-        ):
+        if landmark is not None and (held := held_by(clauses, position, landmark)) is not None:
             # "Centenary strawberries in the tunnels, ..., and right beside the tunnels an
             # orchard of Bing cherries": placed by the field the structure holds
             container, subject = held
