@@ -192,3 +192,14 @@ def test_a_structure_in_a_fields_name_is_a_landmark_that_field_holds() -> None:
     variety = {f.id: f.variety for f in recipe.fields}
     [relation] = recipe.relations
     assert (variety[relation.subject], variety[relation.objects[0]]) == ("Sonata", "Albion")
+
+
+def test_a_crop_only_a_few_weeks_in_is_young() -> None:
+    recipe = generate(
+        "The Iceberg lettuce has bolted, tall stalks shooting up out of the heads, and the "
+        "Butterhead next to it is still small and fresh, only a few weeks in."
+    ).recipe
+    assert [(f.variety, f.stage) for f in recipe.fields] == [
+        ("Iceberg", "Reproductive"),
+        ("Butterhead", "Vegetative"),
+    ]
