@@ -23,7 +23,7 @@ import yaml
 
 from agrirecipe._errors import PromptError
 from agrirecipe.resolve._intent import RowSpec
-from agrirecipe.resolve._lexicon import DATA_DIR, Token, tokenize, vocabulary
+from agrirecipe.resolve._lexicon import DATA_DIR, Token, singular, tokenize, vocabulary
 
 __all__ = [
     "GeometryMatch",
@@ -495,11 +495,7 @@ def _negated(tokens: Sequence[Token], index: int) -> bool:
 def _named_elsewhere(tokens: Sequence[Token], first: int, last: int, plants: str) -> bool:
     """Whether the crop of ``plants`` ("onions", "apple trees") is named outside the
     tokens ``first:last`` (as "onion strips", "the onions")."""
-    word = plants.split()[0]
-    for plural, singular in (("ies", "y"), ("oes", "o"), ("s", "")):
-        if word.endswith(plural):
-            word = word[: -len(plural)] + singular
-            break
+    word = singular(plants.split()[0])
     return any(t.norm.startswith(word) for i, t in enumerate(tokens) if not first <= i < last)
 
 

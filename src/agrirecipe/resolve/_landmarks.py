@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from agrirecipe.resolve._intent import RelationIntent, TraceStep
-from agrirecipe.resolve._lexicon import Item
+from agrirecipe.resolve._lexicon import Item, singular
 from agrirecipe.resolve._links import ARTICLES, OPPOSITE, field_relations
 from agrirecipe.resolve._mentions import Clause, Mention
 
@@ -68,10 +68,6 @@ def _holds(mention: Mention, landmark: str) -> bool:
 def _same_structure(word: str, landmark: str) -> bool:
     """Whether a structure said in a field's words is the landmark said later ("the
     farmhouse" and "the house", "polytunnel" and "the tunnels")."""
-
-    def singular(text: str) -> str:
-        return text.removesuffix("es") if text.endswith("ses") else text.removesuffix("s")
-
     own, other = singular(word.removeprefix("farm").strip()), singular(landmark)
     return own == other or (len(other) >= 4 and own.endswith(other))
 

@@ -35,6 +35,7 @@ __all__ = [
     "normalise",
     "plurals",
     "reader_words",
+    "singular",
     "tokenize",
     "vocabulary",
 ]
@@ -260,6 +261,21 @@ def plurals(phrase: str) -> list[str]:
     if last.endswith("y") and last[-2] not in "aeiou":
         forms.append(last[:-1] + "ies")
     return [prefix + form for form in forms]
+
+
+def singular(word: str) -> str:
+    """A plural word's singular, undoing :func:`plurals` ("potatoes" -> "potato",
+    "strawberries" -> "strawberry", "tunnels" -> "tunnel"); other words unchanged (and
+    words of three letters or fewer, which :func:`plurals` never forms: "is", "gas")."""
+    if len(word) <= 3:
+        return word
+    if word.endswith("ies") and len(word) > 4:
+        return word[:-3] + "y"
+    if word.endswith(("oes", "xes", "ches", "shes", "sses")):
+        return word[:-2]
+    if word.endswith("s") and not word.endswith("ss"):
+        return word[:-1]
+    return word
 
 
 class Lexicon:
