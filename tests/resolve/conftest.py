@@ -23,3 +23,16 @@ def _named_relations(prompt: str) -> NamedRelations:
 def named_relations() -> Callable[[str], NamedRelations]:
     """The relations the hybrid resolver reads from a prompt, fields named by what they grow."""
     return _named_relations
+
+
+def _crop_relations(prompt: str) -> NamedRelations:
+    scene = generate(prompt).recipe
+    crop = {f.id: f.crop for f in scene.fields}
+    return {(r.kind, crop[r.subject], tuple(crop[o] for o in r.objects)) for r in scene.relations}
+
+
+@pytest.fixture
+def crop_relations() -> Callable[[str], NamedRelations]:
+    """The relations ``generate`` reads from a prompt (its default resolver), fields named
+    by their crop."""
+    return _crop_relations

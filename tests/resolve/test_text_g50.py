@@ -4,15 +4,14 @@ crop in it, ploughed or fallow, as scenery)."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import pytest
 
 from agrirecipe import generate
 
-
-def _relations(prompt: str) -> set[tuple[str, str, tuple[str, ...]]]:
-    recipe = generate(prompt).recipe
-    crop = {f.id: f.crop for f in recipe.fields}
-    return {(r.kind, crop[r.subject], tuple(crop[o] for o in r.objects)) for r in recipe.relations}
+#: The fixture crop_relations' answer (tests/resolve/conftest.py).
+NamedRelations = set[tuple[str, str, tuple[str, ...]]]
 
 
 @pytest.mark.parametrize(
@@ -23,14 +22,18 @@ def _relations(prompt: str) -> set[tuple[str, str, tuple[str, ...]]]:
         "(75 cm ridges, two rows each) and west of a cabbage field (rows 60 cm, in-row 40 cm).",
     ],
 )
-def test_a_relation_going_on_with_and_keeps_its_subject(prompt: str) -> None:
-    relations = _relations(prompt)
+def test_a_relation_going_on_with_and_keeps_its_subject(
+    prompt: str, crop_relations: Callable[[str], NamedRelations]
+) -> None:
+    relations = crop_relations(prompt)
     assert {("east_of", "Potato", ("Carrot",)), ("west_of", "Potato", ("Cabbage",))} <= relations
     assert ("west_of", "Carrot", ("Cabbage",)) not in relations
 
 
-def test_a_relation_said_of_a_field_named_after_and_is_that_fields() -> None:
-    relations = _relations("wheat north of the maize and potatoes south of it")
+def test_a_relation_said_of_a_field_named_after_and_is_that_fields(
+    crop_relations: Callable[[str], NamedRelations],
+) -> None:
+    relations = crop_relations("wheat north of the maize and potatoes south of it")
     assert ("north_of", "Wheat", ("Maize",)) in relations
     assert not any(subject == "Wheat" and kind == "south_of" for kind, subject, _ in relations)
 
@@ -47,8 +50,10 @@ def test_a_field_with_no_crop_in_it_is_scenery(ground: str) -> None:
 
 
 @pytest.mark.parametrize("plot", ["a vineyard", "an orchard"])
-def test_a_plot_of_a_crop_the_field_cannot_hold_is_a_field_of_its_own(plot: str) -> None:
-    relations = _relations(f"{plot} with a block of carrots to the north of it")
+def test_a_plot_of_a_crop_the_field_cannot_hold_is_a_field_of_its_own(
+    plot: str, crop_relations: Callable[[str], NamedRelations]
+) -> None:
+    relations = crop_relations(f"{plot} with a block of carrots to the north of it")
     assert any(kind == "north_of" and subject == "Carrot" for kind, subject, _ in relations)
 
 
@@ -57,8 +62,12 @@ def test_a_plot_of_the_fields_own_crop_after_with_is_still_its_block() -> None:
     assert [f.variety for f in recipe.fields] == ["Gala", "Fuji"]
 
 
-def test_a_fence_on_a_side_of_the_farm_places_the_field_along_it() -> None:
-    relations = _relations("Jonagored along the east fence and Cripps Pink along the west fence.")
+def test_a_fence_on_a_side_of_the_farm_places_the_field_along_it(
+    crop_relations: Callable[[str], NamedRelations],
+) -> None:
+    relations = crop_relations(
+        "Jonagored along the east fence and Cripps Pink along the west fence."
+    )
     assert ("west_of", "Apple", ("Apple",)) in relations
 
 
@@ -107,8 +116,10 @@ def _fields(prompt: str) -> list[dict[str, object]]:
         "the wheat has rust pustules on the leaves and the potato leaves are blotched brown.",
     ],
 )
-def test_fields_described_again_after_a_colon_keep_their_relation(prompt: str) -> None:
-    assert _relations(prompt) == {("east_of", "Potato", ("Wheat",))}
+def test_fields_described_again_after_a_colon_keep_their_relation(
+    prompt: str, crop_relations: Callable[[str], NamedRelations]
+) -> None:
+    assert crop_relations(prompt) == {("east_of", "Potato", ("Wheat",))}
     assert [f["health"] for f in _fields(prompt)] == ["Ill", "Ill"]
 
 
@@ -120,8 +131,10 @@ def test_sorry_for_itself_is_a_poorly_look_not_a_correction() -> None:
     ]
 
 
-def test_between_the_two_with_a_look_after_it_is_still_between_them() -> None:
-    relations = _relations(
+def test_between_the_two_with_a_look_after_it_is_still_between_them(
+    crop_relations: Callable[[str], NamedRelations],
+) -> None:
+    relations = crop_relations(
         "winter wheat just up; a block of maize, dry and brown; and a cabbage field in "
         "between the two with fat blue-green heads."
     )
@@ -169,18 +182,24 @@ def test_an_area_split_into_parts_is_shared_out(prompt: str, crops: list[str], a
     assert all(abs(f["area"] - area) <= area * 0.01 for f in fields)
 
 
-def test_a_group_opening_a_list_after_a_patch_is_its_first_member() -> None:
+def test_a_group_opening_a_list_after_a_patch_is_its_first_member(
+    crop_relations: Callable[[str], NamedRelations],
+) -> None:
     prompt = (
         "we keep a veg patch: greens by the gate, peppers at the far end, and the tomatoes "
         "between the greens and the peppers."
     )
     crops = sorted(str(f["crop"]) for f in _fields(prompt))
     assert len(crops) == 3 and {"Pepper", "Tomato"} < set(crops)
-    assert any(kind == "between" and subject == "Tomato" for kind, subject, _ in _relations(prompt))
+    assert any(
+        kind == "between" and subject == "Tomato" for kind, subject, _ in crop_relations(prompt)
+    )
 
 
-def test_a_structure_in_a_fields_name_is_a_landmark_that_field_holds() -> None:
-    relations = _relations(
+def test_a_structure_in_a_fields_name_is_a_landmark_that_field_holds(
+    crop_relations: Callable[[str], NamedRelations],
+) -> None:
+    relations = crop_relations(
         "The polytunnel field is planted with Albion strawberries and the outdoor Sonata field "
         "lies south of the tunnels."
     )

@@ -5,19 +5,18 @@ counted per metre of row; members named by their side; a look said with "is all"
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import pytest
 
 from agrirecipe import generate
 
+#: The fixture crop_relations' answer (tests/resolve/conftest.py).
+NamedRelations = set[tuple[str, str, tuple[str, ...]]]
+
 
 def _fields(prompt: str) -> list[tuple[str, str, str, str]]:
     return [(f.crop, f.stage, f.season, f.health) for f in generate(prompt).recipe.fields]
-
-
-def _relations(prompt: str) -> set[tuple[str, str, tuple[str, ...]]]:
-    recipe = generate(prompt).recipe
-    crop = {f.id: f.crop for f in recipe.fields}
-    return {(r.kind, crop[r.subject], tuple(crop[o] for o in r.objects)) for r in recipe.relations}
 
 
 @pytest.mark.parametrize(
@@ -94,13 +93,17 @@ def test_plants_per_metre_naming_the_only_crop_keep_it() -> None:
     assert [f.crop for f in recipe.fields] == ["Carrot"]
 
 
-def test_zones_at_the_north_and_south_are_placed() -> None:
-    relations = _relations("wheat at the north, maize in the middle, potatoes at the south")
+def test_zones_at_the_north_and_south_are_placed(
+    crop_relations: Callable[[str], NamedRelations],
+) -> None:
+    relations = crop_relations("wheat at the north, maize in the middle, potatoes at the south")
     assert {("north_of", "Wheat", ("Maize",)), ("north_of", "Maize", ("Potato",))} <= relations
 
 
-def test_a_side_said_past_a_description_places_the_field_before() -> None:
-    relations = _relations(
+def test_a_side_said_past_a_description_places_the_field_before(
+    crop_relations: Callable[[str], NamedRelations],
+) -> None:
+    relations = crop_relations(
         "Winter Wheat just emerged, thin green lines, on the west side of the lane, and "
         "January King cabbages on the east side."
     )
@@ -120,14 +123,18 @@ def test_a_member_named_by_its_side_then_a_look() -> None:
     assert sorted(health.values()) == ["Healthy", "Ill"]
 
 
-def test_each_side_named_after_a_colon_is_one_field_a_side() -> None:
+def test_each_side_named_after_a_colon_is_one_field_a_side(
+    crop_relations: Callable[[str], NamedRelations],
+) -> None:
     prompt = "Veg on both sides of the maize field: onions to the west of it, cabbages to the east."
     assert sorted(crop for crop, _, _, _ in _fields(prompt)) == ["Cabbage", "Maize", "Onion"]
-    relations = _relations(prompt)
+    relations = crop_relations(prompt)
     assert {("west_of", "Onion", ("Maize",)), ("east_of", "Cabbage", ("Maize",))} <= relations
 
 
-def test_a_label_placed_against_a_bare_letter_then_named_after_and_is() -> None:
+def test_a_label_placed_against_a_bare_letter_then_named_after_and_is(
+    crop_relations: Callable[[str], NamedRelations],
+) -> None:
     prompt = (
         "Block A is Gala apples, 12 rows, 3.4 m between the rows and a tree every metre. "
         "Block B sits immediately east of A and is Williams pears planted on 3.5 m rows."
@@ -137,7 +144,7 @@ def test_a_label_placed_against_a_bare_letter_then_named_after_and_is() -> None:
         ("Gala", 3.4),
         ("Williams", 3.5),
     ]
-    assert _relations(prompt) == {("east_of", "Pear", ("Apple",))}
+    assert crop_relations(prompt) == {("east_of", "Pear", ("Apple",))}
 
 
 def test_a_capitalised_name_a_plot_holds_is_its_variety() -> None:
@@ -149,6 +156,8 @@ def test_a_capitalised_name_a_plot_holds_is_its_variety() -> None:
 
 
 @pytest.mark.parametrize("closing", ["thx a lot", "thanks!", "cheers"])
-def test_a_side_said_last_before_a_sign_off_still_places_the_field(closing: str) -> None:
-    relations = _relations(f"apples up north, cherries in the middle, pears south. {closing}")
+def test_a_side_said_last_before_a_sign_off_still_places_the_field(
+    closing: str, crop_relations: Callable[[str], NamedRelations]
+) -> None:
+    relations = crop_relations(f"apples up north, cherries in the middle, pears south. {closing}")
     assert ("south_of", "Pear", ("Cherry",)) in relations
