@@ -222,3 +222,68 @@ def test_a_crop_only_a_few_weeks_in_is_young() -> None:
         ("Iceberg", "Reproductive"),
         ("Butterhead", "Vegetative"),
     ]
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "San Marzano field in August with long red fruit hanging in clusters, and the Roma "
+        "field beside it hit hard by blight, black stems and rotting fruit.",
+        "A Gala block in flower, and the Fuji block next to it badly scabbed, black spots "
+        "and cracked fruit.",
+    ],
+)
+def test_words_after_a_field_placed_by_a_pronoun_are_its_own(prompt: str) -> None:
+    assert [f["health"] for f in _fields(prompt)] == ["Healthy", "Ill"]
+
+
+def test_a_colour_naming_a_fields_own_variety_after_with_is_its_fruit(
+    crop_relations: Callable[[str], NamedRelations],
+) -> None:
+    prompt = (
+        "The Gala block hanging with ripe striped red fruit, and the Golden Delicious block "
+        "beyond it with pale yellow apples, also ready."
+    )
+    assert [(f["variety"]) for f in _fields(prompt)] == ["Gala", "Golden Delicious"]
+    assert crop_relations(prompt) == {("next_to", "Apple", ("Apple",))}
+
+
+def test_a_variety_named_again_after_with_is_still_the_member() -> None:
+    recipe = generate(
+        "Cabbage variety block: Savoy, Red Express and January King, each 10 rows at 75 cm, "
+        "with Red Express between the other two."
+    ).recipe
+    variety = {f.id: f.variety for f in recipe.fields}
+    [relation] = recipe.relations
+    assert variety[relation.subject] == "Red Express"
+    assert sorted(variety[o] for o in relation.objects) == ["January King", "Savoy"]
+
+
+def test_a_list_after_a_count_and_restated_after_a_colon_is_the_counted_fields(
+    crop_relations: Callable[[str], NamedRelations],
+) -> None:
+    prompt = (
+        "Two plots for camera calibration, carrots on the west and onions on the east: "
+        "Nantes carrots on 75 cm ridges, and Sturon onions in rows 30 cm apart, 10 cm in-row."
+    )
+    fields = _fields(prompt)
+    assert [(f["crop"], f["variety"]) for f in fields] == [
+        ("Carrot", "Nantes"),
+        ("Onion", "Sturon"),
+    ]
+    assert (fields[1]["row_spacing"], fields[1]["in_row"]) == (0.3, 0.1)
+    assert ("west_of", "Carrot", ("Onion",)) in crop_relations(prompt)
+
+
+@pytest.mark.parametrize(
+    ("prompt", "count"),
+    [
+        ("some veggies: a field of carrots & whatever else u want, at least 3 fields total", 3),
+        ("some veg: a field of carrots, 4 fields in total", 4),
+    ],
+)
+def test_a_group_heading_a_list_is_the_fields_a_total_leaves(prompt: str, count: int) -> None:
+    fields = generate(prompt).recipe.fields
+    assert len(fields) == count
+    assert sum(f.crop == "Carrot" for f in fields) == 1
+    assert all(f.category == "Vegetables" for f in fields)

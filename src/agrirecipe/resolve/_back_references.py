@@ -152,6 +152,30 @@ def it_is_a(mention: Mention) -> bool:
     )
 
 
+def rows_of_a_named_crop(kept: Sequence[Mention], mention: Mention) -> bool:
+    """Whether the mention is the rows of the one field named before that grows its crop
+    ("..., and maize in 75 cm rows. Drill rows and maize rows all running east-west")."""
+    own = strong_crops(mention)
+    if (
+        not own
+        or len(mention.heads) != 1
+        or mention.count is not None
+        or mention.plot is not None
+        or names_a_variety(mention)
+    ):
+        return False
+    ordered = sorted(mention.items, key=lambda i: i.start)
+    at = ordered.index(mention.heads[0])
+    if at + 1 >= len(ordered) or ordered[at + 1].norm not in _ROW_NOUNS:
+        return False
+    growing = [m for k in kept for m in (k.refinements or [k]) if strong_crops(m) == own]
+    return len({id(m) for m in growing}) == 1 and (growing[0].count or 1) == 1
+
+
+#: Words for a field's rows said after its crop ("maize rows").
+_ROW_NOUNS = frozenset({"rows", "lines", "drills", "row", "ridges", "beds"})
+
+
 def it_is_the_crop(kept: Sequence[Mention], mention: Mention) -> bool:
     """Whether the mention says what crop the field named last, a plot of no crop,
     holds ("just the one field behind the dairy sheds, and it's carrots", "..., and it's

@@ -49,6 +49,37 @@ def _crop_pictures() -> re.Pattern[str]:
     return re.compile(f"[{re.escape(str(data['crop_pictures']))}]\ufe0f?")
 
 
+@functools.cache
+def _picture_crops() -> dict[str, str]:
+    data: dict[str, Any] = yaml.safe_load((DATA_DIR / "casual.yaml").read_text("utf-8"))
+    return {str(k): str(v) for k, v in data["picture_crops"].items()}
+
+
+def _pictured_crop(text: str, match: re.Match[str]) -> str:
+    """What a crop picture reads as: its crop's word beside a variety name that is also an
+    everyday word ("🍓 sonata"), when no word beside it names a crop; else a space."""
+    crop = _picture_crops().get(match.group(0)[0])
+    if crop is None:
+        return " "
+    before = _WORDS_BEFORE.search(_crop_pictures().sub(" ", text[: match.start()]))
+    after = _WORDS_AFTER.match(_crop_pictures().sub(" ", text[match.end() :]))
+    beside = [m.group("word").lower() for m in (before, after) if m is not None]
+    weak = {str(w) for w in vocabulary()["weak_variety_words"]}
+    stem = crop[:-1] if crop.endswith("y") else crop
+    if any(word in weak for word in beside) and not any(
+        word.startswith(stem) or word in _CROP_WORDS for word in beside
+    ):
+        return f" {crop} "
+    return " "
+
+
+#: The word right before / after a place in the text.
+_WORDS_BEFORE = re.compile(r"(?P<word>[A-Za-z]+)\s*$")
+_WORDS_AFTER = re.compile(r"\s*(?P<word>[A-Za-z]+)")
+#: Words for crops beside a picture that its crop's word would repeat ("strawbs 🍓").
+_CROP_WORDS = frozenset({"strawbs", "strawberries", "berries", "toms", "spuds", "corn", "chillies"})
+
+
 #: "with a few chillies mixed in", "with the odd lettuce dotted among them".
 _MIXED_IN = re.compile(
     r"\s+(?i:with)\s+(?i:a\s+few|some|a\s+couple\s+of|the\s+odd|a\s+handful\s+of)\s+"
@@ -64,6 +95,17 @@ _SOMETHING_WITH = re.compile(
 )
 #: "minus 2", "negative 3": a sign said as a word before a number.
 _MINUS = re.compile(r"\b(?i:minus|negative)\s+(?=\d)")
+#: "Where the orchard ends the maize begins": the second field begins at the first.
+_WHERE_ENDS = re.compile(
+    r"\b(?i:where)\s+(?P<a>(?i:the|our|my)\s+[^,.;:!?]+?)\s+(?i:ends|stops|finishes)\s*,?\s+"
+    r"(?P<b>(?i:the|our|my)\s+[^,.;:!?]+?)\s+(?i:begins|starts)\b"
+)
+#: "Riesling uphill (north) of the Spätburgunder": the side in brackets is the relation.
+_SLOPE_SIDE = re.compile(
+    r"\b(?i:uphill|downhill|upslope|downslope|above|below|higher up|lower down)\s*"
+    r"\(\s*(?P<side>(?i:north|south|east|west|north-?east|north-?west|south-?east|south-?west))"
+    r"\s*\)\s*(?=(?i:of)\b)"
+)
 #: An arrow written between two words ("west→east", "wheat -> maize").
 _ARROW = re.compile(r"\s*(?:-+>|→|⟶|⇒)\s*")
 
@@ -79,7 +121,7 @@ def expand_casual(prompt: str) -> str:
     lower, lower_forms = _lower_forms()
     # "a straw🍓berry field": an emoji inside a word is not part of it
     text = _EMOJI_IN_WORD.sub("", prompt)
-    text = _crop_pictures().sub(" ", text)
+    text = _crop_pictures().sub(lambda m: _pictured_crop(text, m), text)
     # "apples w of the pears", "onions just S of it": a compass letter before "of"
     text = _LETTER_SIDE.sub(lambda m: f"{_LETTER_SIDES[m.group('side').lower()]} of", text)
     # "iceburg lettuce on the W side & savoy cabage on the E side": a compass letter as
@@ -89,6 +131,10 @@ def expand_casual(prompt: str) -> str:
     text = _a_couple().sub("a couple of", text)
     # "cab south of the pinot": the wine trade's short name (not a tractor's cab)
     text = _CAB.sub("cabernet", text)
+    # "Where the orchard ends the maize begins": the maize next to the orchard
+    text = _WHERE_ENDS.sub(lambda m: f"{m.group('b')} next to {m.group('a')}", text)
+    # "Riesling uphill (north) of the Spätburgunder": north of it
+    text = _SLOPE_SIDE.sub(lambda m: f"{m.group('side')} ", text)
     # "3 plots side by side west→east": an arrow between two places is "to"
     text = _ARROW.sub(" to ", text)
     # "bell types with a few chillies mixed in": a few plants among the field's own crop,

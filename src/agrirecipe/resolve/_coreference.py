@@ -28,6 +28,7 @@ from agrirecipe.resolve._back_references import (
     named_in_order,
     of_it,
     opens_a_list,
+    rows_of_a_named_crop,
     same_modifier,
     with_one_named_before,
 )
@@ -129,6 +130,8 @@ def merge_coreferences(
             or says_what_it_is
             # ("just the one field behind the dairy sheds, and it's carrots")
             or it_is_the_crop(kept, mention)
+            # ("Drill rows and maize rows all running east-west": the maize's rows)
+            or rows_of_a_named_crop(kept, mention)
         )
         if says_what_it_is:
             # "Durum wheat, ears out ...; it's a 3 hectare field": the field named, its size

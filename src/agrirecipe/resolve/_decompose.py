@@ -245,7 +245,12 @@ class MentionBuilder:
                         )
                         for p in pending
                     )
-                    and not any(p.role in ("of", "size", "geometry") for p in pending)
+                    and not any(p.role in ("of", "geometry") for p in pending)
+                    # ("north of the garden a 10-acre corn field": a size after "a")
+                    and not any(
+                        p.role == "size" and (k == 0 or pending[k - 1].norm not in _ARTICLE)
+                        for k, p in enumerate(pending)
+                    )
                 )
             ):
                 current.conflict = current.conflict or plot_conflict(current, item, pending)

@@ -11,7 +11,7 @@ from __future__ import annotations
 import itertools
 from collections.abc import Sequence
 
-from agrirecipe.resolve._lexicon import Item, reader_words
+from agrirecipe.resolve._lexicon import Item, reader_words, singular
 from agrirecipe.resolve._mentions import Clause, Mention
 from agrirecipe.resolve._own_crop import (
     may_hold,
@@ -353,12 +353,14 @@ def _bare_part_after_with(clause: Clause, mention: Mention) -> bool:
 def _crop_fruit_after_with(clause: Clause, mention: Mention, before: Sequence[Clause]) -> bool:
     """ "Padron on the other, still flowering with little green peppers": a bare plural of
     a crop named before, after "with" (past plain adjectives), is that field's fruit; so is
-    a loose few of them ("a Granny leaf ..., with a couple of apples behind it")."""
+    a loose few of them ("a Granny leaf ..., with a couple of apples behind it"), and the
+    fruit a field's variety bears ("the Golden Delicious block beyond it with pale yellow
+    apples")."""
     crops = strong_crops(mention)
     if (
         not crops
         or (mention.count is not None and not _loose_few(mention))
-        or names_a_variety(mention)
+        or (names_a_variety(mention) and not _varieties_named_before(mention, before))
         or any(h.role == "plot" for h in mention.heads)
         or not any(strong_crops(m) & crops for c in before for m in c.mentions)
     ):
@@ -374,6 +376,32 @@ def _crop_fruit_after_with(clause: Clause, mention: Mention, before: Sequence[Cl
     ):
         said.pop()
     return bool(said) and said[-1].norm == "with"
+
+
+def _varieties_named_before(mention: Mention, before: Sequence[Clause]) -> bool:
+    """Whether the mention names its variety by the fruit's colour ("yellow apples") and
+    that variety is one a field named before has (not "with Red Express between the other
+    two": a member named again)."""
+    crops = {c.lower() for c in strong_crops(mention)}
+    if not any(
+        len(h.tokens) == 2
+        and h.tokens[0].norm in reader_words("colours")
+        and singular(h.tokens[1].norm) in crops
+        for h in mention.heads
+    ):
+        return False
+    named = {
+        (crop, variety)
+        for c in before
+        for m in c.mentions
+        for crop, variety, weak in m.interpretations or ()
+        if not weak
+    }
+    return all(
+        (crop, variety) in named
+        for crop, variety, weak in mention.interpretations or ()
+        if not weak
+    )
 
 
 def _few_words(mention: Mention) -> list[Item]:

@@ -27,6 +27,8 @@ from agrirecipe.resolve._lexicon import DATA_DIR, Token, singular, tokenize, voc
 
 __all__ = [
     "GeometryMatch",
+    "bearing",
+    "compass_words",
     "find_geometry",
     "merge_geometry",
     "row_spec",
@@ -187,6 +189,21 @@ def _tables() -> _Tables:
         row_words=frozenset(str(phrase).split()[-1] for phrase in (*words["rows"], *words["beds"])),
         unused=tuple(compiled(str(pattern)) for pattern in data["unused"]),
     )
+
+
+def bearing(first: str, second: str) -> float | None:
+    """The rows' bearing (0-180 degrees) two compass words say as a line ("east west",
+    "n s"); None when they are no words of a direction or no line ("north east")."""
+    directions = _tables().directions
+    if first not in directions or second not in directions:
+        return None
+    a, b = directions[first], directions[second]
+    return a % 180.0 if (a - b) % 180 == 0 and a != b else None
+
+
+def compass_words() -> frozenset[str]:
+    """The words for a compass direction ("north", "ne", "e")."""
+    return frozenset(_tables().directions)
 
 
 @functools.cache

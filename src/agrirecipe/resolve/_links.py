@@ -207,6 +207,11 @@ def coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:
         # "..., and Roma tomatoes behind with curled, mottled leaves": the words after a
         # comma go on with the last member's own "with ..."
         return group
+    if _placed_by_pronoun_after(clauses, index, position):
+        # "..., and the Roma field beside it hit hard by blight, black stems and rotting
+        # fruit": a field placed against the one before it by a pronoun is described
+        # on its own
+        return group
     seen = {id(group[0])}  # identity: comparing mentions field by field made this cubic
     index = _before_a_bracket(clauses, index, group, seen)
     # ("North plot, ..., Fontane potatoes; south plot, 40 x 120 m, ...": a semicolon
@@ -300,13 +305,26 @@ def before_brackets(clauses: Sequence[Clause], position: int) -> int:
     return index
 
 
+_PRONOUNS = ("them", "it", "those", "these")
+
+
 def _placed_by_pronoun(clause: Clause) -> bool:
     """'..., and behind them a row of old pear trees': a field placed against the fields
     before it by a pronoun is not listed with them."""
     if not clause.mentions:
         return False
     head = min(h.start for h in clause.mentions[-1].heads)
-    return any(i.norm in ("them", "it", "those", "these") for i in clause.items if i.end <= head)
+    return any(i.norm in _PRONOUNS for i in clause.items if i.end <= head)
+
+
+def _placed_by_pronoun_after(clauses: Sequence[Clause], index: int, position: int) -> bool:
+    """Whether the field of clause ``index`` is placed by a pronoun in the clause right
+    after it ("the Roma field beside it"), before clause ``position``."""
+    after = index + 1
+    if after >= position or clauses[after].mentions:
+        return False
+    link, said = clauses[after].link, clauses[after].items
+    return link is not None and link.role == "relation" and bool(said) and said[0].norm in _PRONOUNS
 
 
 def following_list(

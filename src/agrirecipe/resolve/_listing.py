@@ -63,10 +63,16 @@ def listed_fields(
             and not listing(link)
             and (
                 link.norm in (".", "!", "?", ";")
+                # ("Two plots, carrots on the west and onions on the east: Nantes carrots
+                # ..., and Sturon onions ...": a colon after the list opens its details)
+                or link.norm == ":"
                 # ("two 0.25 ha plots, carrots north of onions": the list placed in itself)
                 or (
                     link.role == "relation"
                     and not bare_crop_first(clause)
+                    # ("Two fields in this one, a field of young maize next to a wheat
+                    # field": a new field, said with "a", placed against the one before)
+                    and not _new_field_first(clause)
                     # ("two fields, wheat by the barn, maize near the river")
                     and not placed_by_scenery(clause)
                     # ("... Conference pears ... and, north of them, Kordia cherries")
@@ -147,6 +153,17 @@ def bare_crop_first(clause: Clause) -> bool:
         and bool(clause.items)
         and clause.items[0] in clause.mentions[0].heads
         and clause.mentions[0].has_crop
+    )
+
+
+def _new_field_first(clause: Clause) -> bool:
+    """Whether the clause opens with a field said with "a" or "an" ("a wheat field")."""
+    return (
+        len(clause.items) >= 2
+        and bool(clause.mentions)
+        and clause.items[0].norm in ("a", "an")
+        and clause.items[1] in clause.mentions[0].items
+        and (clause.mentions[0].has_crop or clause.mentions[0].plot is not None)
     )
 
 

@@ -15,6 +15,7 @@ from __future__ import annotations
 import itertools
 from collections.abc import Sequence
 
+from agrirecipe.resolve._geometry import bearing, compass_words
 from agrirecipe.resolve._lexicon import Item, vocabulary
 from agrirecipe.resolve._mentions import Clause, Mention
 
@@ -216,7 +217,18 @@ def member_said_again(clause: Clause, parent: Mention) -> Mention | None:
         or _by_look(words, members)
         or _by_value(words, members)
         or _by_measure(clause.items, members)
+        or _by_direction(clause.items, members)
     )
+
+
+def _by_direction(words: Sequence[Item], members: Sequence[Mention]) -> Mention | None:
+    """The member "the E-W one" (or "the north-south one") points at: the one member whose
+    rows run that way ("one with rows east-west")."""
+    compass = [w.norm for w in words if w.norm in compass_words()]
+    if len(compass) != 2 or (said := bearing(*compass)) is None:
+        return None
+    found = [m for m in members if _measure(m, "row_bearing_deg") == said]
+    return found[0] if len(found) == 1 else None
 
 
 def _by_measure(items: Sequence[Item], members: Sequence[Mention]) -> Mention | None:

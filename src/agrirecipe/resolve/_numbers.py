@@ -91,7 +91,12 @@ def _years_times_and_parts(items: Sequence[Item]) -> None:
             and item.raw.isdigit()
             and len(item.raw) == 4
             and 1900 <= int(item.raw) <= 2100
-            and (word_before in _BEFORE_A_YEAR or word_after in _AFTER_A_YEAR)
+            and (
+                word_before in _BEFORE_A_YEAR
+                or word_after in _AFTER_A_YEAR
+                # "in January 2026", "spring 2024": the year of a month or season
+                or (index > 0 and items[index - 1].role in ("month", "season"))
+            )
         ):
             item.role = "filler"
             item.data["year"] = True

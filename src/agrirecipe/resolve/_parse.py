@@ -116,6 +116,7 @@ from agrirecipe.resolve._lexicon import (
     vocabulary,
 )
 from agrirecipe.resolve._likewise import share_likewise
+from agrirecipe.resolve._links import ARTICLES
 from agrirecipe.resolve._lists import fill_gapped_counts, spread_value_lists
 from agrirecipe.resolve._loose import attach_loose
 from agrirecipe.resolve._measures import (
@@ -203,6 +204,26 @@ UnknownWords = Callable[[list[Item], Lexicon], tuple[list[Item], list[TraceStep]
 
 #: The most fields one recipe holds (SceneRecipe.fields).
 _MAX_FIELDS = 64
+
+
+def _scenery_placed_by(container: Item, clauses: Sequence[Clause]) -> bool:
+    """Whether the container word ("the farm") only places the sky said right before it
+    ("The sky over the farm this evening"): the scene's backdrop, not fields."""
+    for clause in clauses:
+        if container in clause.items:
+            before = [i for i in clause.items if i.end <= container.start]
+            while before and before[-1].norm in ARTICLES:
+                before.pop()
+            return (
+                len(before) >= 2
+                and before[-1].norm in _OVER
+                and before[-2].data.get("scenery") == "sky"
+            )
+    return False
+
+
+#: Words that set the sky over the place named after them ("the sky over the farm").
+_OVER = frozenset({"over", "above", "across", "behind", "beyond"})
 
 
 def _listed_after_a_colon(items: Sequence[Item], container: Item) -> list[Item]:
@@ -477,7 +498,10 @@ class PromptReader(FieldReading):
                 hint="name a crop, a variety or a kind of field, e.g. " + EXAMPLES,
             )
         scenery = [i.raw for i in items if i.scenery]
-        if scenery and all(c.norm in reader_words("only_a_scene") for c in containers):
+        if scenery and all(
+            c.norm in reader_words("only_a_scene") or _scenery_placed_by(c, clauses)
+            for c in containers
+        ):
             # "a drone survey scene over the yard: two tractors, a sprayer and the shed"
             raise PromptError(
                 f"{NOTHING_FOUND}: only scenery ({', '.join(repr(w) for w in scenery[:5])})",

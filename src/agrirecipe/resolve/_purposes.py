@@ -26,6 +26,12 @@ def _purpose(item: Item) -> bool:
     return item.role in ("filler", "non_agricultural") and group in _PURPOSES
 
 
+def _options(item: Item) -> tuple[str, ...]:
+    """The crops a plot word says ("root crop": carrots, potatoes, onions)."""
+    value = item.data.get("value")
+    return tuple(value.get("options", ())) if isinstance(value, dict) else ()
+
+
 def purpose_diseases(items: Sequence[Item], text: str) -> None:
     """'Late-blight detection dataset', 'a blight-spotting drone': a disease named as what
     a dataset or robot is for says nothing about the plants' health (scenery words).
@@ -35,7 +41,9 @@ def purpose_diseases(items: Sequence[Item], text: str) -> None:
         # "for a banana canopy-segmentation dataset", "for citrus canopy scans", "training a
         # grape counting model": the crop
         # (or kind of crop) a purpose is about
-        if item.role not in ("head", "category") or index == 0:
+        # ("Need it for a root-crop yield camera": a plot that says its crops, too)
+        says_crops = item.role == "plot" and bool(_options(item))
+        if (item.role not in ("head", "category") and not says_crops) or index == 0:
             continue
         opener = index - 1
         if items[opener].norm in ("a", "an", "the", "our", "my") and opener:

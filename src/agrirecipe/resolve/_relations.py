@@ -176,6 +176,13 @@ def read_relations(
                 kind = str(link.data["value"])
                 relations.extend(field_relations(kind, subject, (container,), members, link, trace))
                 continue
+            if (row := side_by_side(clauses, position, members, trace, warnings)) is not None:
+                # "the cabbage and the lettuce fields side by side with the tractor
+                # between them": the fields side by side, the scenery with them
+                relations += row.relations
+                middles += row.middles
+                read += row.said
+                continue
             if named and landmark is not None and position - 1 == named[-1].clause:
                 landmarks.append((str(link.data.get("value")), landmark, named[-1], link))
                 landmark_at[position] = landmark
@@ -412,6 +419,14 @@ def read_relations(
     relations += on_the_other_side(beyond, read, members, trace)
     relations += across_landmarks(landmarks, members, trace)
     related = {frozenset((r.subject, *r.objects)) for r in relations if len(r.objects) == 1}
+    # ("onions, then carrots ..., and a strip of lettuce between the onions and the
+    # carrots": a field placed between two is placed against each of them)
+    related |= {
+        frozenset((r.subject, other))
+        for r in relations
+        if r.kind == "between"
+        for other in r.objects
+    }
     relations += then_chain(clauses, members, related, trace)
     relations += one_side_and_the_other(clauses, members, relations, trace)
     said_between = [frozenset((r.subject, *r.objects)) for r in relations if r.kind == "between"]

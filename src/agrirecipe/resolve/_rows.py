@@ -66,11 +66,28 @@ def then_chain(
     "then" lie one beside the next (the middle one of three between the others),
     unless the text already placed them ("west to east: ..., then ...")."""
     chain: list[Mention] = []
+    said: set[frozenset[int]] = set()  # pairs the chain's own last words placed
     for position, clause in enumerate(clauses):
         link = clause.link
-        if not clause.mentions:
+        # ("three fields: cabbages nearest to us, then a wheat field, ...": the members
+        # of a counted list, folded into it, in the order named)
+        own = clause.mentions or [
+            r for r in (clause.refinement,) if r is not None and r.clause == position
+        ]
+        if not own:
             continue
-        mention = clause.mentions[0]
+        mention = own[0]
+        if (
+            len(chain) >= 2
+            and _past_the_last(clauses, position, chain[-1])
+            and len(members.get(id(chain[-1]), [])) == 1
+            and len(members.get(id(mention), [])) == 1
+        ):
+            # "..., then a wheat field, and past that a field of potatoes": the chain
+            # goes on past its last field, placed by its own words
+            said.add(frozenset((members[id(chain[-1])][0], members[id(mention)][0])))
+            chain.append(mention)
+            continue
         follows = (link is not None and link.norm == "then") or (
             position > 0
             and clauses[position - 1].link is not None
@@ -90,20 +107,45 @@ def then_chain(
             if all(mention is not m for m in chain):
                 chain.append(mention)
         elif not chain or len(chain) < 2:
-            chain = [clause.mentions[-1]]
+            chain = [own[-1]]
     fields = [m for m in chain if len(members.get(id(m), [])) == 1]
     indices = [members[id(m)][0] for m in fields]
-    if len(fields) < 2 or any(frozenset(pair) in related for pair in itertools.pairwise(indices)):
+    if len(fields) < 2 or any(
+        frozenset(pair) in related and frozenset(pair) not in said
+        for pair in itertools.pairwise(indices)
+    ):
         return []
     link_item = next(c.link for c in clauses if c.link is not None and c.link.norm == "then")
     relations: list[RelationIntent] = []
     for first, second in itertools.pairwise(fields):
+        if frozenset((members[id(first)][0], members[id(second)][0])) in said:
+            continue
         relations.extend(field_relations("next_to", second, (first,), members, link_item, trace))
     if len(fields) == 3:
         relations.extend(
             field_relations("between", fields[1], (fields[0], fields[2]), members, link_item, trace)
         )
     return relations
+
+
+def _past_the_last(clauses: Sequence[Clause], position: int, last: Mention) -> bool:
+    """Whether clause ``position`` ("and past that a field of potatoes") places its field
+    against "that" or "it", the field ``last`` named just before, after an "and"."""
+    clause = clauses[position]
+    link = clause.link
+    return (
+        link is not None
+        and link.role == "relation"
+        and bool(clause.items)
+        and clause.items[0].norm in ("that", "it")
+        and position >= 2
+        and link_norm(clauses[position - 1]) == "and"
+        and not clauses[position - 1].items
+        and not any(
+            c.mentions or c.refinement not in (None, last)
+            for c in clauses[last.clause + 1 : position]
+        )
+    )
 
 
 _ORDINALS = {"first": 0, "second": 1, "third": 2, "fourth": 3}
@@ -362,8 +404,20 @@ def side_by_side(
     'comice and bartlett pears next to each other': the fields the row word at
     ``position`` follows (or the list after its colon), each beside the next; None when
     the clause's word is no such row word."""
-    link = clauses[position].link
-    if link is None or link.role != "trailer" or link.data.get("value") not in ("next_to", "row"):
+    clause = clauses[position]
+    link = clause.link
+    # ("the cabbage and the lettuce fields side by side with the tractor between them":
+    # side by side, and the scenery with them)
+    with_scenery = (
+        link is not None
+        and link.role == "relation"
+        and link.norm == "side by side with"
+        and not clause.mentions
+        and any(i.scenery for i in clause.items)
+    )
+    if link is None or not (
+        with_scenery or (link.role == "trailer" and link.data.get("value") in ("next_to", "row"))
+    ):
         return None
     ordered = link.data.get("value") == "row"
     group = coordinated(clauses, position) or listed_after(clauses, position)

@@ -93,6 +93,8 @@ def pronoun_of_scenery(clauses: Sequence[Clause], position: int, *, the_two: boo
         and (
             (placed_by := clauses[position - 1].link) is None
             or placed_by.role not in ("relation", "trailer", "between")
+            # ("... side by side with the tractor between them": the fields' own row)
+            or placed_by.norm == "side by side with"
         )
         and not pronoun_past_an_aside(clauses, position)
     )

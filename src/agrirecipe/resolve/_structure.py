@@ -247,6 +247,8 @@ def apply_each_side(clauses: Sequence[Clause]) -> None:
         said = clauses[position - 1].items if position else []
         if said and "scenery" in max(said, key=lambda i: i.start).data:
             continue  # "... with hawthorn hedges on both sides": the hedges' sides
+        if said and _a_headland(max(said, key=lambda i: i.start)):
+            continue  # "a cabbage field with a 5 m headland on each side": the headland's
         following = clauses[position + 1] if position + 1 < len(clauses) else None
         if following is not None and link_norm(following) == ":" and following.mentions:
             continue  # ("Veg on both sides of the maize: onions to the west ..., cabbages
@@ -269,6 +271,13 @@ def apply_each_side(clauses: Sequence[Clause]) -> None:
                 at = next(i for i, r in enumerate(heading.refinements) if r is member)
                 heading.refinements.insert(at, member)
                 member.count = 2
+
+
+def _a_headland(item: Item) -> bool:
+    """Whether the item is a measure of a field's headland ("a 5 m headland")."""
+    return item.role == "geometry" and any(
+        match.key == "headland_m" for match in item.data.get("geometry", ())
+    )
 
 
 def raise_conflicts(clauses: Sequence[Clause]) -> None:

@@ -222,6 +222,13 @@ def spread_counted_totals(clauses: Sequence[Clause], mentions: list[Mention]) ->
         ):
             continue
         named = [m for m in mentions if m is not total and m.clause < total.clause]
+        if (heading := _heading_of_the_rest(clauses, named, total)) is not None:
+            # "some veggies: a field of carrots & whatever else u want, at least 3 fields
+            # total": the fields the list leaves are the heading's kind
+            heading.count = total.count - (len(named) - 1)
+            heading.implied_count = False
+            lend_and_drop(clauses, total, named)
+            return named
         if (
             len(named) < 2
             # (a plural's count only implied, "some fruit trees and some veggies, 4 or 5
@@ -241,6 +248,28 @@ def spread_counted_totals(clauses: Sequence[Clause], mentions: list[Mention]) ->
         lend_and_drop(clauses, total, named)
         return named
     return mentions
+
+
+def _heading_of_the_rest(
+    clauses: Sequence[Clause], named: Sequence[Mention], total: Mention
+) -> Mention | None:
+    """The group of crops ("some veggies") that heads, before a colon, single fields of
+    named crops and no more, when the total after them counts more fields than they
+    name: it stands for the fields the list leaves; None otherwise."""
+    if len(named) < 2 or total.count is None or total.count <= len(named):
+        return None
+    heading, listed = named[0], named[1:]
+    if (
+        heading.has_crop
+        or not names_a_group(heading)
+        or heading.refinements
+        or (heading.count is not None and not heading.implied_count)
+        or heading.clause + 1 >= len(clauses)
+        or link_norm(clauses[heading.clause + 1]) != ":"
+        or not all(m.has_crop and (m.count or 1) == 1 and not m.refinements for m in listed)
+    ):
+        return None
+    return heading
 
 
 def _counted_one(mention: Mention) -> bool:
