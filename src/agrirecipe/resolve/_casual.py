@@ -19,6 +19,7 @@ import yaml
 
 from agrirecipe.resolve._geometry import number_words
 from agrirecipe.resolve._lexicon import DATA_DIR, Item, vocabulary
+from agrirecipe.resolve._pictures import read_pictures
 from agrirecipe.resolve._shares import read_shares
 
 __all__ = ["count_said_after_crop", "end_reciprocals", "expand_casual"]
@@ -40,44 +41,6 @@ def _lower_forms() -> tuple[re.Pattern[str], dict[str, str]]:
     forms = {str(k): str(v) for k, v in data.get("lower_forms", {}).items()}
     alternation = "|".join(re.escape(form) for form in sorted(forms, key=len, reverse=True))
     return re.compile(rf"(?<=\s)(?:{alternation})(?=\s)"), forms
-
-
-@functools.cache
-def _crop_pictures() -> re.Pattern[str]:
-    data: dict[str, Any] = yaml.safe_load((DATA_DIR / "casual.yaml").read_text("utf-8"))
-    # (with the variation selector that asks for the colour form: "🌶️")
-    return re.compile(f"[{re.escape(str(data['crop_pictures']))}]\ufe0f?")
-
-
-@functools.cache
-def _picture_crops() -> dict[str, str]:
-    data: dict[str, Any] = yaml.safe_load((DATA_DIR / "casual.yaml").read_text("utf-8"))
-    return {str(k): str(v) for k, v in data["picture_crops"].items()}
-
-
-def _pictured_crop(text: str, match: re.Match[str]) -> str:
-    """What a crop picture reads as: its crop's word beside a variety name that is also an
-    everyday word ("🍓 sonata"), when no word beside it names a crop; else a space."""
-    crop = _picture_crops().get(match.group(0)[0])
-    if crop is None:
-        return " "
-    before = _WORDS_BEFORE.search(_crop_pictures().sub(" ", text[: match.start()]))
-    after = _WORDS_AFTER.match(_crop_pictures().sub(" ", text[match.end() :]))
-    beside = [m.group("word").lower() for m in (before, after) if m is not None]
-    weak = {str(w) for w in vocabulary()["weak_variety_words"]}
-    stem = crop[:-1] if crop.endswith("y") else crop
-    if any(word in weak for word in beside) and not any(
-        word.startswith(stem) or word in _CROP_WORDS for word in beside
-    ):
-        return f" {crop} "
-    return " "
-
-
-#: The word right before / after a place in the text.
-_WORDS_BEFORE = re.compile(r"(?P<word>[A-Za-z]+)\s*$")
-_WORDS_AFTER = re.compile(r"\s*(?P<word>[A-Za-z]+)")
-#: Words for crops beside a picture that its crop's word would repeat ("strawbs 🍓").
-_CROP_WORDS = frozenset({"strawbs", "strawberries", "berries", "toms", "spuds", "corn", "chillies"})
 
 
 #: "with a few chillies mixed in", "with the odd lettuce dotted among them".
@@ -119,9 +82,7 @@ def expand_casual(prompt: str) -> str:
         return f" {forms[key]} " if forms[key] else " "
 
     lower, lower_forms = _lower_forms()
-    # "a straw🍓berry field": an emoji inside a word is not part of it
-    text = _EMOJI_IN_WORD.sub("", prompt)
-    text = _crop_pictures().sub(lambda m: _pictured_crop(text, m), text)
+    text = read_pictures(prompt)
     # "apples w of the pears", "onions just S of it": a compass letter before "of"
     text = _LETTER_SIDE.sub(lambda m: f"{_LETTER_SIDES[m.group('side').lower()]} of", text)
     # "iceburg lettuce on the W side & savoy cabage on the E side": a compass letter as
@@ -424,9 +385,6 @@ _CAB = re.compile(
 )
 _BOTH_AFTER = re.compile(
     r",(?P<said>(?:\s*[^,;.:!?()]+,){1,3})\s*(?i:both)(?:\s+(?i:of)\s+(?i:them))?\s*(?=[.;!?]|$)"
-)
-_EMOJI_IN_WORD = re.compile(
-    "(?<=[A-Za-z])[\U0001f000-\U0001faff\u2600-\u27bf\ufe0f\u200d]+(?=[A-Za-z])"
 )
 _NUMBERED_ITEM = re.compile(r"(?<![\w.,(])\d{1,2}\)\s+(?=[A-Za-z])")
 _COMPASS = r"(?i:north|south|east|west)"

@@ -16,12 +16,24 @@ import itertools
 import math
 import re
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass, replace
+from dataclasses import replace
 from typing import Any
 
 import yaml
 
 from agrirecipe._errors import PromptError
+from agrirecipe.resolve._geometry_lists import counted_alike, respectively
+from agrirecipe.resolve._geometry_values import (
+    COUNTS,
+    MINUS,
+    GeometryMatch,
+    Pattern,
+    Tables,
+    check,
+    negated,
+    raw_text,
+    read_number,
+)
 from agrirecipe.resolve._intent import RowSpec
 from agrirecipe.resolve._lexicon import DATA_DIR, Token, singular, tokenize, vocabulary
 
@@ -35,56 +47,9 @@ __all__ = [
     "strip_geometry",
 ]
 
-# Keys whose value is a whole number.
-_COUNTS = frozenset({"rows", "beds", "rows_per_bed", "plant_count", "plants_per_row"})
-_MINUS = frozenset({"-", "−", "–"})
 # How far (in words, punctuation not counted) a row word may be from "80 m long" for it
 # to be the rows' length.
 _NEAR_ROWS = 10
-
-
-@dataclass(frozen=True, slots=True)
-class GeometryMatch:
-    """One stated geometry value and the tokens it was read from (``first``..``last`` - 1)."""
-
-    key: str
-    value: float
-    first: int
-    last: int
-    text: str
-    #: "3.4 m and 3.5 m row spacing respectively": this value's place among the values
-    #: listed (index, how many, the first token of the list), each for one of the fields
-    #: listed before, in order.
-    share: tuple[int, int, int] | None = None
-
-
-@dataclass(frozen=True, slots=True)
-class _Pattern:
-    key: str
-    regex: re.Pattern[str]
-    scale: float
-    invert: bool
-    min_m: float | None
-    max_m: float | None
-    min_n: float | None
-    near_rows: bool
-    #: The largest count the words may say ("3 rows on 40-inch beds": rows on each bed).
-    max_n: float | None = None
-    #: A second value in the same words ("5 rows x 30 trees", "3.5 x 1 m spacing"),
-    #: read from the groups n2 / unit2.
-    key2: str | None = None
-    #: The first number borrows the second's unit ("3.5 x 1 m").
-    same_unit: bool = False
-    #: A value the words stand for without a number ("a row of" is one row).
-    constant: float | None = None
-    constant2: float | None = None
-    #: The longest sensible second length ("6 beds on 1.52 m centres": a bed is at most 3 m).
-    max2_m: float | None = None
-    min2_m: float | None = None
-    #: The second value is the first ("3 m square spacing": 3 m both ways).
-    same_value: bool = False
-    #: What the second number is multiplied by ("30 rows at 30 in": inches to metres).
-    scale2: float = 1.0
 
 
 def _alternatives(words: Iterable[str]) -> str:
@@ -99,26 +64,13 @@ def _file() -> dict[str, Any]:
     return data
 
 
-@dataclass(frozen=True, slots=True)
-class _Tables:
-    patterns: tuple[_Pattern, ...]
-    number_words: dict[str, float]
-    fractions: dict[str, float]
-    units: dict[str, float]
-    areas: dict[str, float]
-    directions: dict[str, float]
-    row_words: frozenset[str]
-    #: Measures of things a recipe does not hold (bed tops, paths, sowing depth).
-    unused: tuple[re.Pattern[str], ...] = ()
-
-
 def number_words() -> dict[str, float]:
     """Numbers said in words ("twelve", "forty"), from geometry.yaml."""
     return _tables().number_words
 
 
 @functools.lru_cache(maxsize=1)
-def _tables() -> _Tables:
+def _tables() -> Tables:
     data = _file()
     words = data["words"]
     number_words: dict[str, float] = {str(k): float(v) for k, v in words["number_words"].items()}
@@ -155,10 +107,10 @@ def _tables() -> _Tables:
             source = source.replace(name, regex)
         return re.compile(rf"(?<![\w.]){source}")
 
-    patterns: list[_Pattern] = []
+    patterns: list[Pattern] = []
     for entry in data["patterns"]:
         patterns.append(
-            _Pattern(
+            Pattern(
                 key=str(entry["key"]),
                 regex=compiled(str(entry["re"])),
                 scale=float(entry.get("scale", 1.0)),
@@ -178,7 +130,7 @@ def _tables() -> _Tables:
                 scale2=float(entry.get("scale2", 1.0)),
             )
         )
-    return _Tables(
+    return Tables(
         patterns=tuple(patterns),
         number_words=number_words,
         fractions=fractions,
@@ -211,6 +163,9 @@ def geometry_nouns() -> frozenset[str]:
     """The bare words for rows, beds and plants ("ridges", "rows", "trees")."""
     words = _file()["words"]
     return frozenset(str(w) for key in ("rows", "beds", "plants") for w in words[key])
+
+
+_PLURAL_ROWS = re.compile(r"\b(?:one|1) (?:rows|lines|drills|beds|ridges)\b")
 
 
 def find_geometry(
@@ -265,7 +220,7 @@ def find_geometry(
                 continue  # ended inside a token
             first = token_at(match.start())
             last = token_at(match.end() - 1) + 1
-            if tokens[first].raw in _MINUS and first + 1 < last and not _negated(tokens, first + 1):
+            if tokens[first].raw in MINUS and first + 1 < last and not negated(tokens, first + 1):
                 first += 1  # ("Padrón - 6 beds each": a dash between words, no minus sign)
             if any(claimed[first:last]):
                 continue
@@ -306,207 +261,26 @@ def find_geometry(
                     )
                 if second is None:
                     continue
-                if match.groupdict().get("n2") and _negated(tokens, token_at(match.start("n2"))):
+                if match.groupdict().get("n2") and negated(tokens, token_at(match.start("n2"))):
                     second = -second  # "10 beds at -1.5 m bed spacing"
-            raw = _raw(tokens, first, last)
+            raw = raw_text(tokens, first, last)
             # "-3 rows", "a row spacing of -75 cm": a minus sign on the number
             number_at = token_at(match.start("n")) if match.groupdict().get("n") else first
-            if _negated(tokens, number_at):
+            if negated(tokens, number_at):
                 value = -value
                 if number_at == first:
                     raw = tokens[first - 1].raw + raw
-            _check(pattern.key, value, raw)
+            check(pattern.key, value, raw)
             found.append(GeometryMatch(pattern.key, value, first, last, raw))
             if pattern.key2 is not None and second is not None:
-                _check(pattern.key2, second, raw)
+                check(pattern.key2, second, raw)
                 found.append(GeometryMatch(pattern.key2, second, first, last, raw))
             for index in range(first, last):
                 claimed[index] = True
     found.sort(key=lambda m: m.first)
-    found = _respectively(tokens, found, claimed, tables)
-    alike = _counted_alike(tokens, found, claimed, tables)
+    found = respectively(tokens, found, claimed, tables)
+    alike = counted_alike(tokens, found, claimed, tables)
     return sorted([*found, *alike], key=lambda m: m.first) if alike else found
-
-
-#: Counts of rows or beds that the counts listed after them repeat ("four beds of
-#: lettuce, four of onions").
-_ALIKE_KEYS = frozenset({"rows", "beds"})
-_OF_THOSE = frozenset({"them", "those", "these", "which", "it", "the", "each"})
-#: How many words of a crop's name may stand between "of" and the next member.
-_NAME_WORDS = 4
-
-
-def _counted_alike(
-    tokens: Sequence[Token], found: Sequence[GeometryMatch], claimed: list[bool], tables: _Tables
-) -> list[GeometryMatch]:
-    """'four beds of lettuce, four of onions, four of carrots', '10 rows of maize and 12
-    of soybean': a bare count "of" a crop listed after a count of rows or beds "of" a
-    crop counts the same thing (not fields)."""
-    alike: list[GeometryMatch] = []
-    for match in found:
-        if match.key not in _ALIKE_KEYS or match.share is not None:
-            continue
-        cursor = match.last
-        while cursor < len(tokens) and tokens[cursor].norm == "of":
-            join = next(
-                (
-                    at
-                    for at in range(cursor + 2, min(cursor + 2 + _NAME_WORDS, len(tokens)))
-                    if tokens[at].norm in _LIST_JOINS or claimed[at]
-                ),
-                None,
-            )
-            if join is None or claimed[join] or join + 3 > len(tokens):
-                break
-            number_at = join + 1
-            if (
-                claimed[number_at]
-                or tokens[number_at + 1].norm != "of"
-                # (not "10 rows of maize and 2 of them weedy": some of the rows said)
-                or (number_at + 2 < len(tokens) and tokens[number_at + 2].norm in _OF_THOSE)
-            ):
-                break
-            try:
-                value = _number(tokens[number_at].norm, tables.number_words)
-            except ValueError:
-                break
-            raw = _raw(tokens, number_at, number_at + 1)
-            _check(match.key, value, raw)
-            alike.append(GeometryMatch(match.key, value, number_at, number_at + 1, raw))
-            claimed[number_at] = True
-            cursor = number_at + 1
-    return alike
-
-
-_PLURAL_ROWS = re.compile(r"\b(?:one|1) (?:rows|lines|drills|beds|ridges)\b")
-
-#: Words that join the values of a "respectively" list ("3.4 m and 3.5 m", "36, 40").
-_LIST_JOINS = frozenset({"and", ",", "&"})
-
-
-def _listed_after(
-    tokens: Sequence[Token], match: GeometryMatch, claimed: list[bool], tables: _Tables
-) -> list[GeometryMatch]:
-    """The values listed after a measure up to "respectively" ("rows 15 cm and 76 cm
-    respectively"), each read as that measure; [] when no "respectively" ends them."""
-    unit = next((t.norm for t in tokens[match.first : match.last] if t.norm in tables.units), None)
-    listed: list[GeometryMatch] = []
-    cursor = match.last
-    while cursor + 1 < len(tokens) and tokens[cursor].norm in _LIST_JOINS:
-        number_at = cursor + 1
-        try:
-            number = _number(tokens[number_at].norm, tables.number_words)
-        except ValueError:
-            return []
-        end = number_at + 1
-        said_unit = unit
-        if end < len(tokens) and tokens[end].norm in tables.units:
-            said_unit, end = tokens[end].norm, end + 1
-        if any(claimed[number_at:end]) or (unit is None) != (said_unit is None):
-            return []
-        value = round(number * (tables.units[said_unit] if said_unit else 1.0), 9)
-        listed.append(GeometryMatch(match.key, value, number_at, end, _raw(tokens, number_at, end)))
-        cursor = end
-    if not listed or cursor >= len(tokens) or tokens[cursor].norm != "respectively":
-        return []
-    for value_match in listed:  # (only a list "respectively" ends is that measure)
-        _check(match.key, value_match.value, value_match.text)
-    last = listed[-1]
-    listed[-1] = replace(last, last=cursor + 1, text=_raw(tokens, last.first, cursor + 1))
-    return listed
-
-
-def _respectively(
-    tokens: Sequence[Token],
-    found: list[GeometryMatch],
-    claimed: list[bool],
-    tables: _Tables,
-) -> list[GeometryMatch]:
-    """'3.4 m and 3.5 m row spacing respectively', '36 and 40 rows respectively': the
-    values listed before a measure that "respectively" follows are the same measure,
-    one for each field listed before them, in order (the reader gives them out)."""
-    result: list[GeometryMatch] = []
-    for match in found:
-        ends = match.last < len(tokens) and tokens[match.last].norm == "respectively"
-        if match.share is None and not ends:
-            after = _listed_after(tokens, match, claimed, tables)
-            if after:  # "rows 15 cm and 76 cm respectively"
-                count, start = len(after) + 1, match.first
-                result.append(replace(match, share=(0, count, start)))
-                result.extend(
-                    replace(value, share=(index + 1, count, start))
-                    for index, value in enumerate(after)
-                )
-                continue
-        if match.share is not None:
-            result.append(match)
-            continue
-        listed = _listed_before(tokens, match, claimed, tables)
-        # "60,000, 80,000 and 100,000 plants/ha": three or more values listed with commas
-        # share the measure out like "respectively" does
-        listing = (
-            len(listed) >= 2
-            and any(tokens[m.last].norm == "," for m in listed)
-            and (listed[0].first == 0 or tokens[listed[0].first - 1].norm not in _RANGE_WORDS)
-        )
-        if not listed or not (ends or listing):
-            result.append(match)
-            continue
-        for listed_match in listed:
-            _check(match.key, listed_match.value, listed_match.text)
-        count, start = len(listed) + 1, listed[0].first
-        for index, listed_match in enumerate(listed):
-            result.append(replace(listed_match, share=(index, count, start)))
-        last = match.last + 1 if ends else match.last  # "respectively" is read with it
-        result.append(
-            replace(
-                match,
-                last=last,
-                text=_raw(tokens, match.first, last),
-                share=(count - 1, count, start),
-            )
-        )
-    result.sort(key=lambda m: m.first)
-    return result
-
-
-#: Words before two values that make them a range, not a list ("between 3 and 4 m").
-_RANGE_WORDS = frozenset({"between", "from"})
-
-
-def _listed_before(
-    tokens: Sequence[Token], match: GeometryMatch, claimed: list[bool], tables: _Tables
-) -> list[GeometryMatch]:
-    """The values listed right before a measure ("3.4 m and" / "36, 40 and"), each read
-    as that measure (unchecked), in order."""
-    unit = next((t.norm for t in tokens[match.first : match.last] if t.norm in tables.units), None)
-    listed: list[GeometryMatch] = []
-    cursor = match.first
-    while cursor >= 2 and tokens[cursor - 1].norm in _LIST_JOINS:
-        # "3.4 m and", "3.4 and" (the unit of the measure), "36 and" (a count)
-        has_unit = tokens[cursor - 2].norm in tables.units and unit is not None
-        number_at = cursor - 3 if has_unit else cursor - 2
-        if number_at < 0 or any(claimed[number_at : cursor - 1]):
-            break
-        try:
-            number = _number(tokens[number_at].norm, tables.number_words)
-        except ValueError:
-            break
-        scale = tables.units[tokens[cursor - 2].norm if has_unit else unit] if unit else 1.0
-        raw = _raw(tokens, number_at, cursor - 1)
-        value = round(number * scale, 9)
-        listed.insert(0, GeometryMatch(match.key, value, number_at, cursor - 1, raw))
-        cursor = number_at
-    return listed
-
-
-def _negated(tokens: Sequence[Token], index: int) -> bool:
-    """Whether a minus sign is written onto the number at ``tokens[index]`` ("-75")."""
-    return (
-        index > 0
-        and tokens[index - 1].raw in _MINUS
-        and tokens[index - 1].end == tokens[index].start
-    )
 
 
 def _named_elsewhere(tokens: Sequence[Token], first: int, last: int, plants: str) -> bool:
@@ -516,23 +290,7 @@ def _named_elsewhere(tokens: Sequence[Token], first: int, last: int, plants: str
     return any(t.norm.startswith(word) for i, t in enumerate(tokens) if not first <= i < last)
 
 
-def _raw(tokens: Sequence[Token], first: int, last: int) -> str:
-    """The words of ``tokens[first:last]`` as written ("-75 cm", "76 cm apart")."""
-    parts: list[str] = []
-    for index in range(first, last):
-        if index > first and tokens[index].start > tokens[index - 1].end:
-            parts.append(" ")
-        parts.append(tokens[index].raw)
-    return "".join(parts)
-
-
-def _number(text: str, number_words: dict[str, float]) -> float:
-    if text in number_words:
-        return number_words[text]
-    return float(text)
-
-
-def _value(pattern: _Pattern, groups: dict[str, str | None], tables: _Tables) -> float | None:
+def _value(pattern: Pattern, groups: dict[str, str | None], tables: Tables) -> float | None:
     if pattern.constant is not None:
         return float(pattern.constant)
     if pattern.key == "row_bearing_deg" and groups.get("a") is not None:
@@ -545,7 +303,9 @@ def _value(pattern: _Pattern, groups: dict[str, str | None], tables: _Tables) ->
         return a % 180.0
     if groups.get("twin") is not None:
         return 2.0
-    value = _number(str(groups["n"]), {**tables.number_words, **tables.fractions}) * pattern.scale
+    value = (
+        read_number(str(groups["n"]), {**tables.number_words, **tables.fractions}) * pattern.scale
+    )
     if groups.get("unit") is not None:
         metres = value * tables.units[str(groups["unit"])]
         if pattern.max_m is not None and metres > pattern.max_m:
@@ -570,24 +330,6 @@ def _value(pattern: _Pattern, groups: dict[str, str | None], tables: _Tables) ->
     if pattern.key == "row_bearing_deg":
         value = value % 180.0
     return round(value, 9) if pattern.scale != 1.0 else value
-
-
-def _check(key: str, value: float, raw: str) -> None:
-    """A stated geometry must be a positive finite number (a count a whole one)."""
-    if key == "row_bearing_deg" and math.isfinite(value):
-        return
-    if not math.isfinite(value) or value <= 0:
-        raise PromptError(
-            f"{raw!r}: a field's geometry needs a positive number, got {value:g}",
-            stage="resolve",
-            hint="give positive counts and distances, e.g. '10 rows, 76 cm apart'",
-        )
-    if key in _COUNTS and value != int(value):
-        raise PromptError(
-            f"{raw!r}: {key.replace('_', ' ')} must be a whole number, got {value:g}",
-            stage="resolve",
-            hint="count rows, beds and plants in whole numbers",
-        )
 
 
 def row_spec(items: Sequence[Any], text: str) -> RowSpec | None:
@@ -647,9 +389,9 @@ def merge_geometry(matches: Sequence[GeometryMatch], text: str) -> RowSpec | Non
         # "One row of 40 Bing cherry trees, 2.5 m apart": of one row, what stands apart
         # is the trees in it
         values["in_row_spacing_m"] = values.pop("row_spacing_m")
-    counts = {k: int(v) for k, v in values.items() if k in _COUNTS}
+    counts = {k: int(v) for k, v in values.items() if k in COUNTS}
     plants_per_row = counts.pop("plants_per_row", None)
-    lengths = {k: v for k, v in values.items() if k not in _COUNTS}
+    lengths = {k: v for k, v in values.items() if k not in COUNTS}
     return RowSpec(**counts, **lengths, plants_per_row=plants_per_row, text="; ".join(words))
 
 

@@ -135,6 +135,7 @@ from agrirecipe.resolve._neighbours import (
     place_flanks,
     place_neighbouring_plots,
 )
+from agrirecipe.resolve._orders import complete_orders, drop_placed_neighbours
 from agrirecipe.resolve._placements import predicate_of_the_placed
 from agrirecipe.resolve._plots_of_the_crop import count_the_crop
 from agrirecipe.resolve._purposes import purpose_diseases
@@ -185,8 +186,6 @@ from agrirecipe.resolve._titles import drop_titles
 from agrirecipe.resolve._weak_varieties import promote_weak_varieties
 from agrirecipe.resolve._words import read_words
 from agrirecipe.resolve._zones import (
-    complete_orders,
-    drop_placed_neighbours,
     find_zones,
     lone_side,
     zone_owners,

@@ -61,7 +61,6 @@ from agrirecipe.resolve._rows import (
     ordinal_pair,
     side_by_side,
     surrounded,
-    then_chain,
 )
 from agrirecipe.resolve._scenery_links import (
     between_scenery,
@@ -70,6 +69,7 @@ from agrirecipe.resolve._scenery_links import (
     scenery_placed_by_a_field,
 )
 from agrirecipe.resolve._structure import strong_crops
+from agrirecipe.resolve._then_chain import then_chain
 
 __all__ = ["read_relations"]
 
