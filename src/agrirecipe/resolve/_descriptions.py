@@ -187,9 +187,12 @@ def dissolve_plant_parts(clauses: Sequence[Clause], crop_categories: dict[str, s
                     earlier.category = mention.category
         crops = strong_crops(mention)
         for head in mention.heads:
+            # ("the trees are just leafing out": the plants of the tree crops)
+            options = head.data["value"]["options"] if head.role == "plot" else ()
             head.role = "filler"
-            if crops:
-                head.data["describes"] = crops  # "Half the vines show mildew": the grapes
+            if crops or options:
+                # "Half the vines show mildew": the grapes
+                head.data["describes"] = crops or set(options)
         clause.loose = [*clause.loose, *(i for i in mention.items if i.role != "distinct")]
         clause.mentions = []
         dissolved.append(mention.text)

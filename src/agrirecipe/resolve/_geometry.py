@@ -355,6 +355,7 @@ _ROW_WORDS = frozenset({"row", "rows", "line", "lines", "drill", "drills", "betw
 def merge_geometry(matches: Sequence[GeometryMatch], text: str) -> RowSpec | None:
     """One field's geometry matches as a :class:`RowSpec` (None when there are none)."""
     values: dict[str, float] = {}
+    said: dict[str, str] = {}  # the words each value was read from
     words: list[str] = []
     for match in matches:
         previous = values.get(match.key)
@@ -369,6 +370,18 @@ def merge_geometry(matches: Sequence[GeometryMatch], text: str) -> RowSpec | Non
             # rows spaced already, a bare "apart" is how far apart the plants stand in the row
             match = replace(match, key="in_row_spacing_m")
             previous = None
+        elif (
+            match.key == "row_spacing_m"
+            and previous is not None
+            and "in_row_spacing_m" not in values
+            and match.value > previous
+            and not _bare_apart(match.text)
+            and _bare_apart(said[match.key])
+        ):
+            # "planted 6 feet apart in rows 10 feet apart": the bare "apart" said first is
+            # how far apart the plants stand, once the rows' own spacing is said
+            values["in_row_spacing_m"] = values.pop("row_spacing_m")
+            previous = None
         if previous is not None and not math.isclose(previous, match.value, rel_tol=1e-9):
             raise PromptError(
                 f"{text!r} states {match.key.replace('_', ' ')} twice ({previous:g} and "
@@ -377,6 +390,7 @@ def merge_geometry(matches: Sequence[GeometryMatch], text: str) -> RowSpec | Non
                 hint="state each row measure once per field",
             )
         values[match.key] = match.value
+        said[match.key] = match.text
         words.append(match.text)
     if not values:
         return None

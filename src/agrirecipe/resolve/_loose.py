@@ -227,7 +227,9 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
             targets = [last_new(before)]
         elif continues_a_description(clauses, position):
             # "the oranges colouring up, the bananas still small and just planted"
-            targets = [clauses[position - 1].mentions[-1]]
+            # ("the tomatoes are red and ready, the trees are just leafing out": the plants
+            # of another crop named before are that crop's)
+            targets = described_crop(clause, before) or [clauses[position - 1].mentions[-1]]
         elif any(i.data.get("list_plots") for i in clause.items):
             # "carrots (...) and potatoes (...) in 25 x 60 m plots": the list's plots
             targets = sentence_fields(clauses, position)

@@ -471,6 +471,8 @@ def _same_keys(word: Item) -> tuple[str, ...]:
     # ("2 beds of the same width and row count": the rows on each bed)
     if "count" in norm or "number of" in norm or "per bed" in norm:
         return ("rows", "rows_per_bed", *(_SPACINGS if "spacing" in norm else ()))
+    if "row width" in norm:  # "on the same row width": the rows' spacing
+        return ("row_spacing_m",)
     if "width" in norm:  # "10 beds of the same width", "the same bed width"
         return ("bed_width_m",)
     if direction:

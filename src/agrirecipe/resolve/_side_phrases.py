@@ -203,6 +203,13 @@ def _placed_by_a_thing(match: re.Match[str]) -> str:
     )
 
 
+_SHARES_ITS_SIDE = re.compile(
+    r"\b(?P<it>(?i:it|this one|that one))\s+(?i:shares|borders)\s+(?i:its)\s+"
+    r"(?P<side>(?i:north|south|east|west)(?:(?i:ern))?)\s+"
+    r"(?i:edge|side|border|boundary|fence|hedge)\s+(?i:with)\s+"
+)
+
+
 def place_sides(text: str) -> str:
     """``text`` with "X with A on one side and B on the other" written "X between A and
     B", "..., danvers one east" written "..., danvers one east of the other", "the
@@ -212,6 +219,8 @@ def place_sides(text: str) -> str:
     # "directly below it, so south of the maize, a field of cabbages": the side said
     # again in compass words
     text = _SAID_AGAIN.sub(r"\g<again>", text)
+    # "It shares its north edge with 1 ha of cherries": north of it is what it shares it with
+    text = _SHARES_ITS_SIDE.sub(lambda m: f"{m.group('side')} of {m.group('it')}, ", text)
     if _A_MAP.search(text):
         text = _UNDER_IT.sub(r"below \g<it>", text)
     # (the same thing on two sides: "East of the barn: ... West of the barn: ...")

@@ -116,6 +116,10 @@ def find_zones(tokens: Sequence[Token], claimed: Sequence[bool] = ()) -> list[Zo
     found, taken = _zone_matches(tokens, claimed)
     found = _as_seen(found, tokens)
     found = _paired_sides(found, tokens)
+    if not any(m.zone == "near" for m in found):
+        # ("the Kordia cherries on the far side of the pears", "... carrots on the far
+        # side": "the far side" is a depth only opposite a near side said too)
+        found = [m for m in found if not _a_far_side(m, tokens)]
     compass = any(m.zone in _PLACES and "depth" not in _PLACES[m.zone] for m in found)
     # "looking east ...: potatoes closest to me": the compass places, not the depth; the
     # depth words stay zone words ("potatoes closest to the camera at the bottom"), read
@@ -129,6 +133,12 @@ def find_zones(tokens: Sequence[Token], claimed: Sequence[bool] = ()) -> list[Zo
     if len(sides) < 2 and not (sides and any(m.zone == "middle" for m in found)):
         return []
     return sorted(found, key=lambda m: m.first)
+
+
+def _a_far_side(match: ZoneMatch, tokens: Sequence[Token]) -> bool:
+    """Whether the zone match is "(on) the far side"."""
+    words = [t.norm for t in tokens[match.first : match.last]]
+    return match.zone == "far" and words[-3:] == ["the", "far", "side"]
 
 
 @functools.cache
