@@ -103,8 +103,10 @@ def _past_the_last(clauses: Sequence[Clause], position: int, last: Mention) -> b
         and position >= 2
         and link_norm(clauses[position - 1]) == "and"
         and not clauses[position - 1].items
+        # (no other field named since; identity, not equality: comparing mentions field
+        # by field is slow)
         and not any(
-            c.mentions or c.refinement not in (None, last)
+            c.mentions or (c.refinement is not None and c.refinement is not last)
             for c in clauses[last.clause + 1 : position]
         )
     )
