@@ -24,7 +24,9 @@ def read_pictures(text: str) -> str:
     """``text`` with its emoji inside words dropped and its crop pictures read."""
     # "a straw🍓berry field": an emoji inside a word is not part of it
     text = _EMOJI_IN_WORD.sub("", text)
-    return _crop_pictures().sub(lambda m: _pictured_crop(text, m), text)
+    # the text with every picture blanked out, once, at the same places
+    plain = _crop_pictures().sub(lambda m: " " * len(m.group(0)), text)
+    return _crop_pictures().sub(lambda m: _pictured_crop(plain, m), text)
 
 
 _EMOJI_IN_WORD = re.compile(
@@ -45,22 +47,29 @@ def _picture_crops() -> dict[str, str]:
     return {str(k): str(v) for k, v in data["picture_crops"].items()}
 
 
-def _pictured_crop(text: str, match: re.Match[str]) -> str:
+def _pictured_crop(plain: str, match: re.Match[str]) -> str:
     """What a crop picture reads as: its crop's word beside a variety name that is also an
-    everyday word ("🍓 sonata"), when no word beside it names a crop; else a space."""
+    everyday word ("🍓 sonata"), when no word beside it names a crop; else a space.
+    ``plain`` is the text with its pictures blanked out."""
     crop = _picture_crops().get(match.group(0)[0])
     if crop is None:
         return " "
-    before = _WORDS_BEFORE.search(_crop_pictures().sub(" ", text[: match.start()]))
-    after = _WORDS_AFTER.match(_crop_pictures().sub(" ", text[match.end() :]))
+    before = _WORDS_BEFORE.search(plain, 0, match.start())
+    after = _WORDS_AFTER.match(plain, match.end())
     beside = [m.group("word").lower() for m in (before, after) if m is not None]
-    weak = {str(w) for w in vocabulary()["weak_variety_words"]}
+    weak = _weak_names()
     stem = crop[:-1] if crop.endswith("y") else crop
     if any(word in weak for word in beside) and not any(
         word.startswith(stem) or word in _CROP_WORDS for word in beside
     ):
         return f" {crop} "
     return " "
+
+
+@functools.cache
+def _weak_names() -> frozenset[str]:
+    """Variety names that are also everyday words ("sonata", "cherry")."""
+    return frozenset(str(w) for w in vocabulary()["weak_variety_words"])
 
 
 #: The word right before / after a place in the text.
