@@ -220,6 +220,8 @@ def test_a_field_named_again_after_a_side_is_not_placed_by_it() -> None:
         "north, the cherry trees netted against birds, cyclists on the path."
     ).recipe
     strawberries, cherries = recipe.fields
-    assert ("north_of", cherries.id, (strawberries.id,)) in {
-        (r.kind, r.subject, r.objects) for r in recipe.relations
+    # (either way round: the cherries north of the strawberries across the path)
+    assert {(r.kind, r.subject, r.objects) for r in recipe.relations} & {
+        ("north_of", cherries.id, (strawberries.id,)),
+        ("south_of", strawberries.id, (cherries.id,)),
     }

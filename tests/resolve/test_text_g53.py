@@ -114,3 +114,105 @@ def test_a_month_said_around_or_after_a_filler(prompt: str, season: str) -> None
     assert {s for _, _, s in _fields(prompt)} == {season}
     # (an everyday "may" is still no month)
     assert {s for _, _, s in _fields("I would like may be some apples")} == {"Summer"}
+
+
+def _variety_relations(prompt: str) -> set[tuple[str, str | None, tuple[str | None, ...]]]:
+    recipe = generate(prompt).recipe
+    variety = {f.id: f.variety for f in recipe.fields}
+    return {
+        (r.kind, variety[r.subject], tuple(variety[o] for o in r.objects)) for r in recipe.relations
+    }
+
+
+def test_a_direction_closing_its_part_places_the_field_of_that_part() -> None:
+    prompt = (
+        "Onion sets trial for the vision team. Red Baron plot, 5 m x 20 m, to the north; "
+        "Sturon plot of the same size to the south of it. Rows 30 cm apart, bulbs every "
+        "10 cm, in both."
+    )
+    relations = _variety_relations(prompt)
+    assert ("north_of", "Red Baron", ("Sturon",)) in relations or (
+        "south_of",
+        "Sturon",
+        ("Red Baron",),
+    ) in relations
+    assert ("north_of", "Sturon", ("Red Baron",)) not in relations
+    assert [f.geometry.size_m for f in generate(prompt).recipe.fields] == [(5.0, 20.0), (5.0, 20.0)]
+
+
+def test_measures_going_on_after_a_sentence_that_opens_with_the_beds() -> None:
+    recipe = generate(
+        "Sonata: 10 beds. Albion: 6 beds. Beds on 1.2 m centres, 2 rows a bed, 25 cm plant "
+        "spacing. Albion plot directly north of Sonata."
+    ).recipe
+    assert [(f.variety, f.bed_count, f.agronomy.in_row_spacing_m) for f in recipe.fields] == [
+        ("Sonata", 10, 0.25),
+        ("Albion", 6, 0.25),
+    ]
+
+
+def test_a_crop_named_again_for_both_fields_keeps_what_follows_for_both() -> None:
+    recipe = generate(
+        "Camera test with cayenne chillies and California Wonder bell peppers next to each "
+        "other. Beds 1.5 m, plants 45 cm apart, peppers fruiting and ripe."
+    ).recipe
+    assert [f.stage for f in recipe.fields] == ["Maturation", "Maturation"]
+
+
+def test_the_vines_said_with_a_verb_are_every_vineyard_named() -> None:
+    both = generate(
+        "Colchagua valley, Chile: Cabernet in the north block, Chardonnay in the south "
+        "block, and the vines are flowering in November."
+    ).recipe
+    assert [f.stage for f in both.fields] == ["Reproductive", "Reproductive"]
+    # (half of them, or the vines of one block, are still one field's)
+    half = generate(
+        "Cabernet in the north block, Chardonnay in the south block. Half the vines show mildew."
+    ).recipe
+    assert [f.health for f in half.fields] == ["Healthy", "Ill"]
+
+
+def test_a_gap_between_the_two_fields_sets_them_side_by_side() -> None:
+    relations = _variety_relations(
+        "durum wheat and dinkel strips, 3 x 50 m each, 15 cm drill rows, half a metre gap "
+        "between them"
+    )
+    assert relations == {("next_to", "Durum", ("Spelt",))}
+
+
+def test_backs_onto_is_next_to(crop_relations: Callable[[str], NamedRelations]) -> None:
+    relations = crop_relations(
+        "The Bartlett pear block backs straight onto a field of Golden Acre cabbages."
+    )
+    assert relations == {("next_to", "Pear", ("Cabbage",))}
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "fruit trees all along the west side, veg in the middle and a block of grain over on "
+        "the east side",
+        "apple trees along the western boundary, carrots in the middle and wheat along the "
+        "eastern one",
+    ],
+)
+def test_zones_along_a_side_said_with_all_or_with_one(
+    prompt: str, crop_relations: Callable[[str], NamedRelations]
+) -> None:
+    relations = crop_relations(prompt)
+    west = {crop for kind, crop, _ in relations if kind == "west_of"}
+    assert west & {"Apple", "Pear", "Cherry", "Orange"}
+    assert any(kind == "between" for kind, _, _ in relations)
+
+
+def test_a_landmark_said_first_is_what_it_stands_for(
+    crop_relations: Callable[[str], NamedRelations],
+) -> None:
+    prompt = (
+        "The farmhouse is in the middle. Wheat to the north of it, maize to the south, and "
+        "a potato field between the two cereal fields."
+    )
+    assert [f.crop for f in generate(prompt).recipe.fields] == ["Wheat", "Maize", "Potato"]
+    relations = crop_relations(prompt)
+    assert ("north_of", "Wheat", ("Maize",)) in relations
+    assert ("between", "Potato", ("Wheat", "Maize")) in relations

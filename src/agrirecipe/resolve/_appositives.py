@@ -15,7 +15,12 @@ from typing import Any
 from agrirecipe.resolve._lexicon import reader_words
 from agrirecipe.resolve._links import coordinated
 from agrirecipe.resolve._mentions import Clause, Mention
-from agrirecipe.resolve._structure import descriptive_words, names_a_variety, strong_crops
+from agrirecipe.resolve._structure import (
+    descriptive_words,
+    names_a_variety,
+    same_variety,
+    strong_crops,
+)
 from agrirecipe.resolve._words import SENTENCE_MARKS
 
 __all__ = ["merge_appositive_plots"]
@@ -119,6 +124,13 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
                 or any(i.role == "filler" and i.scenery for i in clause.items)
                 or _size_said_next(clauses, mention.clause)
                 or _said_with_a_look(clause)
+                # ("Just Regina cherries on this farm, one orchard, fruit ripening ...": how
+                # many plots the crop is grown in, with no field named after it)
+                or (
+                    bool(clause.items)
+                    and clause.items[0].norm == "one"
+                    and not any(c.mentions for c in clauses[mention.clause + 1 :])
+                )
             )
         ):
             # (with how it looks: "apples, a grove of sick trees")
@@ -169,6 +181,14 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
                 )
                 if member.plot is None:
                     member.plot = mention.plot
+            for again in mention.refinements:
+                named = next(m for m in listed if same_variety(m, again))
+                named.items.extend(i for i in again.items if i.role not in ("number", "head"))
+                for other in clauses:
+                    if other.refinement is again:
+                        other.refinement = named
+                    if other.refined_parent is mention:
+                        other.refined_parent = None
             clause.mentions = [m for m in clause.mentions if m is not mention]
             continue
         if (
@@ -307,7 +327,6 @@ def _listed_again(clauses: Sequence[Clause], clause: Clause, mention: Mention) -
         or mention.count < 2
         or mention.plot is None
         or not mention.plot["plural"]
-        or mention.refinements
         or not all(i.role in ("number", "head", "plot", "filler") for i in clause.items)
     ):
         return []
@@ -317,6 +336,9 @@ def _listed_again(clauses: Sequence[Clause], clause: Clause, mention: Mention) -
         len(group) != mention.count
         or not crops
         or not all(strong_crops(m) and strong_crops(m) <= crops and m.count is None for m in group)
+        # ("Nantes vs Imperator: two carrot plots, ..., the Imperator plot to the south":
+        # members said after it are the ones listed, named again)
+        or not all(any(same_variety(m, r) for m in group) for r in mention.refinements)
     ):
         return []
     return group

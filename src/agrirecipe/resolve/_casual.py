@@ -21,6 +21,7 @@ from agrirecipe.resolve._geometry import number_words
 from agrirecipe.resolve._lexicon import DATA_DIR, Item, vocabulary
 from agrirecipe.resolve._pictures import read_pictures
 from agrirecipe.resolve._shares import read_shares
+from agrirecipe.resolve._shorthand import expand_shorthand
 
 __all__ = ["count_said_after_crop", "end_reciprocals", "expand_casual"]
 
@@ -96,6 +97,8 @@ def expand_casual(prompt: str) -> str:
     text = _WHERE_ENDS.sub(lambda m: f"{m.group('b')} next to {m.group('a')}", text)
     # "Riesling uphill (north) of the Spätburgunder": north of it
     text = _SLOPE_SIDE.sub(lambda m: f"{m.group('side')} ", text)
+    # "rows 6 m and 3 m apart respectively", "all along the west side", ...
+    text = expand_shorthand(text)
     # "3 plots side by side west→east": an arrow between two places is "to"
     text = _ARROW.sub(" to ", text)
     # "bell types with a few chillies mixed in": a few plants among the field's own crop,

@@ -172,16 +172,28 @@ def merge_coreferences(
             # just said is, the field before's plot
             or (clause.link.role == "conjunction" and look_then_its_place(clause, mention))
         )
-        summary = is_summary(mention) or (
-            # "the peppers between the two tomato strips": fields of a crop named before
-            is_definite
-            and (mention.count or 1) >= 2
-            and mention.has_crop
-            and (
-                not names_a_variety(mention)
-                # ("sweetcorn / popcorn / sweetcorn, ... between the two sweetcorn plots":
-                # the fields of that kind named before, as many as counted)
-                or as_many_of_that_kind(kept, mention)
+        summary = (
+            is_summary(mention)
+            or (
+                # "the peppers between the two tomato strips": fields of a crop named before
+                is_definite
+                and (mention.count or 1) >= 2
+                and mention.has_crop
+                and (
+                    not names_a_variety(mention)
+                    # ("sweetcorn / popcorn / sweetcorn, ... between the two sweetcorn plots":
+                    # the fields of that kind named before, as many as counted)
+                    or as_many_of_that_kind(kept, mention)
+                )
+            )
+            or (
+                # "a potato field between the two cereal fields": the fields of that kind
+                # named before
+                is_definite
+                and (mention.count or 1) >= 2
+                and mention.category is not None
+                and not mention.has_crop
+                and mention.interpretations is None
             )
         )
         # "imperator and danvers carrots, ..., imperator north of danvers": a variety
@@ -460,6 +472,7 @@ def merge_coreferences(
             clause.mentions[at : at + 1] = sorted(run, key=lambda m: m.clause)
         else:
             clause.mentions.remove(mention)
+            clause.said_of = list(run)
     return kept
 
 

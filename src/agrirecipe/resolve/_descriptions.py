@@ -372,7 +372,12 @@ def said_with_a_verb(clause: Clause, mention: Mention) -> bool:
     """Whether a describing verb follows the mention's head in its clause."""
     head = max(h.end for h in mention.heads)
     verbs = describing_verbs()
-    return any(i.start >= head and i.norm in verbs for i in clause.items)
+    after = [i for i in clause.items if i.start >= head]
+    # (not "some fruit idk whatever looks nice": the verb of a free choice after it)
+    choices = reader_words("free_choice")
+    return any(
+        i.norm in verbs and not (k and after[k - 1].norm in choices) for k, i in enumerate(after)
+    )
 
 
 def _after_a_look(previous: Clause, clause: Clause, mention: Mention) -> bool:

@@ -13,9 +13,16 @@ from collections.abc import Sequence
 from agrirecipe.resolve._intent import RelationIntent, TraceStep
 from agrirecipe.resolve._lexicon import Item, singular
 from agrirecipe.resolve._links import ARTICLES, OPPOSITE, field_relations
+from agrirecipe.resolve._measures import sentence_start
 from agrirecipe.resolve._mentions import Clause, Mention
 
-__all__ = ["across_landmarks", "held_by", "landmark_of"]
+__all__ = [
+    "across_landmarks",
+    "held_by",
+    "landmark_again",
+    "landmark_of",
+    "landmark_said_before",
+]
 
 
 def held_by(
@@ -110,3 +117,57 @@ def across_landmarks(
                 )
             )
     return relations
+
+
+def landmark_said_before(clauses: Sequence[Clause], position: int) -> str | None:
+    """The landmark "it" stands for in a relation "<field> north of it" whose field is the
+    first the prompt names, after a sentence about that landmark alone ("The farmhouse is
+    in the middle. Wheat to the north of it"); else None."""
+    clause = clauses[position]
+    link = clause.link
+    named = [m for c in clauses[:position] for m in c.named]
+    if (
+        link is None
+        or link.role != "relation"
+        or clause.mentions
+        or [i.norm for i in clause.items] != ["it"]
+        or len(named) != 1
+        or named[0].clause != position - 1
+    ):
+        return None
+    start = sentence_start(clauses, position - 1)
+    if start == 0:
+        return None
+    found = [landmark_of(c) for c in clauses[:start] if not c.mentions]
+    said = [f for f in found if f is not None]
+    return said[-1] if said else None
+
+
+def landmark_again(
+    clauses: Sequence[Clause], position: int, landmark: str | None, kind: str
+) -> str | None:
+    """``landmark`` (that of the relation said before, of kind ``kind``) when the relation
+    at ``position`` is the opposite side of it said of the field right before ("wheat
+    north of the farmhouse, maize south of it"; "Wheat to the north of it, maize to the
+    south"); else None."""
+    clause = clauses[position]
+    link = clause.link
+    named = [m for c in clauses[:position] for m in c.named]
+    if (
+        landmark is None
+        or link is None
+        # (compass sides both: "the Riesling parcel by the village, the Pinot parcel
+        # right next to it" is next to the Riesling)
+        or not {str(link.data.get("value")), kind} <= set(OPPOSITE)
+        or clause.mentions
+        or not named
+        or named[-1].clause != position - 1
+    ):
+        return None
+    said = [i.norm for i in clause.items]
+    # ("maize to the south" answers "wheat to the north of it"; not "... and popping corn
+    # further east again", placed past the field before)
+    answers = not said and OPPOSITE.get(kind) == link.data.get("value")
+    if (link.role == "relation" and said == ["it"]) or (link.role == "trailer" and answers):
+        return landmark
+    return None

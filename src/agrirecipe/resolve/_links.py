@@ -28,6 +28,7 @@ __all__ = [
     "field_relations",
     "fields_of",
     "following_list",
+    "gap_between_the_two",
     "last_named",
     "link_norm",
     "listed_after",
@@ -490,3 +491,24 @@ def relation_mentions(
         # "... with an onion field to the north of them": the object was named before.
         return kind, before[-1], (before[-2],)
     return None
+
+
+#: Words for the space left between two fields ("a 3 m gap between them").
+_GAPS = frozenset({"gap", "gaps", "space", "spacing", "distance", "buffer", "clearance"})
+
+
+def gap_between_the_two(
+    clauses: Sequence[Clause], position: int, members: dict[int, list[int]]
+) -> tuple[int, int] | None:
+    """The two fields of the prompt when clause ``position`` is "between them" (or "the
+    two") right after a gap said with no field of its own ("half a metre gap between
+    them"); else None."""
+    clause = clauses[position]
+    said = " ".join(i.norm for i in clause.items)
+    if position == 0 or not (said in THE_TWO or said == "them"):
+        return None
+    previous = clauses[position - 1].items
+    if not previous or previous[-1].norm not in _GAPS:
+        return None
+    fields = sorted({f for indexes in members.values() for f in indexes})
+    return (fields[0], fields[1]) if len(fields) == 2 else None

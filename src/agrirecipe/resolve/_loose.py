@@ -245,6 +245,10 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
             # "cabbages in the middle with caterpillar holes chewed through the leaves":
             # a "with" after the placement of the field just named is that field's
             targets = [placed]
+        elif position and clauses[position - 1].said_of and goes_on(clause):
+            # "..., peppers fruiting and ripe": still said of every field the crop named
+            # again stood for
+            targets = clause.said_of = clauses[position - 1].said_of
         elif carried is not None and carried[0] == position - 1 and goes_on(clause):
             # "the Ladyfinger block next to them has yellowing, mottled leaves and some
             # plants wilting": the description goes on for the field it was about (unless
@@ -306,7 +310,7 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
                 if i.role in ("stage", "health", "cue") and i not in target.borrowed
             }
             shared = seasons + others
-            if len(targets) > 1:
+            if len(targets) > 1 and not clause.said_of:
                 shared = [i for i in shared if i.role not in own]
             said = {attribute_of(i) for i in shared}
             # Its own words replace what a list lent it ("ripe wheat and maize, ..."; a

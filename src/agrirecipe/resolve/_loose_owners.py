@@ -178,8 +178,9 @@ def described_crop(clause: Clause, before: Sequence[Mention]) -> list[Mention]:
     """'The Riesling vineyard ... of the Fuji orchard. Half the vines show mildew': words
     about the plants of one crop go to the last field of that crop ([] if none)."""
     crops: set[str] = set()
-    for item in clause.loose:
-        crops |= set(item.data.get("describes", ()))
+    heads = [i for i in clause.loose if i.data.get("describes")]
+    for item in heads:
+        crops |= set(item.data["describes"])
     if not crops:
         return []
     # (a field named by its plot alone: "Vineyard and cherry orchard ..., the vines are in
@@ -197,7 +198,33 @@ def described_crop(clause: Clause, before: Sequence[Mention]) -> list[Mention]:
         )
         & crops
     ]
+    if len(fields) >= 2 and _all_the_plants(clause, heads):
+        # "Cabernet in the north block, Chardonnay in the south block, and the vines are
+        # flowering": the plants of every field of that crop
+        return fields
     return fields[-1:]
+
+
+def _all_the_plants(clause: Clause, heads: Sequence[Item]) -> bool:
+    """Whether the clause says "the vines" / "the trees" (a plural of all the plants, right
+    after "the" and said with a verb), not a part of them ("half the vines", "one of the
+    trees") nor plants held "with" a field ("with mildew on the vines")."""
+    if clause.link is not None and clause.link.norm == "with":
+        return False
+    if any(i.role in ("fraction", "number", "reference", "quantity") for i in clause.items):
+        return False
+    for head in heads:
+        before = [i for i in clause.items if i.end <= head.start]
+        after = [i for i in clause.items if i.start >= head.end]
+        if not (
+            head.norm in ALL_PLANTS
+            and len(before) == 1
+            and before[0].norm in ("the", "these", "those", "both", "all")
+            and after
+            and after[0].norm in describing_verbs()
+        ):
+            return False
+    return True
 
 
 def goes_on_saying_all(clauses: Sequence[Clause], position: int, said_all: int) -> bool:

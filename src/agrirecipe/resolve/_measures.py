@@ -125,6 +125,16 @@ def opens_with_rows(clauses: Sequence[Clause], position: int) -> bool:
     clause = clauses[position]
     if clause.mentions or not clause.items or clause.items[0].role != "geometry":
         return False
+    if (
+        position > 0
+        and clause.link is not None
+        and clause.link.norm in (",", "and")
+        and _only_measures(clause)
+        and _only_measures(clauses[position - 1])
+    ):
+        # ("... Beds on 1.2 m centres, 2 rows a bed, 25 cm plant spacing": the measures
+        # go on in the sentence the rows' word opened)
+        return opens_with_rows(clauses, position - 1)
     named = {id(m): m for c in clauses[:position] for m in c.mentions}.values()
     if clause.link is None or (
         clause.link.norm not in SENTENCE_MARKS and not _closes_one_crop(clauses, position, named)
@@ -141,10 +151,15 @@ def _closes_one_crop(clauses: Sequence[Clause], position: int, named: Iterable[M
     placed against each other."""
     crops = {frozenset(strong_crops(m)) for m in named}
     previous = clauses[position - 1] if position else None
+    # ("Bibb lettuce and Stuttgarter onions, two 0.25 ha plots each with ..., the onions
+    # south of the lettuce, rows E-W": the way the rows run, after fields said of "each",
+    # is every field's, whatever the crops; not "Gala west of wheat, rows NE-SW")
+    bearing = _measure_keys(clauses[position].items) == {"row_bearing_deg"} and any(
+        i.role == "all" for c in clauses[:position] for i in (*c.items, *c.loose)
+    )
     return (
         _clause_is_last(clauses, position)
-        and len(crops) == 1
-        and bool(next(iter(crops)))
+        and (bearing or (len(crops) == 1 and bool(next(iter(crops)))))
         and previous is not None
         and previous.link is not None
         and previous.link.role == "relation"
@@ -283,7 +298,11 @@ def share_each_measures(clauses: Sequence[Clause]) -> None:
     for position, clause in enumerate(clauses):
         for mention in clause.mentions[-1:]:
             ordered = sorted(mention.items, key=lambda i: i.start)
-            following: list[Item | None] = [*ordered[1:], None]
+            # (the word after it in the clause: "gala half an acre each")
+            in_clause = sorted(clause.items, key=lambda i: i.start)
+            following: list[Item | None] = [
+                next((b for b in in_clause if b.start >= a.end), None) for a in ordered
+            ]
             sizes = [
                 a
                 for a, b in zip(ordered, following, strict=True)
@@ -399,7 +418,8 @@ def heads_a_list(clauses: Sequence[Clause], position: int) -> bool:
     if index >= len(clauses) or index == position:
         return False
     opening = clauses[index]
-    if opening.link is None or opening.link.norm != ":":
+    # ("three 1.5 m beds, 4 rows per bed, 30 cm in-row - Cos, Lollo, Iceberg": or a dash)
+    if opening.link is None or opening.link.norm not in (":", "-", "–", "—"):
         return False
     listed = [opening]
     for clause in clauses[index + 1 :]:

@@ -120,6 +120,9 @@ class Clause:
     refined_parent: Mention | None = None
     #: The member this clause named once it became a refinement of ``refined_parent``.
     refinement: Mention | None = None
+    #: The fields a crop named again in this clause was said of, when it was more than
+    #: one ("..., peppers fruiting and ripe": both pepper fields).
+    said_of: list[Mention] = field(default_factory=list)
 
     @property
     def named(self) -> list[Mention]:

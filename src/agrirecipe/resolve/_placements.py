@@ -13,12 +13,14 @@ from __future__ import annotations
 import itertools
 from collections.abc import Sequence
 
+from agrirecipe.resolve._landmarks import landmark_said_before
 from agrirecipe.resolve._links import OPPOSITE, PRONOUNS, before_brackets, link_norm
 from agrirecipe.resolve._mentions import Clause, Mention
 from agrirecipe.resolve._words import SENTENCE_MARKS
 
 __all__ = [
     "a_distance",
+    "attached_to_the_field_before",
     "between_said_last",
     "directed_neighbours",
     "fronted_between",
@@ -384,6 +386,8 @@ def placements(clauses: Sequence[Clause], members: dict[int, list[int]]) -> dict
             continue
         if position == 0 or clause.mentions or any(i.role not in _OWN for i in clause.items):
             continue  # ("Gala on the north side planted at 3.5 m by 1 m": its own measures)
+        if _across_a_landmark(clauses, position):
+            continue  # ("The farmhouse is in the middle. Wheat north of it, maize to the south")
         before = clauses[position - 1]
         if (
             # (past a distance: "and, 20 m to the east, Durondeau pears")
@@ -414,6 +418,23 @@ def placements(clauses: Sequence[Clause], members: dict[int, list[int]]) -> dict
         if len(previous) == 1 and id(previous[0]) in members:
             placed[position] = previous[0]
     return placed
+
+
+def _across_a_landmark(clauses: Sequence[Clause], position: int) -> bool:
+    """Whether the trailer at ``position`` answers the relation said before it against a
+    landmark ("The farmhouse is in the middle. Wheat to the north of it, maize to the
+    south": the maize is south of the farmhouse too)."""
+    links = [c.link for c in clauses]
+    trailer = links[position]
+    for earlier in range(position - 1, 0, -1):
+        link = links[earlier]
+        if link is not None and link.role == "relation":
+            return (
+                trailer is not None
+                and landmark_said_before(clauses, earlier) is not None
+                and OPPOSITE.get(str(link.data.get("value"))) == trailer.data.get("value")
+            )
+    return False
 
 
 def _a_bare_and(clause: Clause) -> bool:
@@ -519,3 +540,45 @@ def shared_subject(
         return None
     object_ = said.mentions[0]
     return next((subject for _, subject, objects in reversed(read) if objects == (object_,)), None)
+
+
+_DESCRIBING = frozenset({"cue", "stage", "health", "filler", "unknown", "season", "month"})
+_MEASURES = frozenset({"size", "geometry", "area"})
+
+
+def attached_to_the_field_before(clauses: Sequence[Clause], position: int) -> bool:
+    """Whether the relation at ``position`` right follows a field, or follows it past
+    clauses that only describe it ("Navel oranges, ripe and being picked, on the north
+    side; Valencia Late on the south side")."""
+    index, described = position - 1, False
+    previous = clauses[index]
+    # ("Red Baron plot, 5 m x 20 m, to the north; Sturon plot ...": a direction that
+    # closes its part of the sentence places the field of that part, past its measures)
+    closes = (
+        not clauses[position].items
+        and position + 1 < len(clauses)
+        and link_norm(clauses[position + 1]) in SENTENCE_MARKS
+    )
+    describing = _DESCRIBING | _MEASURES if closes else _DESCRIBING
+    if not previous.items and link_norm(previous) in SENTENCE_MARKS:
+        # ("... 14 rows. To the south, a Navel block": it opens a sentence; so it does
+        # after a semicolon: "On the east, Albion ...; on the west, Elsanta ...")
+        return False
+    while index > 0 and not clauses[index].named:
+        clause = clauses[index]
+        if (
+            clause.link is None
+            or clause.link.norm not in (",", "and")
+            or any(i.role not in describing for i in clause.items)
+        ):
+            return False
+        # ("Winter Wheat just emerged, thin green lines, on the west side of the lane":
+        # words after a comma describe it, read as a look or not; not "... and zone C on
+        # the south side is peppers", a label of the field after)
+        described = described or (
+            any(i.role in ("cue", "stage", "health") for i in clause.items)
+            or (bool(clause.items) and clause.link.norm == ",")
+        )
+        index -= 1
+    # (not "apples, and to the north, pears": nothing said of the apples in between)
+    return index >= 0 and bool(clauses[index].named) and (index == position - 1 or described)

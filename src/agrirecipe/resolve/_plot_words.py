@@ -63,7 +63,17 @@ def _likenesses(items: Sequence[Item]) -> None:
         following = items[index + 2] if index + 2 < len(items) else None
         # (not "the allotment-style plots", which are the plots themselves)
         plots = following is not None and following.role == "plot"
-        if item.role == "plot" and after.norm in _LIKE and not plots:
+        # (not "a few wheat fields like whatever number u want", "fields like 3": the
+        # "like" of casual talk before a count or a choice)
+        casual = (
+            after.norm == "like"
+            and following is not None
+            and (
+                following.role in ("number", "quantity")
+                or following.norm in reader_words("free_choice")
+            )
+        )
+        if item.role == "plot" and after.norm in _LIKE and not plots and not casual:
             item.role = "filler"
 
 
@@ -108,6 +118,13 @@ def _the_same(items: Sequence[Item]) -> None:
             said[1].role = "same_spacing"
 
 
+#: The words between livestock and the plot it is on ("sheep in the paddock", "cows
+#: graze the paddock").
+_GRAZING = frozenset(
+    {"in", "on", "graze", "grazes", "grazing", "grazed", "the", "a", "their", "that", "this"}
+)
+
+
 def _pastures(items: Sequence[Item]) -> None:
     """'sheep in the paddock', 'a field of cows': pasture, no field of any crop (not "sheep
     grazing in the orchard": the orchard still grows trees)."""
@@ -116,12 +133,15 @@ def _pastures(items: Sequence[Item]) -> None:
         spec = item.data.get("value") if item.role == "plot" else None
         if not isinstance(spec, dict) or spec.get("options") or spec.get("category"):
             continue
-        words_before = [i.norm for i in items[max(0, index - 3) : index]]
+        words_before = [i.norm for i in items[max(0, index - 4) : index]]
         words_after = [i.norm for i in items[index + 1 : index + 3]]
+        # ("sheep in the paddock", "Cows graze the paddock by the road")
+        kept = next((k for k, w in enumerate(words_before) if w in livestock), None)
         if (
-            len(words_before) == 3
-            and words_before[0] in livestock
-            and words_before[1] in ("in", "on")
+            kept is not None
+            and len(words_before) - kept >= 3
+            and all(w in _GRAZING for w in words_before[kept + 1 :])
+            and words_before[kept + 1] != "the"
         ) or (
             len(words_after) == 2
             and words_after[0] in ("of", "with", "full of")

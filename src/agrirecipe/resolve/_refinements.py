@@ -86,11 +86,6 @@ def apply_refinements(
             and len(clause.mentions) == 1
             and definite_before_head(clause, clause.mentions[0])
             and any(named_again(clause.mentions[0], r) for r in parent.refinements)
-            # (not "Block B, directly east of the Conference pears: Jonagored apples": the
-            # field it places comes after)
-            and not (
-                clause.index + 1 < len(clauses) and link_norm(clauses[clause.index + 1]) == ":"
-            )
         ):
             # "three fields: wheat up by the woods, potatoes right next to the wheat, and
             # ...": the member a relation places against, named again; the listing goes on

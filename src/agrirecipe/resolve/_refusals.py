@@ -63,6 +63,11 @@ def reject_scenery(items: Sequence[Item]) -> None:
     )
 
 
+#: What may stand between a crop and the correction that takes it back ("olive grove? no,
+#: I mean ...").
+_BEFORE_A_CORRECTION = frozenset({"?", ",", "!", "...", ".", "-", "no", "nope", "oh", "hmm"})
+
+
 def reject_other_crops(
     items: Sequence[Item], hierarchy: Hierarchy, nearest_crops: NearestCrops
 ) -> None:
@@ -121,6 +126,17 @@ def reject_other_crops(
             # of a crop named before stands for it
             item.role = "filler"
             item.data["short_for"] = True
+            continue
+        after = itertools.dropwhile(
+            lambda i: i.role in ("filler", "plot") or i.norm in _BEFORE_A_CORRECTION,
+            items[index + 1 :],
+        )
+        taken_back = next(after, item)
+        then = next(after, None)
+        if taken_back.role == "correction" and (then is None or then.norm not in ("also", "and")):
+            # "hmm idk maybe spinach? no wait, lettuce": a crop taken back at once
+            item.role = "filler"
+            item.data["corrected"] = True
             continue
         other: OtherCrop = item.senses_of("other_crop")[0].value
         if other.variety_of is not None:

@@ -21,23 +21,29 @@ from typing import get_args
 
 from agrirecipe.recipe import RelationKind
 from agrirecipe.resolve._intent import RelationIntent, TraceStep
-from agrirecipe.resolve._landmarks import across_landmarks, held_by, landmark_of
+from agrirecipe.resolve._landmarks import (
+    across_landmarks,
+    held_by,
+    landmark_again,
+    landmark_of,
+    landmark_said_before,
+)
 from agrirecipe.resolve._lexicon import Item
 from agrirecipe.resolve._links import (
     ARTICLES,
-    OPPOSITE,
     PRONOUNS,
     THE_TWO,
     before_brackets,
     field_relations,
+    gap_between_the_two,
     last_named,
-    link_norm,
     own_mentions,
     relation_mentions,
 )
 from agrirecipe.resolve._mentions import Clause, Mention
 from agrirecipe.resolve._placements import (
     a_distance,
+    attached_to_the_field_before,
     between_said_last,
     directed_neighbours,
     fronted_between,
@@ -119,20 +125,17 @@ def read_relations(
         previous_relation, last_relation = last_relation, position
         if position in placed or position in directed.values():
             continue
-        if (
-            previous_relation in landmark_at
-            and link.role == "relation"
-            # (compass sides both: "the Riesling parcel by the village, the Pinot parcel
-            # right next to it" is next to the Riesling)
-            and {str(link.data.get("value")), landmarks[-1][0]} <= set(OPPOSITE)
-            and not clause.mentions
-            and [i.norm for i in clause.items] == ["it"]
-            and (named := [m for c in clauses[:position] for m in c.named])
-            and named[-1].clause == position - 1
-        ):
-            # "wheat north of the farmhouse, maize south of it": the landmark again
-            landmark_at[position] = landmark_at[previous_relation]
-            landmarks.append((str(link.data.get("value")), landmark_at[position], named[-1], link))
+        landmark = (
+            landmark_again(clauses, position, landmark_at.get(previous_relation), landmarks[-1][0])
+            if previous_relation in landmark_at
+            else landmark_said_before(clauses, position)
+        )
+        if landmark is not None:
+            # "wheat north of the farmhouse, maize south of it": the landmark again; "The
+            # farmhouse is in the middle. Wheat to the north of it": the one said first
+            named = [m for c in clauses[:position] for m in c.named]
+            landmarks.append((str(link.data.get("value")), landmark, named[-1], link))
+            landmark_at[position] = landmark
             continue
         landmark = landmark_of(clause)
         if landmark is not None and (held := held_by(clauses, position, landmark)) is not None:
@@ -364,7 +367,7 @@ def read_relations(
         else:
             # "pears on the north block, bananas ...": a trailer right after a field
             # places that field ("..., and to the north, pears" places the one after).
-            attached = _attached(clauses, position)
+            attached = attached_to_the_field_before(clauses, position)
             pairs = relation_mentions(
                 link,
                 before,
@@ -373,6 +376,13 @@ def read_relations(
                 attached=attached,
                 fields=lambda m: len(members.get(id(m), ())) or m.count or 1,
             )
+        if pairs is None and (gap := gap_between_the_two(clauses, position, members)):
+            # "durum wheat and dinkel strips, ..., half a metre gap between them": the
+            # two fields side by side, the gap between them
+            relations.append(
+                RelationIntent(kind="next_to", subject=gap[0], objects=(gap[1],), text=link.raw)
+            )
+            continue
         if pairs is None:
             warnings.append(f"ignored {link.raw!r}: it needs a field on each side")
             continue
@@ -567,34 +577,3 @@ def _both_said(clauses: Sequence[Clause], position: int) -> bool:
 
 #: Roles of the words that describe the field just named ("Navel oranges, ripe and being
 #: picked, on the north side").
-_DESCRIBING = frozenset({"cue", "stage", "health", "filler", "unknown", "season", "month"})
-
-
-def _attached(clauses: Sequence[Clause], position: int) -> bool:
-    """Whether the relation at ``position`` right follows a field, or follows it past
-    clauses that only describe it ("Navel oranges, ripe and being picked, on the north
-    side; Valencia Late on the south side")."""
-    index, described = position - 1, False
-    previous = clauses[index]
-    if not previous.items and link_norm(previous) in (*_FULL_STOPS, ";"):
-        # ("... 14 rows. To the south, a Navel block": it opens a sentence; so it does
-        # after a semicolon: "On the east, Albion ...; on the west, Elsanta ...")
-        return False
-    while index > 0 and not clauses[index].named:
-        clause = clauses[index]
-        if (
-            clause.link is None
-            or clause.link.norm not in (",", "and")
-            or any(i.role not in _DESCRIBING for i in clause.items)
-        ):
-            return False
-        # ("Winter Wheat just emerged, thin green lines, on the west side of the lane":
-        # words after a comma describe it, read as a look or not; not "... and zone C on
-        # the south side is peppers", a label of the field after)
-        described = described or (
-            any(i.role in ("cue", "stage", "health") for i in clause.items)
-            or (bool(clause.items) and clause.link.norm == ",")
-        )
-        index -= 1
-    # (not "apples, and to the north, pears": nothing said of the apples in between)
-    return index >= 0 and bool(clauses[index].named) and (index == position - 1 or described)

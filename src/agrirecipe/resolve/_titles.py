@@ -10,6 +10,7 @@ title's words to that field and drops it.
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Sequence
 
 from agrirecipe.resolve._mentions import Clause, Mention
@@ -75,6 +76,17 @@ def drop_titles(
     # ("Just a spud farm, honestly. One big field of spuds, ...": the farm named by its
     # crop is a title too)
     farm = any(i.norm == "farm" for i in title.items)
+    if _plot_named_before_a_colon(clauses, title, mentions[1:]):
+        # "Home paddock: a 100 by 60 m patch of Walla Walla onions": the plot's name
+        if not any(i.role == "size" for i in field.items):
+            field.items.extend(i for i in title.items if i.role in ("size", "side"))
+        lend_and_drop(clauses, title, mentions[1:])
+        return mentions[1:]
+    if _kind_of_farm(title, mentions[1:], crop_categories):
+        # "It's a small fruit farm really, just one block of Conference pears": the
+        # farm's kind, said of the whole, not one more field
+        lend_and_drop(clauses, title, mentions[1:])
+        return mentions[1:]
     category = title.category if not title.has_crop and title.plot is not None else None
     if category is not None:
         crops = {crop for crop, of in crop_categories.items() if of == category}
@@ -135,6 +147,52 @@ def drop_titles(
     for clause in clauses:
         clause.mentions = [field if m is title else m for m in clause.mentions]
     return mentions[1:]
+
+
+def _plot_named_before_a_colon(
+    clauses: Sequence[Clause], title: Mention, fields: Sequence[Mention]
+) -> bool:
+    """Whether ``title`` is a plot of no crop said alone before a colon that opens the
+    prompt's one other field ("Home paddock: a 100 by 60 m patch of onions")."""
+    after = clauses[title.clause + 1] if title.clause + 1 < len(clauses) else None
+    return (
+        len(fields) == 1
+        and title.plot is not None
+        and not title.has_crop
+        and title.category is None
+        and (title.count or 1) == 1
+        and not title.refinements
+        and after is not None
+        and after.link is not None
+        and after.link.norm == ":"
+        and fields[0].clause == after.index
+        and fields[0].has_crop
+    )
+
+
+def _kind_of_farm(
+    title: Mention, fields: Sequence[Mention], crop_categories: dict[str, str]
+) -> bool:
+    """Whether ``title`` is a farm named by a category right before the word "farm" ("a
+    fruit farm", "a small vegetable farm"), with no count or plot of its own, and every
+    field named after it grows a crop of that category."""
+    words = sorted(title.items, key=lambda i: i.start)
+    named_so = any(
+        before in title.heads and after.role == "container" and after.norm == "farm"
+        for before, after in itertools.pairwise(words)
+    )
+    if (
+        not named_so
+        or title.has_crop
+        or title.category is None
+        or (title.count or 1) != 1
+        or title.plot is not None
+        or title.refinements
+        or not fields
+    ):
+        return False
+    crops = {crop for crop, of in crop_categories.items() if of == title.category}
+    return all(strong_crops(m) and strong_crops(m) <= crops for m in fields)
 
 
 def _holds(field: Mention, crops: set[str]) -> bool:

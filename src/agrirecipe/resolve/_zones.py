@@ -325,6 +325,14 @@ def zone_relations(fields: Sequence[Sequence[Item]]) -> list[RelationIntent]:
         order = sorted(rows)
         for upper, lower in itertools.pairwise(order if axis != "depth" else ()):
             for subject in rows[upper]:
+                if across not in places[subject] and all(across in places[o] for o in rows[lower]):
+                    # "fruit trees across the north, ... in the south-east corner and cereals
+                    # in the south-west": a whole side lies beyond each quarter across from it
+                    relations.extend(
+                        RelationIntent(kind=kind, subject=subject, objects=(o,))
+                        for o in rows[lower]
+                    )
+                    continue
                 # "NW quarter" lies north of the SW one, the one across on the other axis
                 other = next(
                     (
