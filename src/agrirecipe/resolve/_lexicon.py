@@ -407,6 +407,25 @@ class Lexicon:
             return phrase, score, self._fuzzy_senses[phrase]
         return None
 
+    def variety_of(self, text: str, crops: set[str]) -> tuple[str, float, tuple[Sense, ...]] | None:
+        """The variety of one of ``crops`` that a word of six letters or more, said right
+        before the crop, misspells by one edit ("fontaine potatoes": Fontane), even when the
+        word is an everyday one elsewhere; else None."""
+        from rapidfuzz.distance import DamerauLevenshtein
+
+        if len(text) < 6 or " " in text:
+            return None
+        found = [
+            phrase
+            for phrase in self.fuzzy_choices
+            if DamerauLevenshtein.distance(text, phrase) == 1
+            and any(s.kind == "variety" and s.crop in crops for s in self._fuzzy_senses[phrase])
+        ]
+        if len(found) != 1:
+            return None
+        score = 100.0 * DamerauLevenshtein.normalized_similarity(text, found[0])
+        return found[0], score, self._fuzzy_senses[found[0]]
+
     def _sounds_like(self, text: str) -> tuple[str, float, tuple[Sense, ...]] | None:
         """The one phrase a word of five letters or more, spelt by ear, sounds like
         ("lettus": lettuce), scored by its edit similarity; None when none or several."""

@@ -195,6 +195,14 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
             and link_norm(clause) != ")"
         ):
             targets = [forward] if forward is not None else []
+        elif (
+            before
+            and any(i.role == "size" for i in attributes)
+            and shared_by_all(clauses, position)
+        ):
+            # "Butterhead and Cos plots, Butterhead west of Cos, 9 plants/m2 each, 15 x 15
+            # m": a size in a run of measures said of each field is each field's
+            targets = sentence_fields(clauses, position)
         elif same_as_before_next(clauses, position, attributes, forward):
             # "Plot A is 200 ft by 300 ft of Roma. Plot B is the same size, Beefsteak."
             targets = [forward] if forward is not None else []

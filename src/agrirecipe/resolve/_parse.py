@@ -65,6 +65,7 @@ step  pass                                        module (data)
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable, Iterable, Sequence
 
 from agrirecipe._errors import PromptError
@@ -223,6 +224,13 @@ def _scenery_placed_by(container: Item, clauses: Sequence[Clause]) -> bool:
 
 #: Words that set the sky over the place named after them ("the sky over the farm").
 _OVER = frozenset({"over", "above", "across", "behind", "beyond"})
+
+
+#: "Nothing is planted this year", "no crops at the moment": a farm that grows nothing.
+_NOTHING_PLANTED = re.compile(
+    r"\b(?:nothing|no crops?|no crop at all)(?: (?:is|s|was|has been|got|at all))? "
+    r"(?:planted|growing|grown|sown|in the ground|this year|at the moment|right now)\b"
+)
 
 
 def _listed_after_a_colon(items: Sequence[Item], container: Item) -> list[Item]:
@@ -504,6 +512,14 @@ class PromptReader(FieldReading):
             # "a drone survey scene over the yard: two tractors, a sprayer and the shed"
             raise PromptError(
                 f"{NOTHING_FOUND}: only scenery ({', '.join(repr(w) for w in scenery[:5])})",
+                stage="resolve",
+                hint="name a crop, a variety or a kind of field, e.g. " + EXAMPLES,
+            )
+        said = " ".join(i.norm for i in items)
+        if _NOTHING_PLANTED.search(said):
+            # "Our farm has a farmhouse, two barns, ... Nothing is planted this year."
+            raise PromptError(
+                f"{NOTHING_FOUND}: the prompt says nothing is grown",
                 stage="resolve",
                 hint="name a crop, a variety or a kind of field, e.g. " + EXAMPLES,
             )

@@ -87,7 +87,7 @@ def reject_other_crops(
             item.role = "filler"
             item.data["scenery"] = "vegetation"
             continue
-        if following is not None and following.norm in _LIKENESSES:
+        if following is not None and (following.norm.split() or [""])[0] in _LIKENESSES:
             # "long plum-shaped fruit going red": a shape, not a plum crop
             item.role = "filler"
             continue
@@ -212,6 +212,8 @@ def _unknown_crop(word: str, nearest_crops: NearestCrops) -> None:
 #: Words after a crop's name that make it a likeness ("plum-shaped", "olive-green").
 _LIKENESSES = frozenset(
     {"shaped", "sized", "size", "like", "coloured", "colored", "green", "shape", "skinned"}
+    # ("scab all over, olive spots on the leaves": the colour of the marks)
+    | {"spots", "spot", "spotted", "marks", "blotches", "lesions", "streaks", "flecks"}
 )
 
 

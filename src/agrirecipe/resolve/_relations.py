@@ -492,7 +492,11 @@ def _both_fronted(clause: Clause) -> bool:
     return (
         bool(before)
         and before[0].norm == "both"
-        and any(i.role in ("head", "plot") for i in before)
+        and (
+            any(i.role in ("head", "plot") for i in before)
+            # ("... and to the west of both an orchard": "both" alone, then the new field)
+            or [i.norm for i in before[1:]] in (["a"], ["an"])
+        )
     )
 
 

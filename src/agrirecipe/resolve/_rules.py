@@ -89,6 +89,12 @@ def fuzzy_unknown_words(items: list[Item], lexicon: Lexicon) -> tuple[list[Item]
                 width = end - start
                 if best is None or (score, width) > (best[0], best[2] - best[1]):
                     best = (score, start, end, phrase, senses)
+        following = out[index + 1] if index + 1 < len(out) else None
+        if best is None and following is not None:
+            # ("fontaine potatoes": a variety of the crop said right after it)
+            crops = {str(s.value) for s in following.senses if s.kind == "crop"}
+            if crops and (variety := lexicon.variety_of(out[index].norm, crops)) is not None:
+                best = (variety[1], index, index + 1, variety[0], variety[2])
         if best is None:
             index += 1
             continue

@@ -39,6 +39,19 @@ _DENSITY_UNIT_SAID_LAST = re.compile(
 )
 
 
+#: "a Chardonnay block of the same size and spacing": the same size and the same spacing.
+_SAME_SIZE_AND_SPACING = re.compile(
+    r"\b(?i:the\s+)?(?i:same)\s+(?i:size)\s+(?i:and)\s+(?P<what>(?i:row\s+|plant\s+)?(?i:spacing))\b"
+)
+
+
+#: "An orchard ... behind a field of young lettuces": behind a plot said with its article.
+_BEHIND_A_PLOT = re.compile(
+    r"\b(?:(?i:just|right|directly|close)\s+)?(?i:behind)\s+(?=(?i:a|an)\s+(?:[A-Za-z-]+\s+){0,2}"
+    r"(?i:field|plot|block|orchard|vineyard|patch|strip|grove|bed|row)s?\b)"
+)
+
+
 @functools.cache
 def _how_many_plots() -> re.Pattern[str]:
     """ "can't remember exactly how many fields": a question about the plots, no plots."""
@@ -60,5 +73,9 @@ def expand_shorthand(text: str) -> str:
     text = _MACHINE_WIDTH.sub(lambda m: f" {m.group('unit')} ", text)
     # "fruit trees all along the west side": along the west side
     text = _ALL_ALONG_A_SIDE.sub("", text)
+    text = _SAME_SIZE_AND_SPACING.sub(
+        lambda m: f"the same size and the same {m.group('what')}", text
+    )
+    text = _BEHIND_A_PLOT.sub("next to ", text)
     # "Mixed farm, can't remember exactly how many fields: ...": no fields of their own
     return _how_many_plots().sub("how many", text)

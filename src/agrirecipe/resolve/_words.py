@@ -359,6 +359,8 @@ def _all_as_intensifier(items: Sequence[Item]) -> None:
             continue
         if following.norm in _ALL_CARRIERS or not following.norm.isalpha():
             continue
+        if following.norm in reader_words("bearing"):
+            continue  # ("..., then cayenne, all hanging with ripe red fruit": every field)
         beyond = items[index + 2] if index + 2 < len(items) else None
         if beyond is None or beyond.role not in ATTRIBUTE_ROLES:
             item.role = "filler"
