@@ -122,8 +122,6 @@ from agrirecipe.resolve._lists import fill_gapped_counts, spread_value_lists
 from agrirecipe.resolve._loose import attach_loose
 from agrirecipe.resolve._measures import (
     drop_total_sizes,
-    parallel_spacing,
-    same_spacing,
     share_each_measures,
 )
 from agrirecipe.resolve._mentions import Clause, Mention
@@ -158,6 +156,7 @@ from agrirecipe.resolve._retractions import (
     drop_free_choices,
     drop_negated,
 )
+from agrirecipe.resolve._same_spacing import parallel_spacing, same_spacing
 from agrirecipe.resolve._scan import assign_roles
 from agrirecipe.resolve._side_phrases import place_sides
 from agrirecipe.resolve._sides import (
