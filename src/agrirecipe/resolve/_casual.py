@@ -18,7 +18,7 @@ from typing import Any
 import yaml
 
 from agrirecipe.resolve._geometry import number_words
-from agrirecipe.resolve._lexicon import DATA_DIR, Item, vocabulary
+from agrirecipe.resolve._lexicon import DATA_DIR, Item, plot_nouns_pattern
 from agrirecipe.resolve._pictures import read_pictures
 from agrirecipe.resolve._shares import read_shares
 from agrirecipe.resolve._shorthand import expand_shorthand
@@ -376,9 +376,7 @@ _LETTER_PLACE = re.compile(
 def _a_couple() -> re.Pattern[str]:
     """ "a couple" said without "of" before plots ("a couple diff veg plots"), up to two
     words before the plot noun."""
-    nouns = "|".join(
-        re.escape(str(n)) for n in sorted(vocabulary()["plot_nouns"], key=len, reverse=True)
-    )
+    nouns = plot_nouns_pattern()
     return re.compile(rf"\b(?i:a couple)(?= (?!of\b)(?:[A-Za-z-]+ ){{0,2}}(?i:{nouns})s?\b)")
 
 

@@ -33,6 +33,7 @@ __all__ = [
     "Token",
     "load_data",
     "normalise",
+    "plot_nouns_pattern",
     "plurals",
     "reader_words",
     "singular",
@@ -236,6 +237,14 @@ def vocabulary() -> dict[str, Any]:
 
 
 @functools.cache
+def plot_nouns_pattern() -> str:
+    """The plot nouns of vocabulary.yaml as one regular-expression alternation, longest
+    first (for the text passes that look for a word before or after a plot noun)."""
+    nouns = sorted((str(n) for n in vocabulary()["plot_nouns"]), key=len, reverse=True)
+    return "|".join(re.escape(n) for n in nouns)
+
+
+@functools.cache
 def reader_words(name: str) -> frozenset[str]:
     """A list of words one reading pass looks for (``reader_words`` in vocabulary.yaml)."""
     return frozenset(str(word) for word in vocabulary()["reader_words"][name])
@@ -411,14 +420,19 @@ class Lexicon:
         """The variety of one of ``crops`` that a word of six letters or more, said right
         before the crop, misspells by one edit ("fontaine potatoes": Fontane), even when the
         word is an everyday one elsewhere; else None."""
+        from rapidfuzz import process
         from rapidfuzz.distance import DamerauLevenshtein
 
         if len(text) < 6 or " " in text:
             return None
+        # (one edit away, found the way fuzzy() finds its guesses; then only that crop's)
+        near = process.extract(
+            text, self.fuzzy_choices, scorer=DamerauLevenshtein.distance, score_cutoff=1, limit=None
+        )
         found = [
-            phrase
-            for phrase in self.fuzzy_choices
-            if DamerauLevenshtein.distance(text, phrase) == 1
+            str(phrase)
+            for phrase, edits, _ in near
+            if edits == 1
             and any(s.kind == "variety" and s.crop in crops for s in self._fuzzy_senses[phrase])
         ]
         if len(found) != 1:

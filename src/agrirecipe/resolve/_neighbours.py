@@ -16,7 +16,7 @@ import functools
 import re
 from collections.abc import Callable, Sequence
 
-from agrirecipe.resolve._lexicon import Item, scenery_words, vocabulary
+from agrirecipe.resolve._lexicon import Item, plot_nouns_pattern, scenery_words
 from agrirecipe.resolve._side_phrases import CLOSE, NAMED
 
 __all__ = [
@@ -393,9 +393,7 @@ def place_around_a_centre(text: str, tag: Callable[[str], Sequence[Item]]) -> st
 def _placed_plot() -> re.Pattern[str]:
     """ "the vineyard north of it is Pinot Nero": a plot, its place against what a pronoun
     names, then what it grows."""
-    nouns = "|".join(
-        re.escape(str(n)) for n in sorted(vocabulary()["plot_nouns"], key=len, reverse=True)
-    )
+    nouns = plot_nouns_pattern()
     return re.compile(
         rf"\b(?P<plot>(?i:the)\s+(?i:{nouns}))\s+"
         r"(?P<place>(?:(?i:just|right|directly|immediately)\s+)?"

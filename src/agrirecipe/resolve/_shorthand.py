@@ -12,7 +12,7 @@ from __future__ import annotations
 import functools
 import re
 
-from agrirecipe.resolve._lexicon import vocabulary
+from agrirecipe.resolve._lexicon import plot_nouns_pattern
 
 __all__ = ["expand_shorthand"]
 
@@ -55,9 +55,7 @@ _BEHIND_A_PLOT = re.compile(
 @functools.cache
 def _how_many_plots() -> re.Pattern[str]:
     """ "can't remember exactly how many fields": a question about the plots, no plots."""
-    nouns = "|".join(
-        re.escape(str(n)) for n in sorted(vocabulary()["plot_nouns"], key=len, reverse=True)
-    )
+    nouns = plot_nouns_pattern()
     return re.compile(rf"\b(?i:how many)\s+(?i:{nouns})s?\b")
 
 
