@@ -105,3 +105,60 @@ def test_a_field_behind_another_is_next_to_it() -> None:
     assert [r.kind for r in recipe.relations] == ["next_to"]
     # (scenery behind a field places nothing)
     assert generate("wheat with a barn behind it").recipe.relations == ()
+
+
+# --- leftovers of g55, fixed after it moved into the development set ---------------------
+
+
+def test_four_parcels_by_the_compass_are_a_plus_not_a_line(
+    named_relations: Callable[[str], NamedRelations],
+) -> None:
+    relations = named_relations(
+        "Our vineyard is in four parcels - Riesling to the north, Pinot Nero to the south, "
+        "Chardonnay to the east, Cabernet to the west."
+    )
+    assert ("north_of", "Riesling", ("Pinot Noir",)) in relations
+    assert ("east_of", "Chardonnay", ("Cabernet Sauvignon",)) in relations
+    # (the east parcel lies beside the north and south ones, not in line between them)
+    assert not any(kind == "between" for kind, _, _ in relations)
+
+
+def test_a_middle_field_between_compass_parcels_is_still_between(
+    named_relations: Callable[[str], NamedRelations],
+) -> None:
+    relations = named_relations(
+        "Five fields: wheat in the north, carrots in the south, onions in the east, maize in "
+        "the west, and potatoes in the middle."
+    )
+    assert ("between", "Potato", ("Wheat", "Carrot")) in relations
+    assert [r for r in relations if r[0] == "between"] == [
+        ("between", "Potato", ("Wheat", "Carrot"))
+    ]
+
+
+def test_a_cue_of_the_field_before_keeps_the_last_fields_look_its_own() -> None:
+    recipe = generate(
+        "Field A: 50 x 120 m of Durum, heading out. Field B, next to it: 3 acres of Popcorn, "
+        "young plants."
+    ).recipe
+    assert [(f.variety, f.stage) for f in recipe.fields] == [
+        ("Durum", "Reproductive"),
+        ("Popcorn", "Vegetative"),
+    ]
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "the lower field is cabbage and thats it for crops, rest of the farm is yard, sheds "
+        "and a muck heap",
+        "the lower field is cabbage and thats it",
+        "cabbage, that's all for the fields",
+        "just one cabbage field, nothing else in the way of crops",
+        "one cabbage field and no other plots",
+        "a cabbage field, no more fields",
+    ],
+)
+def test_closing_words_that_there_is_nothing_else_ask_for_no_field(prompt: str) -> None:
+    recipe = generate(prompt).recipe
+    assert [f.crop for f in recipe.fields] == ["Cabbage"]

@@ -354,12 +354,21 @@ def past_a_reference(
 def said_by_each(before: Sequence[Mention], others: Sequence[Item]) -> bool:
     """Whether the fields before the last already say, each, what ``others`` say (the
     same attribute, its own value): words after the last field are then its own."""
-    wanted = {i.role for i in others if i.role in ("stage", "health")}
+    wanted = {_says(i) for i in others} & {"stage", "health"}
     members = [r for m in before for r in (m.refinements or [m])]
     earlier = list({id(m): m for m in members}.values())[:-1]
     return (
-        bool(wanted) and bool(earlier) and all(wanted <= {i.role for i in m.items} for m in earlier)
+        bool(wanted)
+        and bool(earlier)
+        and all(wanted <= {_says(i) for i in m.items} for m in earlier)
     )
+
+
+def _says(item: Item) -> str:
+    """The attribute an item says: its role, or for a visual cue ("heading out") the
+    attribute the cue fills."""
+    cue = item.data.get("cue") if item.role == "cue" else None
+    return str(cue.attribute) if cue is not None else item.role
 
 
 def says_all_plants(item: Item) -> bool:

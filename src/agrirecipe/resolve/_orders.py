@@ -91,6 +91,7 @@ def complete_orders(
     # "onions in the west field, Imperator in the middle one and Danvers in the east
     # field": a field with one field on each side of it on one axis is between them
     middles = {r.subject for r in relations if r.kind == "between"}
+    other_axis = {"ns": "ew", "ew": "ns"}
     for axis in ("ns", "ew"):
         for middle in range(len(fields)):
             before = [a for a, b in edges[axis] if b == middle]
@@ -100,6 +101,12 @@ def complete_orders(
                 and len(after) == 1
                 and len({middle, before[0], after[0]}) == 3
                 and middle not in middles
+                # ("Riesling to the north, Pinot Nero to the south, Chardonnay to the
+                # east": the east parcel lies east of both ends, beside them, not in line)
+                and not (
+                    related(other_axis[axis], middle, before[0])
+                    and related(other_axis[axis], middle, after[0])
+                )
             ):
                 middles.add(middle)
                 completed.append(

@@ -32,6 +32,9 @@ __all__ = [
 
 #: Words that may stand between a negation and what it negates ("no any apples").
 _ANY = frozenset({"any", "a", "an", "the", "some"})
+#: Words between a negation and the plots it denies ("and no other plots", "no more
+#: fields"): the fields named so far are all there are.
+_OTHER = frozenset({"other", "more", "further", "extra", "additional", "else"})
 
 
 def apply_corrections(clauses: Sequence[Clause]) -> list[str]:
@@ -196,6 +199,8 @@ def drop_negated(clauses: Sequence[Clause]) -> list[str]:
             head = min(mention.heads, key=lambda h: h.start)
             before = [i for i in clause.items if i.end <= head.start]
             while before and before[-1].norm in _ANY:
+                before.pop()
+            if before and before[-1].norm in _OTHER and not mention.has_crop:
                 before.pop()
             if (before and before[-1].role == "negation") or _gone(clause, mention):
                 clause.mentions.remove(mention)

@@ -53,6 +53,17 @@ _BEHIND_A_PLOT = re.compile(
 
 
 @functools.cache
+def _no_more_plots() -> re.Pattern[str]:
+    """ "thats it for crops", "nothing else in the way of fields": closing words that the
+    fields named are all there are, naming no plot of their own."""
+    nouns = plot_nouns_pattern()
+    return re.compile(
+        r"\b(?P<said>(?i:that'?s|that\s+is)\s+(?i:it|all)|(?i:nothing)\s+(?i:else|more))\s+"
+        rf"(?:(?i:for|in\s+the\s+way\s+of)\s+(?:(?i:the|our|my)\s+)?(?i:{nouns})s?)\b"
+    )
+
+
+@functools.cache
 def _how_many_plots() -> re.Pattern[str]:
     """ "can't remember exactly how many fields": a question about the plots, no plots."""
     nouns = plot_nouns_pattern()
@@ -75,5 +86,7 @@ def expand_shorthand(text: str) -> str:
         lambda m: f"the same size and the same {m.group('what')}", text
     )
     text = _BEHIND_A_PLOT.sub("next to ", text)
+    # "the lower field is cabbage and thats it for crops": no plot of its own
+    text = _no_more_plots().sub(r"\g<said>", text)
     # "Mixed farm, can't remember exactly how many fields: ...": no fields of their own
     return _how_many_plots().sub("how many", text)

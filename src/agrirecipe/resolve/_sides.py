@@ -42,6 +42,8 @@ _LEADING = re.compile(
     r"(?P<rest>(?!(?i:of|to|and|with|in|on|at|is|are)\b)[^\s,;.:()]"
     r"(?:(?!\s+(?i:and|but|while|whereas)\s+(?:(?i:the)\s+)?"
     r"(?i:north|south|east|west|top|bottom|upper|lower)(?i:ern)?\s)"
+    # (nor past closing words: "the lower field is cabbage and thats it")
+    r"(?!\s+(?i:and|but)\s+(?i:that'?s|that\s+is|nothing|no\s+other|no\s+more)\b)"
     # ("top half corn bottom half wheat": to the next side's part, said without a mark)
     rf"(?!{_SIDE_PART})"
     r"[^,;.:()]|[.,](?=\d))*)"
