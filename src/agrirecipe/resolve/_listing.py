@@ -85,6 +85,10 @@ def listed_fields(
             )
         ):
             break
+        if _placed_again(clauses, clause, named):
+            # ("Two orchards, apple and cherry, cherries north of the apples": a member
+            # listed already, named again to place it, ends the list)
+            break
         # fields named again ("the Comice") or plot words alone ("Beds and ridges run
         # NW-SE") name no new field
         # ("Two blocks ..., Conference pears and the Kordia cherries": a crop said with
@@ -99,6 +103,21 @@ def listed_fields(
             )
         )
     return named
+
+
+def _placed_again(clauses: Sequence[Clause], clause: Clause, named: Sequence[Mention]) -> bool:
+    """Whether ``clause`` only names again, bare, a crop the list named already, and the
+    next clause places it ("..., apple and cherry, cherries north of the apples")."""
+    following = clauses[clause.index + 1] if clause.index + 1 < len(clauses) else None
+    return (
+        len(clause.mentions) == 1
+        and following is not None
+        and following.link is not None
+        and following.link.role in ("relation", "between")
+        and all(i.role in ("head", "filler") for i in clause.mentions[0].items)
+        and bool(own := strong_crops(clause.mentions[0]))
+        and any(strong_crops(m) == own for m in named)
+    )
 
 
 def _named_before(clauses: Sequence[Clause], mention: Mention) -> bool:

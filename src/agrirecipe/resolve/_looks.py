@@ -212,6 +212,10 @@ def colour_lists(items: Sequence[Item]) -> None:
             joiner.role = "filler"
 
 
+#: The plants a colour may be said to hang on ("ripe and orange on the trees").
+_ON_THE_PLANTS = frozenset({"trees", "tree", "plants", "vines", "bushes", "branches"})
+
+
 def colour_after_a_look(items: Sequence[Item]) -> None:
     """'Washington Navels, fruit hanging ripe and orange, packed crates', 'pulling them up
     long and orange', 'the carrots are orange': a crop word that is a colour, ending its
@@ -231,7 +235,12 @@ def colour_after_a_look(items: Sequence[Item]) -> None:
             word.role == "head"
             and word.norm in reader_words("colour_crops")
             and described
-            and (after is None or after.role in ("separator", "conjunction"))
+            and (
+                after is None
+                or after.role in ("separator", "conjunction")
+                # ("fruit ripe and orange on the trees": where the colour hangs)
+                or (after.role == "filler" and after.norm.split()[-1] in _ON_THE_PLANTS)
+            )
         ):
             word.role = "filler"
             word.data["colour"] = True

@@ -58,8 +58,12 @@ from agrirecipe.resolve._structure import (
     per_bed,
     strong_crops,
 )
+from agrirecipe.resolve._words import SENTENCE_MARKS
 
 __all__ = ["attach_loose"]
+
+#: "each" words said right after a list of fields ("2 ha each"): said of the list.
+_EACH_OF_THE_LIST = frozenset({"each", "apiece"})
 
 
 def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list[Item]:
@@ -106,6 +110,23 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
             # "Cherries and strawberries are both flowering, the potatoes were only just
             # planted": "both" is the two just named, not every field
             for mention in pair:
+                mention.items.extend(i for i in attributes if i.role != "all")
+            continue
+        if (
+            says_all
+            and all(i.norm in _EACH_OF_THE_LIST for i in alls)
+            and position
+            # (a field said next, in the same sentence: "..., with a 0.5 ha cherry block")
+            and position + 1 < len(clauses)
+            and clauses[position + 1].mentions
+            and link_norm(clauses[position + 1]) not in SENTENCE_MARKS
+            and not clauses[position - 1].mentions[1:]
+            and len(the_list := coordinated(clauses, position)) >= 2
+            and len(the_list) < len({id(m) for m in mentions})
+        ):
+            # "an apple orchard and a pear orchard, 2 ha each, with a 0.5 ha cherry block
+            # between them": each of the fields listed, not the one said after them
+            for mention in the_list:
                 mention.items.extend(i for i in attributes if i.role != "all")
             continue
         if says_all or goes_on_saying_all(clauses, position, said_all):

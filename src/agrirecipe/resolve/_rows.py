@@ -149,6 +149,11 @@ def directed_row(
             start = [m for c in clauses[:position] for m in c.mentions][-1:]
         fields = fields_of(start + following_list(clauses, position, own), members)
     if len(fields) < 2:
+        # "Jonagored apples (3.5 m rows), Chardonnay vines (2.5 m rows) and Regina
+        # cherries (5 m rows) in three blocks from west to east": a list whose members
+        # each carry their measures in brackets
+        fields = fields_of(_listed_with_measures(clauses, position), members)
+    if len(fields) < 2:
         # "Block 1 Fuji. Block 2 ... The blocks go west to east in that order."
         fields = fields_of(_all_named_before(clauses, position), members)
     if len(fields) < 2:
@@ -172,6 +177,29 @@ def directed_row(
         RelationIntent(kind=kind, subject=a, objects=(b,), text=link.raw)
         for a, b in itertools.pairwise(fields)
     ]
+
+
+#: What a bracket of a listed member's measures holds ("(3.5 m rows)").
+_MEASURE_ROLES = frozenset({"geometry", "size", "filler", "of", "number", "plot"})
+
+
+def _listed_with_measures(clauses: Sequence[Clause], position: int) -> list[Mention]:
+    """The fields of a list that runs from its sentence's start to the row word at
+    ``position``, each member's measures in brackets after it; [] when the sentence is
+    anything else."""
+    start = sentence_start(clauses, position)
+    colon = [c.index for c in clauses[start:position] if link_norm(c) in OPENING_MARKS]
+    start = colon[-1] if colon else start  # ("LiDAR benchmark farm: ...": after it)
+    named: list[Mention] = []
+    for clause in clauses[start:position]:
+        norm = link_norm(clause)
+        if clause.index > start and not (listing(clause.link) or norm in ("(", ")")):
+            return []
+        if not clause.mentions and not all(i.role in _MEASURE_ROLES for i in clause.items):
+            return []
+        named.extend(clause.mentions)
+    bracketed = any(link_norm(c) == "(" for c in clauses[start:position])
+    return named if bracketed and all(m.has_crop for m in named) else []
 
 
 def _all_named_before(clauses: Sequence[Clause], position: int) -> list[Mention]:

@@ -39,6 +39,40 @@ _DENSITY_UNIT_SAID_LAST = re.compile(
 )
 
 
+#: "24 in x 18 in", "24 x 18 in (row x plant)": a spacing in inches written "in", a word
+#: read as the preposition unless a mark or the other inch value follows it.
+_INCHES_BY_INCHES = re.compile(
+    r"\b(?P<a>\d+(?:\.\d+)?)\s*(?:(?i:in)\s*)?(?P<by>x|×|(?i:by))\s*(?P<b>\d+(?:\.\d+)?)\s*"
+    r"(?i:in)(?=\s*(?:[,;.(]|$))"
+    r"|\b(?P<c>\d+(?:\.\d+)?)\s*(?i:in)\s*(?P<by2>x|×|(?i:by))\s*(?P<d>\d+(?:\.\d+)?)\s*(?i:in)\b"
+)
+
+#: "three 1.5 m beds next to each other: lettuce, onions and carrots": the members
+#: listed, then said to lie side by side (a relation word before the colon would end the
+#: heading before its list).
+_SIDE_BY_SIDE_THEN_LISTED = re.compile(
+    r"(?P<head>\b(?i:two|three|four|five|six|seven|eight|\d+)\s+[^,:;.()]{0,40}?"
+    r"(?i:beds|plots|blocks|fields|strips|parcels|paddocks))\s+"
+    r"(?P<rel>(?i:next\s+to\s+each\s+other|side\s+by\s+side|beside\s+each\s+other|"
+    r"alongside\s+each\s+other))\s*:\s*"
+    # (the list to its last member, said after "and")
+    # (past a decimal point: "Ladyfinger at 2.5 x 2.5 m")
+    r"(?P<list>(?:[^.;:!?]|(?<=\d)\.(?=\d))+?\s(?:(?i:and)|&)\s+"
+    # (not when the last member's own measures follow: "..., and Pinot Noir, 10 rows")
+    r"(?:[^,.;:!?()]|(?<=\d)\.(?=\d))++(?:\([^()]*\))?)"
+    r"(?=\s*(?:\.(?!\d)|[;!?]|$|,\s*[^\d\s(]))"
+)
+
+#: "yellow blotches with white down under them": down (fluff) under the leaves, not
+#: "down under" (Australia).
+_DOWN_UNDER_A_THING = re.compile(
+    r"\b(?i:down)\s+(?i:under)(?=\s+(?i:them|it|the|their|its|each|every|most|all)\b)"
+)
+
+#: "three 1.5 m beds next to each other, one each of lettuce, onions and carrots": the
+#: members of the count, listed as after a colon.
+_ONE_EACH_OF = re.compile(r"\s*[,;]\s*(?i:one)\s+(?i:each)\s+(?i:of|for)\s+")
+
 #: "a Chardonnay block of the same size and spacing": the same size and the same spacing.
 _SAME_SIZE_AND_SPACING = re.compile(
     r"\b(?i:the\s+)?(?i:same)\s+(?i:size)\s+(?i:and)\s+(?P<what>(?i:row\s+|plant\s+)?(?i:spacing))\b"
@@ -50,6 +84,22 @@ _BEHIND_A_PLOT = re.compile(
     r"\b(?:(?i:just|right|directly|close)\s+)?(?i:behind)\s+(?=(?i:a|an)\s+(?:[A-Za-z-]+\s+){0,2}"
     r"(?i:field|plot|block|orchard|vineyard|patch|strip|grove|bed|row)s?\b)"
 )
+
+
+@functools.cache
+def _plot_placed_then_planted() -> re.Pattern[str]:
+    """ "The orchard on the south side of the farm has apple trees": a plot of no crop,
+    placed on a side of the farm, then said to hold its crop."""
+    nouns = plot_nouns_pattern()
+    return re.compile(
+        r"(?:^|(?<=[.!?;:]\s))(?P<plot>(?i:the|our|my)\s+(?:[A-Za-z-]+\s+){0,2}?"
+        rf"(?i:{nouns}))\s+"
+        r"(?P<place>(?i:on|in|at|along|across)\s+(?i:the)\s+(?i:(?:far\s+)?"
+        r"(?:north|south|east|west|top|bottom|upper|lower)(?:ern)?)"
+        r"(?:\s+(?i:side|end|part|corner|half|edge))?"
+        r"(?:\s+(?i:of)\s+(?i:the|our|my)\s+(?i:farm|property|place|holding))?)\s+"
+        r"(?=(?i:has|have|holds|grows|is\s+planted\s+with|is\s+down\s+to)\b)"
+    )
 
 
 @functools.cache
@@ -76,6 +126,19 @@ def expand_shorthand(text: str) -> str:
     text = _DENSITY_UNIT_SAID_LAST.sub(
         lambda m: f"{m.group('a')} {m.group('unit')}{m.group('mid')}{m.group('unit')}", text
     )
+    # "three beds, one each of lettuce, onions and carrots": three beds: lettuce, ...
+    text = _ONE_EACH_OF.sub(": ", text)
+    text = _SIDE_BY_SIDE_THEN_LISTED.sub(r"\g<head>: \g<list>, \g<rel>", text)
+    # "white down under them": the fluff beneath the leaves
+    text = _DOWN_UNDER_A_THING.sub("down beneath", text)
+    # "cabbages at 24 in x 18 in": 24 x 18 inches
+    text = _INCHES_BY_INCHES.sub(
+        lambda m: (
+            f"{m.group('a') or m.group('c')} {m.group('by') or m.group('by2')} "
+            f"{m.group('b') or m.group('d')} inches"
+        ),
+        text,
+    )
     # "rows 6 m and 3 m apart respectively": the row spacing of each in turn
     text = _APART_RESPECTIVELY.sub(r"row spacing \g<a> and \g<b> ", text)
     # "Spelt plot, 2.5 m drill width x 60 m": a plot one drill wide
@@ -86,6 +149,8 @@ def expand_shorthand(text: str) -> str:
         lambda m: f"the same size and the same {m.group('what')}", text
     )
     text = _BEHIND_A_PLOT.sub("next to ", text)
+    # "The orchard on the south side of the farm has apple trees": placed, then planted
+    text = _plot_placed_then_planted().sub(r"\g<place>, \g<plot> ", text)
     # "the lower field is cabbage and thats it for crops": no plot of its own
     text = _no_more_plots().sub(r"\g<said>", text)
     # "Mixed farm, can't remember exactly how many fields: ...": no fields of their own
