@@ -162,3 +162,19 @@ def test_a_cue_of_the_field_before_keeps_the_last_fields_look_its_own() -> None:
 def test_closing_words_that_there_is_nothing_else_ask_for_no_field(prompt: str) -> None:
     recipe = generate(prompt).recipe
     assert [f.crop for f in recipe.fields] == ["Cabbage"]
+
+
+def test_measures_after_a_field_named_again_are_the_placed_fields() -> None:
+    recipe = generate(
+        "grape vines, 9 ft rows, 6 ft between vines, 2.5 acres, rows running north-south. plus "
+        "1 acre of cherries south of the vines at 16 x 8 ft"
+    ).recipe
+    assert [
+        (f.crop, f.agronomy.row_spacing_m, f.agronomy.in_row_spacing_m) for f in recipe.fields
+    ] == [
+        ("Grape", pytest.approx(2.7432), pytest.approx(1.8288)),
+        ("Cherry", pytest.approx(4.8768), pytest.approx(2.4384)),
+    ]
+    # (a new field placed against keeps the measures said after it)
+    new = generate("1 acre of cherries south of a vineyard at 3 x 1.5 m").recipe
+    assert [f.agronomy.row_spacing_m for f in new.fields if f.crop == "Grape"] == [3.0]

@@ -218,3 +218,29 @@ def test_a_direction_after_a_list_with_bracketed_measures(
     )
     assert ("west_of", "Jonagold", ("Chardonnay",)) in relations
     assert ("west_of", "Chardonnay", ("Regina",)) in relations
+
+
+def test_vines_listed_after_fields_of_no_vine_crop_are_a_vineyard() -> None:
+    recipe = generate(
+        "the whole farm in winter: bare apple trees, dormant vines and a field of cabbages"
+    ).recipe
+    assert [(f.crop, f.season) for f in recipe.fields] == [
+        ("Apple", "Winter"),
+        ("Grape", "Winter"),
+        ("Cabbage", "Winter"),
+    ]
+    # (the haulm of potatoes named before stays theirs)
+    potatoes = generate("Russet potatoes, vines dying back and a wheat field").recipe
+    assert [f.crop for f in potatoes.fields] == ["Potato", "Wheat"]
+
+
+def test_two_plots_that_touch_are_next_to_each_other(
+    named_relations: Callable[[str], NamedRelations],
+) -> None:
+    relations = named_relations(
+        "Our polytunnel door is open in this shot and you can see outside: California Wonder "
+        "peppers with big blocky green fruit on the left, San Marzano tomatoes on the right "
+        "hanging heavy and red. The two plots touch, only a narrow path between."
+    )
+    assert {kind for kind, _, _ in relations} == {"next_to", "west_of"}
+    assert len(generate("apples with a touch of frost").recipe.fields) == 1

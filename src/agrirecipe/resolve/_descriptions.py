@@ -107,6 +107,8 @@ def dissolve_plant_parts(clauses: Sequence[Clause], crop_categories: dict[str, s
             continue  # "Bare vines pruned back ..., and the pear trees ... are bare too"
         if definite and plants_of_no_field_before(clauses, position, mention):
             continue  # "the pear orchard has fire blight, the vines have downy mildew"
+        if listed and plants_of_no_field_before(clauses, position, mention):
+            continue  # "bare apple trees, dormant vines and a field of cabbages"
         if (
             definite
             and (not predicate or said_to_be_somewhere(mention))

@@ -135,6 +135,7 @@ from agrirecipe.resolve._neighbours import (
     place_neighbouring_plots,
 )
 from agrirecipe.resolve._orders import complete_orders, drop_placed_neighbours
+from agrirecipe.resolve._placed_members import measures_after_a_placed_reference
 from agrirecipe.resolve._placements import predicate_of_the_placed
 from agrirecipe.resolve._plots_of_the_crop import count_the_crop
 from agrirecipe.resolve._purposes import purpose_diseases
@@ -325,6 +326,7 @@ class PromptReader(FieldReading):
         clauses = decompose(items, builder)
         promote_weak_varieties(clauses, builder)
         predicate_of_the_placed(clauses)
+        measures_after_a_placed_reference(clauses)
         self._note(drop_free_choices(clauses), "left to the reader's choice: no field of its own")
         apply_plural_counts(clauses, int(vocabulary()["plural_fields"]))
         take_the_lower_count(clauses)

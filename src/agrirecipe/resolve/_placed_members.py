@@ -18,6 +18,7 @@ from agrirecipe.resolve._zones import zone_of
 
 __all__ = [
     "in_another_zone",
+    "measures_after_a_placed_reference",
     "on_a_side_of_it",
     "other_side",
     "placed_against_another",
@@ -133,3 +134,41 @@ def in_another_zone(kept: Sequence[Mention], mention: Mention) -> bool:
     crops = strong_crops(mention)
     same = [m for k in kept for m in (k.refinements or [k]) if strong_crops(m) & crops]
     return own is not None and bool(same) and all(zone_of(m.items) not in (None, own) for m in same)
+
+
+def measures_after_a_placed_reference(clauses: Sequence[Clause]) -> None:
+    """'plus 1 acre of cherries south of the vines at 16 x 8 ft': row measures said after
+    the field a new one is placed against, when that field is named again with "the"
+    (a crop named in an earlier sentence or clause), are the new field's: its measures
+    were said when it was named. They move from the reference to the subject (the one
+    field of the clause before) when the subject says no row measure of its own."""
+    for position, clause in enumerate(clauses[1:], start=1):
+        link, previous = clause.link, clauses[position - 1]
+        if (
+            link is None
+            or link.role != "relation"
+            or len(clause.mentions) != 1
+            or len(previous.mentions) != 1
+            or not previous.mentions[0].has_crop
+        ):
+            continue
+        reference, subject = clause.mentions[0], previous.mentions[0]
+        words = sorted(reference.items, key=lambda item: item.start)
+        heads = [i.start for i in reference.heads]
+        crops = strong_crops(reference)
+        if not words or words[0].norm != "the" or not heads or not crops:
+            continue
+        named_before = any(
+            strong_crops(m) & crops for c in clauses[: position - 1] for m in c.mentions
+        )
+        measures = [i for i in words if i.role == "geometry" and i.start > max(heads)]
+        if (
+            not named_before
+            or not measures
+            or any(i.role == "geometry" for i in subject.items)
+            or any(i.role == "geometry" for i in words if i.start < max(heads))
+        ):
+            continue
+        gone = {id(i) for i in measures}
+        reference.items = [i for i in reference.items if id(i) not in gone]
+        subject.items.extend(measures)

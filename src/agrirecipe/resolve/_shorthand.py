@@ -63,6 +63,12 @@ _SIDE_BY_SIDE_THEN_LISTED = re.compile(
     r"(?=\s*(?:\.(?!\d)|[;!?]|$|,\s*[^\d\s(]))"
 )
 
+#: "The two plots touch, only a narrow path between": the verb (not "a touch of frost").
+_THEY_TOUCH = re.compile(
+    r"\b(?P<who>(?i:the\s+(?:two|both)\s+[A-Za-z]+|both\s+(?:of\s+them|[A-Za-z]+)|they))\s+"
+    r"(?i:touch|meet|adjoin)\b(?!\s+(?i:of)\b)"
+)
+
 #: "yellow blotches with white down under them": down (fluff) under the leaves, not
 #: "down under" (Australia).
 _DOWN_UNDER_A_THING = re.compile(
@@ -129,6 +135,8 @@ def expand_shorthand(text: str) -> str:
     # "three beds, one each of lettuce, onions and carrots": three beds: lettuce, ...
     text = _ONE_EACH_OF.sub(": ", text)
     text = _SIDE_BY_SIDE_THEN_LISTED.sub(r"\g<head>: \g<list>, \g<rel>", text)
+    # "The two plots touch": they are next to each other
+    text = _THEY_TOUCH.sub(r"\g<who> are next to each other", text)
     # "white down under them": the fluff beneath the leaves
     text = _DOWN_UNDER_A_THING.sub("down beneath", text)
     # "cabbages at 24 in x 18 in": 24 x 18 inches
