@@ -206,3 +206,14 @@ def test_measures_before_a_dash_that_opens_the_list() -> None:
     assert [(f.agronomy.row_spacing_m, f.agronomy.rows_per_bed) for f in recipe.fields] == [
         (1.5, 4)
     ] * 3
+
+
+def test_a_member_named_again_by_its_bare_plot_noun_to_place_it() -> None:
+    recipe = generate(
+        "Two plots for drone mapping: an orchard 60 x 120 m with 4 m rows and a vegetable "
+        "field 60 x 120 m with 0.75 m rows, orchard east of the veg."
+    ).recipe
+    assert [f.agronomy.row_spacing_m for f in recipe.fields] == [4.0, 0.75]
+    assert [(r.kind, r.subject, r.objects) for r in recipe.relations] == [
+        ("east_of", recipe.fields[0].id, (recipe.fields[1].id,))
+    ]

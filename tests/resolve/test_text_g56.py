@@ -194,8 +194,9 @@ def test_one_bed_each_of_a_list_said_side_by_side(
         "and carrots, onions on the middle bed."
     )
     recipe = generate(prompt).recipe
-    # (the bed centres: one bed's width each)
+    # (the bed centres: one bed's width each; one bed each, not three)
     assert [f.agronomy.row_spacing_m for f in recipe.fields] == [1.5, 1.5, 1.5]
+    assert [f.bed_count for f in recipe.fields] == [1, 1, 1]
     assert ("between", "Onion", ("Lettuce", "Carrot")) in crop_relations(prompt)
 
 
@@ -244,3 +245,15 @@ def test_two_plots_that_touch_are_next_to_each_other(
     )
     assert {kind for kind, _, _ in relations} == {"next_to", "west_of"}
     assert len(generate("apples with a touch of frost").recipe.fields) == 1
+
+
+def test_a_count_of_beds_before_a_list_of_as_many_is_a_bed_each() -> None:
+    recipe = generate("three 1.5 m beds: lettuce, onions and carrots").recipe
+    assert [(f.crop, f.bed_count) for f in recipe.fields] == [
+        ("Lettuce", 1),
+        ("Onion", 1),
+        ("Carrot", 1),
+    ]
+    # (more beds than members: the count is each member's)
+    six = generate("six 1.5 m beds: lettuce, onions and carrots").recipe
+    assert [f.bed_count for f in six.fields] == [6, 6, 6]

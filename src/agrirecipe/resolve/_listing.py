@@ -106,17 +106,24 @@ def listed_fields(
 
 
 def _placed_again(clauses: Sequence[Clause], clause: Clause, named: Sequence[Mention]) -> bool:
-    """Whether ``clause`` only names again, bare, a crop the list named already, and the
-    next clause places it ("..., apple and cherry, cherries north of the apples")."""
+    """Whether ``clause`` only names again, bare, a crop or plot the list named already,
+    and the next clause places it ("..., apple and cherry, cherries north of the apples";
+    "an orchard ... and a vegetable field ..., orchard east of the veg")."""
     following = clauses[clause.index + 1] if clause.index + 1 < len(clauses) else None
-    return (
-        len(clause.mentions) == 1
-        and following is not None
-        and following.link is not None
-        and following.link.role in ("relation", "between")
-        and all(i.role in ("head", "filler") for i in clause.mentions[0].items)
-        and bool(own := strong_crops(clause.mentions[0]))
-        and any(strong_crops(m) == own for m in named)
+    if (
+        len(clause.mentions) != 1
+        or following is None
+        or following.link is None
+        or following.link.role not in ("relation", "between")
+        or not all(i.role in ("head", "filler", "plot") for i in clause.mentions[0].items)
+    ):
+        return False
+    again = clause.mentions[0]
+    if own := strong_crops(again):
+        return any(strong_crops(m) == own for m in named)
+    noun = again.plot.get("noun") if again.plot is not None and not again.category else None
+    return noun is not None and any(
+        m.plot is not None and m.plot.get("noun") == noun and m.plot.get("options") for m in named
     )
 
 

@@ -44,8 +44,10 @@ from agrirecipe.resolve._measures import (
     after_list_plots,
     bracketed_by,
     each_row_long,
+    fields_of_the_list_headed,
     heads_a_list,
     in_a_sentence_of_measures,
+    one_bed_each,
     opens_with_rows,
     parallel_fields,
     sentence_fields,
@@ -323,6 +325,9 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
         ):
             # "A, B and C, each 20 x 30 m, rows at 90°": still about each of them;
             # "two lettuce plots (10 rows each, 35 cm row spacing)": each of those
+            if listed_count := fields_of_the_list_headed(clauses, position):
+                # ("three 1.5 m beds: lettuce, onions and carrots": a bed each)
+                geometry = one_bed_each(geometry, listed_count)
             owner = bracketed_by(clauses, position)
             (owner.items if owner is not None else scene).extend(geometry)
             if not any(i.role == "all" for i in scene):

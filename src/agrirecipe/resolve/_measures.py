@@ -13,6 +13,7 @@ from __future__ import annotations
 import itertools
 import math
 from collections.abc import Iterable, Sequence
+from dataclasses import replace
 
 from agrirecipe.resolve._geometry import geometry_nouns
 from agrirecipe.resolve._lexicon import Item
@@ -28,8 +29,10 @@ __all__ = [
     "bracketed_by",
     "drop_total_sizes",
     "each_row_long",
+    "fields_of_the_list_headed",
     "heads_a_list",
     "in_a_sentence_of_measures",
+    "one_bed_each",
     "opens_with_rows",
     "parallel_fields",
     "sentence_fields",
@@ -403,29 +406,56 @@ def heads_a_list(clauses: Sequence[Clause], position: int) -> bool:
     """Whether a measure clause begins a run of measures that a colon ends, before a list
     of two or more fields ("rows east-west, 2.0 m between rows and 1.1 m between vines:
     Riesling (20 rows) on the north side, Pinot Noir (16 rows) on the south side")."""
+    return fields_of_the_list_headed(clauses, position) >= 2
+
+
+def fields_of_the_list_headed(clauses: Sequence[Clause], position: int) -> int:
+    """How many fields the list after a run of measures ended by a colon names (see
+    :func:`heads_a_list`); 0 when the measure clause heads no such list."""
     index = position
     while index < len(clauses) and not clauses[index].mentions:
         clause = clauses[index]
         if index > position and (clause.link is None or not listing(clause.link)):
-            return False
+            return 0
         if not clause.items or any(
             i.role not in ("geometry", "filler", "all", "of") for i in clause.items
         ):
-            return False
+            return 0
         index += 1
     if index >= len(clauses) or index == position:
-        return False
+        return 0
     opening = clauses[index]
     # ("three 1.5 m beds, 4 rows per bed, 30 cm in-row - Cos, Lollo, Iceberg": or a dash)
     if opening.link is None or opening.link.norm not in (":", "-", "–", "—"):
-        return False
+        return 0
     listed = [opening]
+    seen = {h.norm for m in opening.mentions for h in m.heads if h.role == "head"}
     for clause in clauses[index + 1 :]:
         if clause.link is not None and clause.link.norm in SENTENCE_MARKS:
             break
+        heads = {h.norm for m in clause.mentions for h in m.heads if h.role == "head"}
+        if heads & seen:
+            break  # ("..., onions on the middle bed": a member named again)
         if clause.mentions and clause.link is not None and listing(clause.link):
             listed.append(clause)
-    return len(listed) >= 2
+            seen |= heads
+    return len(listed) if len(listed) >= 2 else 0
+
+
+def one_bed_each(geometry: Sequence[Item], members: int) -> list[Item]:
+    """'three 1.5 m beds: lettuce, onions and carrots': a count of beds said before a
+    list of as many fields is one bed for each of them. Returns the measures so read."""
+    read: list[Item] = []
+    for item in geometry:
+        matches = item.data.get("geometry", ())
+        if not any(m.key == "beds" and m.value == members for m in matches):
+            read.append(item)
+            continue
+        one = [replace(m, value=1.0) if m.key == "beds" else m for m in matches]
+        read.append(
+            Item(item.tokens, item.senses, role=item.role, data={**item.data, "geometry": one})
+        )
+    return read
 
 
 def shared_by_all_after(clauses: Sequence[Clause], position: int) -> bool:

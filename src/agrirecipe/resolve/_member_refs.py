@@ -197,6 +197,13 @@ def member_said_again(clause: Clause, parent: Mention) -> Mention | None:
         for i in clause.items
         if i.role not in ("separator", "filler", "plot") and i.norm not in ("one", "ones")
     ]
+    if mention is not None and not words and all(i.role == "plot" for i in clause.items):
+        # "Two plots ...: an orchard ... and a vegetable field ..., orchard east of the
+        # veg": the full list's one member of that plot noun, named bare
+        noun = mention.plot["noun"] if mention.plot is not None else None
+        same = [m for m in members if m.plot is not None and m.plot["noun"] == noun]
+        if noun is not None and len(same) == 1 and same[0].plot is not None:
+            return same[0] if same[0].plot["options"] else None
     # ("put the blighted plot south of ...": a verb of the request before it)
     leading = itertools.takewhile(lambda i: i.role == "filler", clause.items)
     pointed = any(i.norm in ("the", "that", "this") for i in leading)
