@@ -18,6 +18,7 @@ from agrirecipe.resolve._structure import (
     pronoun_one,
     same_variety,
     strong_crops,
+    with_plot_noun,
 )
 
 __all__ = [
@@ -123,7 +124,7 @@ def _placed_again(clauses: Sequence[Clause], clause: Clause, named: Sequence[Men
         return any(strong_crops(m) == own for m in named)
     noun = again.plot.get("noun") if again.plot is not None and not again.category else None
     return noun is not None and any(
-        m.plot is not None and m.plot.get("noun") == noun and m.plot.get("options") for m in named
+        m.plot is not None and m.plot.get("options") for m in with_plot_noun(named, noun)
     )
 
 

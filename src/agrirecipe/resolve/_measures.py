@@ -452,9 +452,7 @@ def one_bed_each(geometry: Sequence[Item], members: int) -> list[Item]:
             read.append(item)
             continue
         one = [replace(m, value=1.0) if m.key == "beds" else m for m in matches]
-        read.append(
-            Item(item.tokens, item.senses, role=item.role, data={**item.data, "geometry": one})
-        )
+        read.append(replace(item, data={**item.data, "geometry": one}))
     return read
 
 

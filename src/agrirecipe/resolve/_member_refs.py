@@ -18,6 +18,7 @@ from collections.abc import Sequence
 from agrirecipe.resolve._geometry import bearing, compass_words
 from agrirecipe.resolve._lexicon import Item, vocabulary
 from agrirecipe.resolve._mentions import Clause, Mention
+from agrirecipe.resolve._structure import with_plot_noun
 
 __all__ = [
     "BACK_POINTERS",
@@ -201,7 +202,7 @@ def member_said_again(clause: Clause, parent: Mention) -> Mention | None:
         # "Two plots ...: an orchard ... and a vegetable field ..., orchard east of the
         # veg": the full list's one member of that plot noun, named bare
         noun = mention.plot["noun"] if mention.plot is not None else None
-        same = [m for m in members if m.plot is not None and m.plot["noun"] == noun]
+        same = with_plot_noun(members, noun)
         if noun is not None and len(same) == 1 and same[0].plot is not None:
             return same[0] if same[0].plot["options"] else None
     # ("put the blighted plot south of ...": a verb of the request before it)

@@ -50,7 +50,14 @@ __all__ = [
     "share_leading_attributes",
     "share_trailing_attributes",
     "strong_crops",
+    "with_plot_noun",
 ]
+
+
+def with_plot_noun(mentions: Sequence[Mention], noun: object) -> list[Mention]:
+    """The mentions named by the plot noun ``noun`` ("orchard", "field"), in order: the
+    fields a bare plot noun said again may name."""
+    return [m for m in mentions if m.plot is not None and m.plot.get("noun") == noun]
 
 
 def strong_crops(mention: Mention) -> set[str]:
