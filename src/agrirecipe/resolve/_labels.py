@@ -140,6 +140,7 @@ def resolve_labels(text: str, tag: Callable[[str], Sequence[Item]]) -> tuple[str
     crops is returned unchanged.
     """
     text = _crops_in_labels(_code_labels(text), tag)
+    text = _SIZED_THEN_NAMED.sub(_sized_then_named, text)
     text = _BRACKETED_THEN_NAMED.sub(r"\g<head>: ", text)
     text = _PLACED_THEN_MEASURED.sub(r"\g<head> \g<rest>, \g<where>", text)
     text = _NAME_PLACED_THEN_MEASURED.sub(r"\g<name>: \g<rest>, \g<where>\g<end>", text)
@@ -310,6 +311,24 @@ _NAME_PLACED_THEN_MEASURED = re.compile(
     rf"(?P<where>(?:(?i:to\s+the)\s+)?{_CLOSE}(?i:north|south|east|west)\s+"
     r"(?i:of)\s+[^,:;.]+?)\s*:\s*(?P<rest>\d(?:[^.;:]|\.(?=\d))*?)\s*(?P<end>[;!?]|\.(?!\d)|$)"
 )
+
+# "Field A, 3 ha: Agria potatoes, healthy. Field B (2.5 ha): Winter Wheat": a label with
+# its size, then what it grows, as in "Field A: Agria potatoes, healthy, 3 ha" (the size
+# the label's field's, never a second size of the field before)
+_SIZE = (
+    r"\d+(?:\.\d+)?\s*(?:m\s*)?(?i:x|by|×)\s*\d+(?:\.\d+)?\s*(?i:m|ft|metres|meters)\b"
+    r"|\d+(?:\.\d+)?\s*(?:(?i:ha|hectares?|acres?|ac|m2|sq\.?\s*m)\b|m²)"
+)
+_SIZED_THEN_NAMED = re.compile(
+    rf"(?P<head>\b{_LABEL})\s*(?:,\s*(?P<size>{_SIZE})|\(\s*(?P<bracketed>{_SIZE})\s*\))"
+    r"\s*[:\-–—]\s*(?P<rest>(?:[^.;!?]|\.(?=\d))+?)\s*(?P<end>[;!?]|\.(?!\d)|$)"
+)
+
+
+def _sized_then_named(match: re.Match[str]) -> str:
+    size = match.group("size") or match.group("bracketed")
+    return f"{match.group('head')}: {match.group('rest')}, {size}{match.group('end')}"
+
 
 # "Strip 1 (west end) dent corn, strip 2 flint corn": a label with a bracket, then what
 # it grows, as in "Strip 1 (west end): dent corn" (the bracket the label's own)

@@ -126,8 +126,8 @@ _GRAZING = frozenset(
 
 
 def _pastures(items: Sequence[Item]) -> None:
-    """'sheep in the paddock', 'a field of cows': pasture, no field of any crop (not "sheep
-    grazing in the orchard": the orchard still grows trees)."""
+    """'sheep in the paddock', 'a field of cows', 'the sheep paddock': pasture, no field of
+    any crop (not "sheep grazing in the orchard": the orchard still grows trees)."""
     livestock = reader_words("livestock")
     for index, item in enumerate(items):
         spec = item.data.get("value") if item.role == "plot" else None
@@ -138,14 +138,18 @@ def _pastures(items: Sequence[Item]) -> None:
         # ("sheep in the paddock", "Cows graze the paddock by the road")
         kept = next((k for k, w in enumerate(words_before) if w in livestock), None)
         if (
-            kept is not None
-            and len(words_before) - kept >= 3
-            and all(w in _GRAZING for w in words_before[kept + 1 :])
-            and words_before[kept + 1] != "the"
-        ) or (
-            len(words_after) == 2
-            and words_after[0] in ("of", "with", "full of")
-            and words_after[1] in livestock
+            (words_before and words_before[-1] in livestock)
+            or (
+                kept is not None
+                and len(words_before) - kept >= 3
+                and all(w in _GRAZING for w in words_before[kept + 1 :])
+                and words_before[kept + 1] != "the"
+            )
+            or (
+                len(words_after) == 2
+                and words_after[0] in ("of", "with", "full of")
+                and words_after[1] in livestock
+            )
         ):
             item.role = "filler"
             item.data["scenery"] = "living"

@@ -177,7 +177,7 @@ def reject_unknown_names(
                 # ("the little home orchard": an everyday word before a plot that
                 # says its crops names no crop; real crops the hierarchy lacks were
                 # refused by name before)
-                everyday = word is not None and word.norm in everyday_words()
+                everyday = word is not None and _everyday(word.norm)
                 # ("Compact plot pair ...: strawberries ..., a lettuce block": nor
                 # before plots whose crops are named after them)
                 if word is not None and not (
@@ -197,6 +197,15 @@ def reject_unknown_names(
                         stage="resolve",
                         hint=f"{crop} varieties: " + ", ".join(varieties),
                     )
+
+
+def _everyday(word: str) -> bool:
+    """An everyday word, or one made of an everyday word by "-ed" ("ridged plots",
+    "terraced", "mulched": how a plot is made, never the name of a crop)."""
+    words = everyday_words()
+    return word in words or (
+        word.endswith("ed") and len(word) > 5 and (word[:-1] in words or word[:-2] in words)
+    )
 
 
 def _unknown_crop(word: str, nearest_crops: NearestCrops) -> None:

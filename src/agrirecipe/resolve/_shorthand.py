@@ -75,6 +75,10 @@ _DOWN_UNDER_A_THING = re.compile(
     r"\b(?i:down)\s+(?i:under)(?=\s+(?i:them|it|the|their|its|each|every|most|all)\b)"
 )
 
+#: "The experimental farm, as I caught it: ...": the photographer catching the scene, not
+#: a field catching a disease ("the potatoes caught it too").
+_I_CAUGHT_IT = re.compile(r"\b(?P<who>I|(?i:we))\s+(?i:caught)\s+(?=(?i:it|this|them)\b)")
+
 #: "three 1.5 m beds next to each other, one each of lettuce, onions and carrots": the
 #: members of the count, listed as after a colon.
 _ONE_EACH_OF = re.compile(r"\s*[,;]\s*(?i:one)\s+(?i:each)\s+(?i:of|for)\s+")
@@ -137,6 +141,8 @@ def expand_shorthand(text: str) -> str:
     text = _SIDE_BY_SIDE_THEN_LISTED.sub(r"\g<head>: \g<list>, \g<rel>", text)
     # "The two plots touch": they are next to each other
     text = _THEY_TOUCH.sub(r"\g<who> are next to each other", text)
+    # "as I caught it": as I saw it
+    text = _I_CAUGHT_IT.sub(r"\g<who> saw ", text)
     # "white down under them": the fluff beneath the leaves
     text = _DOWN_UNDER_A_THING.sub("down beneath", text)
     # "cabbages at 24 in x 18 in": 24 x 18 inches

@@ -150,7 +150,7 @@ def _placed_on_its_side(match: re.Match[str]) -> str:
 # "Durondeau pears in the north orchard", "Cos on the north beds": where the pears are
 _IN_SIDE_PLOT = re.compile(
     r"\b(?P<at>(?i:in|on))\s+(?i:the)\s+(?P<side>(?i:north|south|east|west))(?i:ern)?\s+"
-    r"(?i:orchard|vineyard|paddock|grove|plantation|patch|strip|beds|rows|terraces)\b"
+    r"(?i:orchard|vineyard|paddock|grove|plantation|patch|strip|beds|rows|terraces|garden|allotment)\b"
     r"(?!\s+(?i:of|is|has|are|with)\b)"
 )
 

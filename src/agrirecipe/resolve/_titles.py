@@ -92,16 +92,20 @@ def drop_titles(
         crops = {crop for crop, of in crop_categories.items() if of == category}
         if not _lists_only(field, crops):
             return mentions
+    # ("grapes maybe? like a vineyard in autumn and a lil strawberry patch": a plot that
+    # can hold the title's crop, with no other field after it that could)
+    alone = farm or not any(_holds(m, crops) for m in mentions[2:])
     if (
         not crops
         or (title.plot is not None and not farm and category is None)
         or (title.count is not None and not (farm and title.count == 1))
         or title.refinements
-        or names_a_variety(title)
+        # ("popcorn?? can u even do that. a popcorn field": the same variety named again)
+        or (names_a_variety(title) and not _same_variety(title, field))
         or not (
             strong_crops(field) == crops
             or _lists_only(field, crops)
-            or ((farm or len(mentions) == 2) and _holds(field, crops))
+            or (alone and _holds(field, crops))
         )
         or any(strong_crops(m) & crops for m in mentions[2:])
     ):
@@ -193,6 +197,14 @@ def _kind_of_farm(
         return False
     crops = {crop for crop, of in crop_categories.items() if of == title.category}
     return all(strong_crops(m) and strong_crops(m) <= crops for m in fields)
+
+
+def _same_variety(title: Mention, field: Mention) -> bool:
+    """Whether ``field`` names the variety ``title`` names, and no other."""
+    named = {i for i in title.interpretations or () if i[1] is not None and not i[2]}
+    return bool(named) and named == {
+        i for i in field.interpretations or () if i[1] is not None and not i[2]
+    }
 
 
 def _holds(field: Mention, crops: set[str]) -> bool:
