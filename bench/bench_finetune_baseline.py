@@ -31,7 +31,7 @@ def main() -> None:
 
     settings = load_settings()
     torch.set_num_threads(max(1, min(os.cpu_count() or 1, 8)))
-    examples = build_examples()
+    examples = build_examples(limit=settings.data.max_prompts, seed=settings.seed)
     _, heldout = split_examples(
         examples.examples, heldout_fraction=settings.data.heldout_fraction, seed=settings.seed
     )

@@ -130,9 +130,12 @@ def test_the_shipped_adapter_matches_its_manifest_entry(monkeypatch: pytest.Monk
     assert (adapter.general_type, adapter.adapter_type, adapter.alpha) == ("adapter", "lora", 16)
     assert len(adapter.tensors) == 252
     record = adapter.record
-    assert record["settings"]["train"]["epochs"] == 3
+    assert record["settings"]["train"]["epochs"] == 2
     assert record["steps"] == record["steps_planned"]
-    assert not any(i.startswith("g4-") for i in record["data"]["heldout_ids"])
+    # trained on the local records the finetuned strategy asks, from 700 dev prompts
+    assert record["data"]["records"] == "local"
+    assert record["data"]["prompts"] == record["settings"]["data"]["max_prompts"] == 700
+    assert not any(i.startswith("g57-") for i in record["data"]["heldout_ids"])
 
 
 def test_a_changed_adapter_file_is_refused(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:

@@ -116,7 +116,9 @@ def test_smoke_run_trains_exports_and_records(tmp_path: Path) -> None:
     assert [epoch["epoch"] for epoch in record["epochs"]] == [1, 2, 3]
     assert record["data"] == {
         "source": "benchmarks/prompts.yaml (dev split)",
+        "records": "local",
         "digest": EXAMPLES.digest,
+        "prompts": 3,
         "examples": 3,
         "train": 2,
         "heldout": 1,

@@ -56,10 +56,11 @@ def run(args: argparse.Namespace) -> int:
             hint="pip install 'agrirecipe[finetune]'",
         ) from exc
     settings = load_settings(args.settings).with_overrides(epochs=args.epochs, threads=args.threads)
-    examples = build_examples()
+    examples = build_examples(limit=settings.data.max_prompts, seed=settings.seed)
     print(
-        f"agrirecipe finetune: {len(examples.examples)} examples from the dev prompts "
-        f"({sum(examples.skipped.values())} skipped); loading the base model",
+        f"agrirecipe finetune: {len(examples.examples)} examples from {examples.prompts} dev "
+        f"prompts ({sum(examples.skipped.values())} others skipped or not read); "
+        "loading the base model",
         file=sys.stderr,
     )
     base = load_base_model(args.gguf)

@@ -1,17 +1,19 @@
-"""Training examples: development prompts with the record the llm strategy should write.
+"""Training examples: development prompts with the records the finetuned strategy asks.
 
 The llm strategy does not ask for JSON: it continues a plain-text record one
 line at a time, each line under a grammar (see :mod:`agrirecipe.resolve.llm`).
-A training example is therefore that record for a development prompt, filled
-from the prompt's ground truth and rendered by the strategy's own
-:func:`~agrirecipe.resolve.llm.render_examples`, so the fine-tuned model learns
-exactly the lines the grammars accept::
+The finetuned strategy asks the same lines, each reading only what it depends
+on (a *local* record: the request, then one part's lines; or the request, then
+the parts' words and the relations line). A prompt therefore gives one
+training example per part, plus one for its relations when it has several
+parts, filled from the prompt's ground truth and rendered by the strategy's
+own :func:`~agrirecipe.resolve.llm.render_local`, so the fine-tuned model
+learns exactly the lines the grammars accept::
 
     Request: Bing cherries ready for harvest in summer      <- context (no loss)
-    Parts: Bing cherries ready for harvest in summer        <- target
-    Part 1: Bing cherries ready for harvest in summer
-    Count: 1
-    Crop: Cherry
+    Part 1: Bing cherries ready for harvest in summer       <- context
+    Count: 1                                                <- " 1" is learnt
+    Crop: Cherry                                            <- " Cherry" is learnt
     ...
 
 The request is normalised and split into parts the way the strategy does it
@@ -19,12 +21,16 @@ without a model (texting forms expanded, stated row geometry taken out, parts
 cut at the joining words). Each line's value is the truth's, and it must be one
 of the options the strategy would offer there (the same narrowing); a prompt
 whose truth cannot be written that way is skipped with a reason, so the
-examples never teach an answer the grammar forbids. Skipped in this first
-version: invalid prompts, truths that allow several crops ("an orchard"),
-ranges of field counts and extra fields.
+examples never teach an answer the grammar forbids. Skipped: invalid prompts,
+truths that allow several crops ("an orchard"), ranges of field counts and
+extra fields, parts whose boundaries the model would decide.
 
-The split into training and held-out examples is seeded and by prompt id. Only
-the ``dev`` split of the benchmark is read; blind sets are never trained on.
+``limit`` bounds the prompts used (the development set has grown past 20,000
+prompts; about 700 keep a training run within the hour the issue allows): the
+``dev`` prompts are read in a seeded order until that many gave examples. The
+split into training and held-out examples is seeded and by prompt id, so a
+prompt's examples are all on one side. Only the ``dev`` split of the benchmark
+is read; blind sets are never trained on.
 """
 
 from __future__ import annotations
@@ -54,11 +60,11 @@ _STATE_KEYS = ("stage", "season", "health")
 
 @dataclass(frozen=True, slots=True)
 class TrainingExample:
-    """One development prompt as a record: ``context`` is given, ``target`` is learnt."""
+    """One local record of a development prompt: ``context`` is given, ``target`` is learnt."""
 
     prompt_id: str
     context: str  # "Request: <normalised request>\n"
-    target: str  # the record's lines after the request
+    target: str  # the record's lines after the request (one part's, or the relations')
 
 
 @dataclass(frozen=True, slots=True)
@@ -67,6 +73,11 @@ class ExampleSet:
 
     examples: tuple[TrainingExample, ...]
     skipped: dict[str, int]
+
+    @property
+    def prompts(self) -> int:
+        """How many prompts gave the examples."""
+        return len({example.prompt_id for example in self.examples})
 
     @property
     def digest(self) -> str:
@@ -85,8 +96,14 @@ def build_examples(
     *,
     hierarchy: Hierarchy | None = None,
     knowledge: KnowledgeBase | None = None,
+    limit: int | None = None,
+    seed: int = 0,
 ) -> ExampleSet:
-    """Records for the ``dev`` prompts (default: every shipped benchmark prompt file)."""
+    """Local records for the ``dev`` prompts (default: every shipped benchmark prompt file).
+
+    With ``limit``, the prompts are read in an order shuffled by ``seed`` until
+    ``limit`` of them gave examples; the rest are counted as not read.
+    """
     from agrirecipe.hierarchy import default_hierarchy
     from agrirecipe.knowledge import default_knowledge_base
     from agrirecipe.resolve._lexicon_build import build_lexicon
@@ -103,27 +120,44 @@ def build_examples(
     grammars = strategy.grammars(hierarchy)
     examples: list[TrainingExample] = []
     skipped: Counter[str] = Counter()
-    for item in prompts:
+    items = list(prompts)
+    if limit is not None:
+        items.sort(key=lambda item: item.id)
+        random.Random(seed).shuffle(items)
+    used = 0
+    for item in items:
         if item.split != "dev":
             skipped["not in the dev split"] += 1
             continue
+        if limit is not None and used >= limit:
+            skipped[f"not read (the limit of {limit} prompts was reached)"] += 1
+            continue
         try:
-            examples.append(_example(item, lexicon, strategy, grammars))
+            examples += _examples(item, lexicon, strategy, grammars)
         except _SkipError as reason:
             skipped[str(reason)] += 1
+        else:
+            used += 1
     return ExampleSet(examples=tuple(examples), skipped=dict(sorted(skipped.items())))
 
 
 def split_examples(
     examples: Sequence[TrainingExample], *, heldout_fraction: float, seed: int
 ) -> tuple[list[TrainingExample], list[TrainingExample]]:
-    """A seeded split into (train, held-out); the same ids land in the same side every time."""
-    ordered = sorted(examples, key=lambda e: e.prompt_id)
-    random.Random(seed).shuffle(ordered)
-    count = round(len(ordered) * heldout_fraction)
-    if heldout_fraction > 0 and len(ordered) > 1:
+    """A seeded split by prompt id into (train, held-out) examples: a prompt's examples are
+    all on one side, the same side every time; ``heldout_fraction`` of the prompts are held out."""
+    ids = sorted({example.prompt_id for example in examples})
+    random.Random(seed).shuffle(ids)
+    count = round(len(ids) * heldout_fraction)
+    if heldout_fraction > 0 and len(ids) > 1:
         count = max(1, count)
-    return ordered[count:], ordered[:count]
+    heldout = set(ids[:count])
+    order = {prompt_id: index for index, prompt_id in enumerate(ids)}
+    ordered = sorted(examples, key=lambda e: (order[e.prompt_id], e.context, e.target))
+    return (
+        [e for e in ordered if e.prompt_id not in heldout],
+        [e for e in ordered if e.prompt_id in heldout],
+    )
 
 
 def write_examples(examples: Sequence[TrainingExample], path: str | Path) -> None:
@@ -138,11 +172,13 @@ def write_examples(examples: Sequence[TrainingExample], path: str | Path) -> Non
 # --- one prompt ------------------------------------------------------------------
 
 
-def _example(item: BenchmarkPrompt, lexicon: Any, strategy: Any, grammars: Any) -> TrainingExample:
+def _examples(
+    item: BenchmarkPrompt, lexicon: Any, strategy: Any, grammars: Any
+) -> list[TrainingExample]:
     from agrirecipe.resolve._casual import expand_casual
     from agrirecipe.resolve._geometry import strip_geometry
     from agrirecipe.resolve._grammar import prompt_words
-    from agrirecipe.resolve.llm import render_examples
+    from agrirecipe.resolve.llm import render_local
     from agrirecipe.resolve.llm._evidence import _collect, _hemisphere
     from agrirecipe.resolve.llm._parts import _boundary_open, _field_groups, _repair_parts
 
@@ -186,9 +222,10 @@ def _example(item: BenchmarkPrompt, lexicon: Any, strategy: Any, grammars: Any) 
     }
     if len(parts) > 1:
         example["relations"] = _relations(item, owners)
-    record = render_examples([example])
-    context, _, target = record.partition("\n")
-    return TrainingExample(prompt_id=item.id, context=context + "\n", target=target)
+    return [
+        TrainingExample(prompt_id=item.id, context=context, target=target)
+        for context, target in render_local(example)
+    ]
 
 
 class _NoLatitude:

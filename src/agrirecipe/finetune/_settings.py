@@ -31,6 +31,9 @@ class DataSettings(_Frozen):
 
     heldout_fraction: float = Field(default=0.15, ge=0.0, lt=1.0)
     max_tokens: int = Field(default=160, ge=16, le=2048)
+    #: Most development prompts to train and hold out on (None: every usable one),
+    #: read in an order shuffled by the seed.
+    max_prompts: int | None = Field(default=700, ge=1)
 
 
 class LoraSettings(_Frozen):

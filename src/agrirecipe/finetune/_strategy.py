@@ -2,10 +2,12 @@
 
 Everything the llm strategy does stays (retrieval, narrowing, every answer
 under a grammar, the deterministic checks); only the model changes: llama.cpp
-loads the base GGUF with the adapter applied (``Llama(lora_path=...)``), and the
-record starts without the few-shot document, because the adapter was trained on
-bare records (:mod:`agrirecipe.finetune._examples`). That also makes each
-prompt shorter to evaluate.
+loads the base GGUF with the adapter applied (``Llama(lora_path=...)``), the
+record starts without the few-shot document, and each question reads only the
+lines it depends on (the request, then its part's lines, or the parts' words
+before the relations line), because the adapter was trained on those local
+records (:mod:`agrirecipe.finetune._examples`). Both make a prompt far shorter
+to evaluate: evaluating the record is nearly all of the strategy's time.
 
 The adapter is, in order: the ``adapter`` argument, ``AGRIRECIPE_LORA``, the
 ``finetuned`` entry of ``models/manifest.yaml`` (checked against its SHA-256).
@@ -77,6 +79,7 @@ class FinetunedResolver(LlmResolver):
     """
 
     name = "finetuned"
+    local_records = True  # each question reads only its lines, as in training
 
     def __init__(
         self,

@@ -77,8 +77,9 @@ def encode_examples(
     The text is tokenized the way the strategy's calls see it: the record up to
     a line's label (``...Crop:``) is the prompt, the value (`` Apple\n``) is
     the answer. Only the values of the lines the model can be asked carry a
-    loss; the request, the labels and the ``Parts`` / ``Part N`` lines, which
-    the strategy writes itself when no boundary is open, are context.
+    loss (the relations line among them); the request, the labels and the
+    ``Parts`` / ``Part N`` lines, which the strategy writes itself when no
+    boundary is open, are context.
     """
     encoded: list[_Encoded] = []
     too_long = 0
@@ -346,13 +347,16 @@ def train(
         "base_sha256": base.gguf_sha256,
         "data": {
             "source": "benchmarks/prompts.yaml (dev split)",
+            # each question reads only its lines (resolve.llm._LocalRecord, render_local)
+            "records": "local",
             "digest": examples.digest,
+            "prompts": examples.prompts,
             "examples": len(examples.examples),
             "train": len(train_items),
             "heldout": len(heldout_items),
             "too_long": long_train + long_heldout,
             "skipped": examples.skipped,
-            "heldout_ids": sorted(item.prompt_id for item in heldout_items),
+            "heldout_ids": sorted({item.prompt_id for item in heldout_items}),
         },
         "settings": settings.model_dump(mode="json"),
         "seed": settings.seed,

@@ -61,9 +61,12 @@ The modules, in the order the strategy uses them:
 
 - ``_strategy``: :class:`LlmResolver`, which runs the steps above, and
   ``_Record``, the few-shot document it continues for one prompt (one line
-  per answer; the model is asked only where more than one option is left).
+  per answer; the model is asked only where more than one option is left);
+  ``_LocalRecord``, the same lines with each question reading only what it
+  depends on (the finetuned strategy's, :mod:`agrirecipe.finetune`).
 - ``_examples``: the few-shot examples (``data/llm/fewshot.yaml``) rendered
-  as the document every record continues, and the examples of
+  as the document every record continues, the local records of one example
+  (:func:`render_local`, the fine-tuning data), and the examples of
   :meth:`LlmResolver.choose` (``data/llm/choose.yaml``).
 - ``_evidence``: retrieval over the lexicon (step 3), ``_Evidence``: what a
   run of words names (crops, varieties, plots, states, counts, sizes,
@@ -81,7 +84,12 @@ The modules, in the order the strategy uses them:
 
 from __future__ import annotations
 
-from agrirecipe.resolve.llm._examples import DATA_DIR, load_examples, render_examples
+from agrirecipe.resolve.llm._examples import (
+    DATA_DIR,
+    load_examples,
+    render_examples,
+    render_local,
+)
 from agrirecipe.resolve.llm._strategy import MAX_FIELDS, MAX_PROMPT_TOKENS, LlmResolver
 
 __all__ = [
@@ -91,4 +99,5 @@ __all__ = [
     "LlmResolver",
     "load_examples",
     "render_examples",
+    "render_local",
 ]

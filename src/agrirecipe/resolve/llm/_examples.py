@@ -13,7 +13,7 @@ import yaml
 from agrirecipe._errors import ConfigurationError
 from agrirecipe.resolve._grammar import ANY_PREFIX, NONE, OTHER, prompt_words
 
-__all__ = ["DATA_DIR", "load_examples", "render_examples"]
+__all__ = ["DATA_DIR", "load_examples", "render_examples", "render_local"]
 
 DATA_DIR = Path(__file__).resolve().parent.parent / "data" / "llm"
 _STATE_KEYS = ("stage", "season", "health")
@@ -81,6 +81,29 @@ def render_examples(examples: Sequence[Mapping[str, Any]]) -> str:
                 lines.append(f"Relations: {example.get('relations', NONE)}\n")
         blocks.append("".join(lines))
     return "\n".join(blocks) + "\n"
+
+
+def render_local(example: Mapping[str, Any]) -> list[tuple[str, str]]:
+    """One example as the local records the finetuned strategy asks: (context, lines) pairs.
+
+    Each part is the request, then that part's lines; with several parts, the
+    relations line follows the request and the parts' own words
+    (``_LocalRecord`` in :mod:`agrirecipe.resolve.llm._strategy` asks them so).
+    """
+    head = f"Request: {example['request']}\n"
+    parts = example["parts"]
+    if parts == NONE:
+        return [(head, f"Parts: {NONE}\n")]
+    fields = [part for part in parts if not part.get("shared")]
+    suffix = "".join(f" + {_words_text(str(p['text']))}" for p in parts if p.get("shared"))
+    records = [(head, _part_block(i, part, suffix)) for i, part in enumerate(fields, start=1)]
+    if len(fields) > 1:
+        named = "".join(
+            f"Part {i}: {_words_text(str(part['text']))}\n"
+            for i, part in enumerate(fields, start=1)
+        )
+        records.append((head, named + f"Relations: {example.get('relations', NONE)}\n"))
+    return records
 
 
 @functools.lru_cache(maxsize=1)

@@ -73,10 +73,18 @@ class _Record:
     def write(self, text: str) -> None:
         self.text += text
 
+    def start_part(self, number: int, text: str, suffix: str) -> None:
+        """Open part ``number``'s lines: its words, then the words every part shares."""
+        self.write(f"Part {number}: {text}{suffix}\n")
+
+    def context(self, label: str) -> str:
+        """What the model reads before answering ``label``: the whole record so far."""
+        return self.text + label
+
     def answer(self, label: str, grammar: str, *, max_tokens: int) -> str:
         """The model's continuation of ``label`` under ``grammar`` (not yet written)."""
         self.asked += 1
-        return self.model.complete(self.text + label, grammar=grammar, max_tokens=max_tokens)
+        return self.model.complete(self.context(label), grammar=grammar, max_tokens=max_tokens)
 
     def choose(self, label: str, options: Sequence[str], grammar: str | None = None) -> str:
         """Write ``label: <option>``; the model picks when there is more than one option.
@@ -96,6 +104,42 @@ class _Record:
         return choice
 
 
+class _LocalRecord(_Record):
+    """A record whose questions read only the lines they depend on (the finetuned strategy's).
+
+    A part's line reads the request and that part's own lines; the parts line
+    reads the request; the relations line reads the request and the parts' words
+    (``Part 1: ...`` without the shared words or the answers). The full record
+    repeats the request's words two or three times before the relations
+    question, and evaluating it was nearly all of a prompt's time (about 5 ms a
+    token on two cores): the local contexts are a third to a half as long, and
+    the request they start with stays in the KV cache between questions.
+    Rendered for training by :func:`~agrirecipe.resolve.llm.render_local`.
+    """
+
+    def __init__(self, model: LanguageModel, prefix: str, request: str) -> None:
+        super().__init__(model, prefix, request)
+        self.head = self.text
+        self.parts: list[str] = []
+        self.block = ""
+
+    def write(self, text: str) -> None:
+        super().write(text)
+        self.block += text
+
+    def start_part(self, number: int, text: str, suffix: str) -> None:
+        self.parts.append(f"Part {number}: {text}\n")
+        self.block = ""
+        super().start_part(number, text, suffix)
+
+    def context(self, label: str) -> str:
+        if label == "Parts:":
+            return self.head + label
+        if label == "Relations:":
+            return self.head + "".join(self.parts) + label
+        return self.head + self.block + label
+
+
 # --- the strategy ----------------------------------------------------------------
 
 
@@ -110,6 +154,9 @@ class LlmResolver(Resolver):
     """
 
     name = "llm"
+    #: Whether each question reads only the lines it depends on (:class:`_LocalRecord`)
+    #: instead of the whole record; the few-shot document is written as whole records.
+    local_records = False
 
     def __init__(
         self,
@@ -207,7 +254,7 @@ class LlmResolver(Resolver):
         warm = getattr(model, "warm", None)
         if callable(warm):
             warm(self.prefix)  # the few-shot prefix, from the on-disk cache after the first run
-        record = _Record(model, self.prefix, request)
+        record = (_LocalRecord if self.local_records else _Record)(model, self.prefix, request)
 
         # 1. decompose, 2. validate and repair. The model is asked only where two
         # fields have no joining word between them: elsewhere the joining words fix
@@ -253,7 +300,7 @@ class LlmResolver(Resolver):
             if common is not None:
                 for key, stated in common.states.items():
                     evidence.states.setdefault(key, list(stated))  # the part's own words win
-            record.write(f"Part {number}: {part.text}{suffix}\n")
+            record.start_part(number, part.text, suffix)
             values = self._read_part(record, grammars, part, evidence)
             trace.append(
                 TraceStep(
