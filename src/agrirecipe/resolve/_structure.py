@@ -92,9 +92,14 @@ POINTER_WORDS = frozenset({"it", "them", "this", "that", "these", "those"})
 EACH = frozenset({"each", "all", "both"})
 
 
+def named_varieties(mention: Mention) -> set[tuple[str, str | None, bool]]:
+    """The (crop, variety, weak) readings of the mention that name a variety strongly."""
+    return {i for i in mention.interpretations or () if i[1] is not None and not i[2]}
+
+
 def names_a_variety(mention: Mention) -> bool:
     """Whether the mention names a variety (not only a crop)."""
-    return any(v is not None for _, v, weak in mention.interpretations or () if not weak)
+    return bool(named_varieties(mention))
 
 
 def said_of_all_plots(mention: Mention) -> bool:

@@ -14,7 +14,7 @@ import itertools
 from collections.abc import Sequence
 
 from agrirecipe.resolve._mentions import Clause, Mention
-from agrirecipe.resolve._structure import names_a_variety, strong_crops
+from agrirecipe.resolve._structure import named_varieties, names_a_variety, strong_crops
 from agrirecipe.resolve._summaries import lend_and_drop
 from agrirecipe.resolve._words import SENTENCE_MARKS
 
@@ -201,10 +201,8 @@ def _kind_of_farm(
 
 def _same_variety(title: Mention, field: Mention) -> bool:
     """Whether ``field`` names the variety ``title`` names, and no other."""
-    named = {i for i in title.interpretations or () if i[1] is not None and not i[2]}
-    return bool(named) and named == {
-        i for i in field.interpretations or () if i[1] is not None and not i[2]
-    }
+    named = named_varieties(title)
+    return bool(named) and named == named_varieties(field)
 
 
 def _holds(field: Mention, crops: set[str]) -> bool:
