@@ -96,8 +96,8 @@ def test_bad_prompts_exit_2_with_a_message(
 
 def test_max_plants(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     command = ["generate", "a 2 ha wheat field", "-o", str(tmp_path / "out"), "--backends", ""]
-    # ~3 million plants: even one drawn in ten is more than 200,000
-    assert main([*command, "--max-plants", "200000"]) == 2
-    assert "more than the cap of 200,000" in capsys.readouterr().err
+    # ~3 million plants: even one drawn in twenty is more than 100,000
+    assert main([*command, "--max-plants", "100000"]) == 2
+    assert "more than the cap of 100,000" in capsys.readouterr().err
     assert not (tmp_path / "out").exists()
     assert main(command) == 0  # under the default cap

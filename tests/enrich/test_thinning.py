@@ -81,14 +81,26 @@ def test_a_forty_hectare_cereal_farm_is_built_one_plant_in_seven() -> None:
     assert "every seventh plant along each row is drawn" in warning
 
 
+def test_an_eighty_hectare_wheat_field_is_built_one_plant_in_thirteen() -> None:
+    scene = generate(
+        "The whole farm is one 80 hectare wheat field, with a hawthorn hedge round the outside "
+        "and a pylon in the middle.",
+        resolver="hybrid",
+    ).recipe
+    (wheat,) = scene.fields
+    assert wheat.geometry.area_m2 == pytest.approx(800_000, rel=0.01)
+    assert wheat.placement.plants_per_instance == 13
+    assert wheat.drawn_plant_count() <= DEFAULT_MAX_PLANTS < wheat.drawn_plant_count(12)
+
+
 def test_a_field_too_big_even_thinned_is_refused_saying_how_much_fits() -> None:
     with pytest.raises(PromptError) as caught:
-        generate("an 80 ha wheat field", resolver="hybrid")
+        generate("a 160 ha wheat field", resolver="hybrid")
     message = str(caught.value)
     assert "cap of 10,000,000" in message
     assert f"every {MAX_PLANTS_PER_INSTANCE} plants drawn as one" in message
     fits = float(message.split("at most ")[1].split(" ha")[0])
-    assert 50 < fits < 80
+    assert 100 < fits < 160
     assert caught.value.hint is not None and "max_plants=N" in caught.value.hint
 
 

@@ -10,6 +10,7 @@ from agrirecipe import (
     PromptError,
     UnknownCropError,
 )
+from agrirecipe.recipe import MAX_PLANTS_PER_INSTANCE
 from agrirecipe.resolve import resolve
 
 
@@ -232,22 +233,22 @@ def test_the_plant_cap_is_a_setting() -> None:
     recipe = resolve(prompt, resolver="rules").recipe  # ~7.6 million plants
     assert 5_000_000 < recipe.nominal_plant_count <= 10_000_000
     assert recipe.fields[0].placement.plants_per_instance == 1
-    # under a lower cap it is drawn thinner (every N-th plant, at most one in ten) ...
+    # under a lower cap it is drawn thinner (every N-th plant, at most one in twenty) ...
     thinned = resolve(prompt, resolver="rules", max_plants=2_000_000).recipe
     assert thinned.fields[0].placement.plants_per_instance == 4
-    # ... and refused where even one in ten is too many
-    with pytest.raises(PromptError, match="more than the cap of 500,000") as caught:
-        resolve(prompt, resolver="rules", max_plants=500_000)
+    # ... and refused where even one in twenty is too many
+    with pytest.raises(PromptError, match="more than the cap of 250,000") as caught:
+        resolve(prompt, resolver="rules", max_plants=250_000)
     assert caught.value.hint and "max_plants=N" in caught.value.hint
     big = resolve("a 10 ha wheat field", resolver="rules").recipe
     assert big.nominal_plant_count > 10_000_000
     assert big.fields[0].placement.plants_per_instance == 2
     drawn = resolve("a 10 ha wheat field", resolver="rules", max_plants=20_000_000).recipe
     assert drawn.fields[0].placement.plants_per_instance == 1
-    # the error says how much of that field fits at its spacings, drawn one in ten
+    # the error says how much of that field fits at its spacings, drawn one in twenty
     fits = float(str(caught.value).split("at most ")[1].split(" ha")[0])
     per_ha = recipe.nominal_plant_count / 5
-    assert fits == pytest.approx(500_000 * 10 / per_ha, rel=0.02)
+    assert fits == pytest.approx(250_000 * MAX_PLANTS_PER_INSTANCE / per_ha, rel=0.02)
 
 
 def test_impossible_relations() -> None:

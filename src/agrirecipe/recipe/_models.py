@@ -226,7 +226,7 @@ class FieldGeometry(_Frozen):
 
 
 #: The most plants one drawn plant may stand for (a field thinned to fit max_plants).
-MAX_PLANTS_PER_INSTANCE = 10
+MAX_PLANTS_PER_INSTANCE = 20
 
 
 class Placement(_Frozen):

@@ -26,6 +26,10 @@ from agrirecipe.resolve._words import SENTENCE_MARKS
 __all__ = ["merge_appositive_plots"]
 
 
+#: The words that open a plot said as where a crop is planted ("in rows across a field").
+_PLANTED_IN = [["in", "rows"], ["in", "lines"], ["in", "drills"], ["in", "beds"], ["in", "ridges"]]
+
+
 def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -> list[Mention]:
     """'chillies, a 15 by 30 m patch, and ...': a plot said right after a crop, between
     commas and naming no crop of its own, is that crop's plot, not another field.
@@ -109,6 +113,8 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
             and all(
                 i.role
                 in ("number", "size", "plot", "filler", "of", "cue", "stage", "health", "geometry")
+                # ("young cabbage transplants, in rows across a brown field")
+                or (i.role == "side" and i.norm == "across")
                 # ("one plot drilled at 12.5 cm row spacing": how it is sown; "a 1.5 ha block
                 # with the cableway running through it": what runs through it)
                 or (
@@ -124,6 +130,9 @@ def merge_appositive_plots(clauses: Sequence[Clause], mentions: list[Mention]) -
                 or any(i.role == "filler" and i.scenery for i in clause.items)
                 or _size_said_next(clauses, mention.clause)
                 or _said_with_a_look(clause)
+                # ("young cabbage transplants, in rows across a brown field": how it is
+                # planted in the plot)
+                or [i.norm for i in clause.items[:2]] in _PLANTED_IN
                 # ("Just Regina cherries on this farm, one orchard, fruit ripening ...": how
                 # many plots the crop is grown in, with no field named after it)
                 or (

@@ -34,6 +34,8 @@ from agrirecipe.resolve._back_references import (
 )
 from agrirecipe.resolve._decompose import MentionBuilder
 from agrirecipe.resolve._descriptions import said_with_a_verb
+from agrirecipe.resolve._measures import sentence_start
+from agrirecipe.resolve._member_refs import per_plot
 from agrirecipe.resolve._mentions import Clause, Mention
 from agrirecipe.resolve._placed_members import (
     in_another_zone,
@@ -68,6 +70,16 @@ def _compatible(builder: MentionBuilder, target: Mention, mention: Mention) -> b
     return bool(heads) and all(builder.compatible(target, head) for head in heads)
 
 
+def _subject_of_its_sentence(clauses: Sequence[Clause], clause: Clause) -> Mention | None:
+    """The one field a sentence named before ``clause``, when it opened the sentence by
+    naming the crop (after another sentence)."""
+    start = sentence_start(clauses, clause.index)
+    if start == 0:
+        return None
+    named = list({id(m): m for c in clauses[start : clause.index] for m in c.mentions}.values())
+    return named[0] if len(named) == 1 and named[0].has_crop else None
+
+
 def merge_coreferences(
     clauses: Sequence[Clause], mentions: Sequence[Mention], builder: MentionBuilder
 ) -> list[Mention]:
@@ -100,6 +112,15 @@ def merge_coreferences(
             if first is not None and first.norm == "both" and mention.count is None:
                 mention.count = 2  # "Both cereal fields beside the dryer": two, named now
             kept.append(mention)
+            continue
+        if per_plot(mention) and (
+            (subject := _subject_of_its_sentence(clauses, clause)) is not None
+        ):
+            # "Carrots on 75 cm ridges ..., 25 ridges per plot. Onions in single rows ...":
+            # each plot of the crop the sentence is about, not every plot of the scene
+            subject.items.extend(i for i in mention.items if i not in mention.heads)
+            clause.mentions.remove(mention)
+            merged.add(clause.index)
             continue
         said_of_all = both_of_the_counted(kept, mention)
         if said_of_all:

@@ -62,6 +62,22 @@ def _plots_agree(one: dict[str, Any], other: dict[str, Any], categories: dict[st
     return True
 
 
+def _another_variety_than_the_weak_one(mention: Mention, item: Item) -> bool:
+    """Whether head ``item`` names a variety other than the one a weak variety word before
+    ``mention``'s crop names ("Navel oranges with Valencia oranges", "big mike bananas w/
+    lady finger bananas": a second field)."""
+    if not item.has("variety"):
+        return False
+    said = {
+        str(s.value)
+        for i in mention.items
+        if i.role == "weak_variety"
+        for s in i.senses_of("variety")
+    }
+    named = {str(s.value) for s in item.senses_of("variety")}
+    return bool(said) and not said & named
+
+
 class MentionBuilder:
     """Reads a clause's items into mentions; decides which heads can name one field."""
 
@@ -193,7 +209,11 @@ class MentionBuilder:
                 item.role = "filler"  # "tomato vines": the tomato's own vines
                 current.items.append(item)
                 continue
-            elif self.compatible(current, item) and not (
+            elif (
+                self.compatible(current, item)
+                # ("Navel oranges with Valencia oranges beside them": two varieties)
+                and not _another_variety_than_the_weak_one(current, item)
+            ) and not (
                 # "west of the vineyard there's a block of ...": a plot named by its kind
                 # alone, then a new one ("on the chilli side there's a plot of ..." is
                 # still the chilli plot); "the cherry orchard has a plot of ..."

@@ -392,9 +392,10 @@ def _after_a_look(previous: Clause, clause: Clause, mention: Mention) -> bool:
         and mention.count is None
         and all(h.norm in plant_part_words() for h in mention.heads)
         and any(i.role in ("cue", "health") for i in previous.items)
-        # ("a lot of the trees have blotchy mottled leaves and small lopsided fruit")
+        # ("a lot of the trees have blotchy mottled leaves and small lopsided fruit"; "every
+        # plant covered in flowers and small fruits")
         and all(
-            i.role in ("cue", "health", "filler", "unknown", "of", "quantity")
+            i.role in ("cue", "health", "filler", "unknown", "of", "quantity", "all")
             for i in previous.items
         )
     )

@@ -181,11 +181,15 @@ def listed_after(clauses: Sequence[Clause], position: int) -> list[Mention]:
     return listed
 
 
-def coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:
+def coordinated(
+    clauses: Sequence[Clause], position: int, *, past_asides: bool = False
+) -> list[Mention]:
     """The mentions just before clause ``position``, with those listed with it.
 
     "bananas and oranges, ripe": both are ripe; "apples next to carrots, ripe":
-    only the carrots.
+    only the carrots. A member's bracketed words ("onions (fine) and lettuce (fine)")
+    end the list's shared words, but not, with ``past_asides``, a list a row word
+    orders ("..., all in a line north to south").
     """
     index = position - 1
     while index >= 0 and not clauses[index].mentions:
@@ -235,7 +239,7 @@ def coordinated(clauses: Sequence[Clause], position: int) -> list[Mention]:
             if (
                 opening is None
                 or not clauses[opening - 1].mentions
-                or not any(c.mentions for c in clauses[opening:index])
+                or not (past_asides or any(c.mentions for c in clauses[opening:index]))
             ):
                 break
             index = opening - 1

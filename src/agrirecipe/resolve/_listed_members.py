@@ -181,6 +181,20 @@ def fold_listed_member(
         # east of the spuds": a member named again
         lists_members = False
 
+    if (
+        parent.implied_count
+        and not parent.refinements
+        and link.norm == ":"
+        and clause.mentions
+        and sub.has_crop
+        and (sub.count or 1) >= 2
+        and sub.plot is not None
+        and sub.plot["plural"]
+    ):
+        # "Seeding-rate strips for the NDVI camera: three wheat plots of 10 x 2 m at 100,
+        # 150 and 200 plants/m2": counted plots of a crop are the fields themselves; the
+        # uncounted plural before the colon is their heading
+        return None
     room = (parent.count or 1) - len(parent.refinements)
     if parent.implied_count and lists_members and clause.mentions and (sub.count or 1) > room:
         # "camera plots: Jalapeño, Padrón and California Wonder": as many as listed

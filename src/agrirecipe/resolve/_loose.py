@@ -179,6 +179,9 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
                     and clause.items[0].norm.split()[0] in (*ALL_PLANTS, "fruit")
                     and len({id(m) for m in before}) > 1
                     and len({frozenset(strong_crops(m)) for m in before}) == 1
+                    # ("... vines every 1.2 m. South of it, a Chardonnay block: 20 rows at
+                    # 2.2 m, vines 1 m apart": the block of this sentence, not the one before)
+                    and len(sentence_fields(clauses, position)) > 1
                     and bool(strong_crops(before[0]))
                 )
                 # "... onions in 12 rows. Rows are 60 m.": a closing sentence of

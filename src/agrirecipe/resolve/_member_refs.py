@@ -172,6 +172,27 @@ def _by_look(words: Sequence[Item], members: Sequence[Mention]) -> Mention | Non
     return found[0] if len(found) == 1 else None
 
 
+#: Words before a plot noun that say which member of a list it is ("the middle strip").
+_PLACE_WORDS = {"first": 0, "second": 1, "third": 2, "fourth": 3}
+_MIDDLE_WORDS = frozenset({"middle", "centre", "center", "central"})
+
+
+def _by_place_word(clause: Clause, mention: Mention, members: int) -> int | None:
+    """The member (0-based) that "the middle strip" or "the second plot" in ``clause``
+    points at, among ``members`` listed in order; None when the plot is not said so."""
+    items = sorted(clause.items, key=lambda i: i.start)
+    heads = [at for at, i in enumerate(items) if i in mention.heads and i.role == "plot"]
+    if len(heads) != 1 or heads[0] < 2 or items[heads[0] - 2].norm != "the":
+        return None
+    word = items[heads[0] - 1].norm
+    if word in _MIDDLE_WORDS:
+        return members // 2 if members % 2 else None
+    if word == "last":
+        return members - 1
+    at = _PLACE_WORDS.get(word)
+    return at if at is not None and at < members else None
+
+
 def member_said_again(clause: Clause, parent: Mention) -> Mention | None:
     """The member of ``parent``'s full list that ``clause`` names again by a measure
     ("the denser plot", "the 9 plants/m2 plot", "the 7") or by its place ("the first
@@ -205,6 +226,9 @@ def member_said_again(clause: Clause, parent: Mention) -> Mention | None:
         same = with_plot_noun(members, noun)
         if noun is not None and len(same) == 1 and same[0].plot is not None:
             return same[0] if same[0].plot["options"] else None
+    if mention is not None and (at := _by_place_word(clause, mention, len(members))) is not None:
+        # "..., with a man hoeing the middle strip": the member in that place of the list
+        return members[at]
     # ("put the blighted plot south of ...": a verb of the request before it)
     leading = itertools.takewhile(lambda i: i.role == "filler", clause.items)
     pointed = any(i.norm in ("the", "that", "this") for i in leading)

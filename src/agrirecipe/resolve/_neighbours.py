@@ -185,6 +185,18 @@ def _dividers() -> tuple[re.Pattern[str], re.Pattern[str], re.Pattern[str]]:
 
 
 @functools.cache
+def _separating_plot() -> re.Pattern[str]:
+    """ "Two carrot plots separated by an onion plot": a plot of its own parting the two
+    (a hedge or ditch parting them is scenery: :func:`_dividers`)."""
+    return re.compile(
+        r"(?<=[A-Za-z])\s+(?i:separated|divided|split|parted|kept apart)\s+(?i:by)\s+"
+        rf"(?P<plot>(?i:a|an|one|a single)\s+(?:[\w'-]+\s+){{0,3}}?(?i:{plot_nouns_pattern()})\b"
+        r"(?:\s+(?i:of)\s+[^,.;:!?()]+?)?)"
+        r"(?=\s*(?:[,.;:!?)]|$|(?i:and|with|but)\b))"
+    )
+
+
+@functools.cache
 def _two_either_side() -> re.Pattern[str]:
     """ "Two fields of cereals either side of the farm road": two fields said at once,
     one on each side of a track, ditch or hedge (not "four fields, two either side")."""
@@ -209,6 +221,8 @@ def place_divided_plots(text: str) -> str:
     so do "two wheat fields either side of the track"."""
     between, separated, named = _dividers()
     text = separated.sub(" side by side", text)
+    # "two carrot plots separated by an onion plot": the plot that parts them is between
+    text = _separating_plot().sub(lambda m: f", {m.group('plot')} between them", text)
     # "Two fields of cereals either side of the farm road": across it from each other
     text = _two_either_side().sub(lambda m: f"{m.group('lead')} side by side", text)
     # "..., with a ditch between the wheat and the maize": the two fields it divides touch
@@ -365,12 +379,27 @@ _TO_THE_SIDE = re.compile(
 )
 
 
+# "house in the middle, vines to the north, ..., tomatoes east and peppers west": the
+# centre said by what is in the middle, then each field on its side (said bare too)
+_IN_THE_MIDDLE = re.compile(
+    r"(?:^|(?<=[:,;]\s))(?:(?i:the|our|my|a|an)\s+)?(?P<centre>[A-Za-z][\w'-]*)\s+"
+    r"(?:(?i:is|sits|stands)\s+)?(?i:in the (?:middle|centre|center))\s*(?=[,;])"
+)
+_BARE_SIDE = re.compile(
+    r"(?<=[A-Za-z]\s)(?P<side>(?i:north|south|east|west))(?P<of>)(?=\s*(?:[,.;]|and\b|$))"
+)
+
+
 def place_around_a_centre(text: str, tag: Callable[[str], Sequence[Item]]) -> str:
     """``text`` with "around the farmhouse: wheat to the north of it, maize to the south"
+    (or "house in the middle, vines to the north, ..., tomatoes east and peppers west")
     written "... wheat in the north, maize in the south" (zones of the farm), when the
     centre is no field ("around the vineyard" keeps its fields placed against it) and two
     or more sides are said after it."""
     around = _AROUND.search(text)
+    middle = around is None
+    if around is None:
+        around = _IN_THE_MIDDLE.search(text)
     if around is None or any(
         i.has("crop", "variety", "plot", "category") for i in tag(around.group("centre"))
     ):
@@ -380,6 +409,14 @@ def place_around_a_centre(text: str, tag: Callable[[str], Sequence[Item]]) -> st
         for m in _TO_THE_SIDE.finditer(text, around.end())
         if m.group("of") in (None, around.group("centre"))
     ]
+    if middle:
+        said = [m.span() for m in matches]
+        matches += [
+            m
+            for m in _BARE_SIDE.finditer(text, around.end())
+            if not any(a <= m.start() < b for a, b in said)
+        ]
+        matches.sort(key=lambda m: m.start())
     if len({m.group("side").lower() for m in matches}) < 2:
         return text
     for match in reversed(matches):

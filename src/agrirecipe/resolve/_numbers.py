@@ -195,7 +195,8 @@ def _counts_of_scenery(items: Sequence[Item]) -> None:
         if (
             item.role == "number"
             and item.norm not in ("a", "an")
-            and counted.scenery
+            # ("In our three greenhouses we grow San Marzano, Beefsteak and cherry tomatoes")
+            and (counted.scenery or counted.role == "non_agricultural")
             and not is_structure(counted)
         ):
             item.role = "filler"

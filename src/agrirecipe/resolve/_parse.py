@@ -159,7 +159,7 @@ from agrirecipe.resolve._retractions import (
 )
 from agrirecipe.resolve._same_spacing import parallel_spacing, same_spacing
 from agrirecipe.resolve._scan import assign_roles
-from agrirecipe.resolve._side_phrases import place_sides
+from agrirecipe.resolve._side_phrases import place_sides, place_split_halves
 from agrirecipe.resolve._sides import (
     place_compass_members,
     place_leading_directions,
@@ -287,7 +287,7 @@ class PromptReader(FieldReading):
         text, labels = resolve_labels(end_reciprocals(text, tag), tag)
         text = place_compass_members(open_ordered_lists(text, tag), tag)
         text = place_around_a_centre(text, tag)
-        text = place_trailing_directions(place_leading_directions(text))
+        text = place_trailing_directions(place_leading_directions(place_split_halves(text)))
         text = place_walked_orders(place_neighbouring_plots(place_divided_plots(text)))
         text = name_the_placed_plot(text, tag)
         text = place_by_cover(place_sides(place_flanks(text, tag)))

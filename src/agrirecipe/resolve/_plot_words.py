@@ -122,6 +122,9 @@ def _the_same(items: Sequence[Item]) -> None:
 #: graze the paddock").
 _GRAZING = frozenset(
     {"in", "on", "graze", "grazes", "grazing", "grazed", "the", "a", "their", "that", "this"}
+    # ("cows in the back paddock": which paddock)
+    | {"back", "front", "top", "bottom", "near", "far", "home", "old", "big", "little", "lower"}
+    | {"upper", "other", "next"}
 )
 
 

@@ -131,7 +131,7 @@ def directed_row(
 ) -> list[RelationIntent]:
     """'three strips from west to east: wheat, potatoes, maize', 'A, B and C from north
     to south': the fields in the order named, each on one side of the next."""
-    fields = fields_of(list(reversed(coordinated(clauses, position))), members)
+    fields = fields_of(list(reversed(coordinated(clauses, position, past_asides=True))), members)
     # "Two vegetable plots and one fruit plot, laid out north to south as veg, fruit, veg":
     # the same fields, named again in the order they lie
     again = _named_again_in_order(clauses, position, members)
@@ -353,14 +353,14 @@ def side_by_side(
     ):
         return None
     ordered = link.data.get("value") == "row"
-    group = coordinated(clauses, position) or listed_after(clauses, position)
+    group = coordinated(clauses, position, past_asides=ordered) or listed_after(clauses, position)
     if len(group) == 1 and not members.get(id(group[0])):
         # "cabbage on the left, tomatoes on the right. The two fields touch at the fence":
         # the fields a summary said again (dropped as no field of its own) stand for it
         named = list({id(m): m for c in clauses[: group[0].clause] for m in c.mentions}.values())
         if len(named) == (group[0].count or 0):
             group = named
-    if ordered and _placed_each(clauses, group):
+    if ordered and (_placed_each(clauses, group) or _middle_said_after(clauses, position)):
         # "Three pear blocks in a line: Conference at the west end, Comice at the east end
         # and Williams between them": the places said, not the order named
         return Row([])
@@ -395,6 +395,19 @@ def side_by_side(
         warnings.append(f"ignored {link.raw!r}: it needs two or more fields before it")
         return Row([])
     return None
+
+
+def _middle_said_after(clauses: Sequence[Clause], position: int) -> bool:
+    """Whether the sentence goes on after a row word to say which field is in the middle
+    ("3 fields in a row w/ the potatos in the middle"): then that, not the order named,
+    orders the row."""
+    for clause in clauses[position + 1 :]:
+        link = clause.link
+        if link is not None and link.norm in (".", "!", "?"):
+            return False
+        if link is not None and link.role == "trailer" and link.data.get("value") == "middle":
+            return True
+    return False
 
 
 def _placed_each(clauses: Sequence[Clause], group: Sequence[Mention]) -> bool:

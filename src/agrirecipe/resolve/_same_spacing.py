@@ -96,7 +96,7 @@ def parallel_spacing(
         zip(ordered, ordered[1:], ordered[2:], strict=False)
     ):
         if unit.role != "length_unit" or not (
-            first.norm == "at" or (first.role == "head" and number.role == "filler")
+            first.norm in ("at", "on") or (first.role == "head" and number.role == "filler")
         ):
             continue
         value = number_value(number.norm)

@@ -70,6 +70,61 @@ def _farm_shares(text: str) -> str:
     return text[: total.end()] + _FARM_SHARE.sub(area, text[total.end() :])
 
 
+#: "We farm 40 acres:", "we have 12 ha,": the whole area, said before what is in it.
+_TOTAL_SAID = re.compile(
+    r"\b(?i:we|i)\s+(?:(?i:only|just)\s+)?(?i:farm|have|own|run|crop|manage|grow on|work|rent)"
+    r"\s+(?:(?i:about|around|some|roughly)\s+)?(?P<n>\d+(?:\.\d+)?)\s*"
+    r"(?P<unit>(?i:acres?|ha|hectares?))\s*(?=[:,;])"
+)
+_NUMBER = r"(?P<n>\d+(?:\.\d+)?)"
+#: "25 of them in dent corn": a number of the units the whole was said in.
+_OF_THEM = re.compile(_NUMBER + r"\s+(?i:of them|of those|of it|of that)\b")
+#: "... and 15 in durum": a bare number of the same units, given to a crop.
+_BARE_SHARE = re.compile(
+    r"(?:(?<=[,:;]\s)|(?<=\b(?i:and)\s)|(?<=&\s))"
+    + _NUMBER
+    + r"\s+(?=(?i:in|under|down to|planted with|planted to|sown to|sown with|of)\s)"
+)
+_AN_AREA = re.compile(_NUMBER + r"\s*(?P<unit>(?i:acres?|ha|hectares?))\b")
+#: "the rest in durum": what is left of the whole, given to one crop (not "the rest maize
+#: and potatoes", shared by several, nor "the rest healthy", a look).
+_THE_REST = re.compile(
+    r"\b(?i:the rest|the remainder|the remaining (?:area|land|ground))\s+"
+    r"(?:(?i:is|are|goes|went)\s+)?(?P<said>(?i:in|under|down to|planted with|planted to|"
+    r"sown to|sown with|to|of)\s+)(?=[A-Za-z][\w'-]*(?:\s+[A-Za-z][\w'-]*){0,2}\s*(?:[.;!?]|$))"
+)
+
+
+def _the_rest(text: str) -> str:
+    """``text`` with the shares of a whole said in its units: after "We farm 40 acres:",
+    "25 of them in dent corn" is "25 acres in dent corn", "and 15 in durum" is "15 acres
+    in durum", and "the rest in durum" is "15 acres in durum" (the whole less the areas
+    said; kept as it was when they leave nothing)."""
+    total = _TOTAL_SAID.search(text) or _FARM_TOTAL.search(text)
+    if total is None:
+        return text
+    size = float(total.group("n") or total.group("n2"))
+    unit = (total.group("unit") or total.group("unit2")).lower()
+    unit = _UNIT_PLURALS.get(unit, unit)
+    head, rest = text[: total.end()], text[total.end() :]
+    rest = _OF_THEM.sub(lambda m: f"{m.group('n')} {unit}", rest)
+    if _AN_AREA.search(rest):
+        # (a bare number is an area only once some share was said in the whole's units)
+        rest = _BARE_SHARE.sub(
+            lambda m: f"{m.group('n')} {unit} " if float(m.group("n")) < size else m.group(0),
+            rest,
+        )
+    said = [
+        float(m.group("n"))
+        for m in _AN_AREA.finditer(rest)
+        if _UNIT_PLURALS.get(m.group("unit").lower(), m.group("unit").lower()) == unit
+    ]
+    left = round(size - sum(said), 4)
+    if said and left > 0:
+        rest = _THE_REST.sub(lambda m: f"{left:g} {unit} {m.group('said')}", rest, count=1)
+    return head + rest
+
+
 #: "All healthy apart from the onions, which have downy mildew": a look said of every
 #: field but one, named after it.
 _ALL_BUT = re.compile(
@@ -217,4 +272,5 @@ def read_shares(text: str) -> str:
     # "a 1 ha field split into four plots": each plot's share of the area
     text = _split_areas(text)
     # "A 100-acre farm: half in wheat, ...": a share of the farm's size, as an area
-    return _farm_shares(text)
+    # ("We farm 40 acres: 25 of them in dent corn and the rest in durum": 15 acres)
+    return _the_rest(_farm_shares(text))

@@ -6,7 +6,12 @@ cabernet on the other" is "riesling between pinot noir and cabernet", "..., danv
 east" is "..., danvers one east of the other", "the cherries are east" is "the cherries
 are to the east", "on the 20 ha east field ..., on the 8 ha west field" is "in the east,
 20 ha ..., in the west, 8 ha", "directly below it, so south of the maize" is "south of
-the maize" and, on a map of the farm, "letuce under it" is "letuce below it".
+the maize" and, on a map of the farm, "letuce under it" is "letuce below it"; "north:
+vines. south: fruit trees." is "vines in the north. fruit trees in the south.", "one
+either side of the farmhouse, east and west" is "one east of the farmhouse and one west
+of it", "carry on north past it and you hit our wheat" is "our wheat north of it", and
+"the west half is split between a potato field to the north and an onion field to the
+south" is "a potato field in the north west and an onion field in the south west".
 """
 
 from __future__ import annotations
@@ -15,14 +20,16 @@ import re
 
 from agrirecipe.resolve._links import OPPOSITE
 
-__all__ = ["CLOSE", "NAMED", "place_sides"]
+__all__ = ["CLOSE", "NAMED", "place_sides", "place_split_halves"]
 
 
 # "riesling in the middle w/ pinot noir on one side & cabernet on the other": the field
 # before "with" stands between the two (its "in the middle" said again)
 _ONE_SIDE_AND_OTHER = re.compile(
     r"(?:\s+(?i:in the (?:middle|centre|center)))?\s*,?\s+(?:(?i:with)\s+)?"
-    r"(?P<a>[A-Za-z][^,;.:!?]*?)\s+(?i:on one side)\s*,?\s+(?P<and>(?i:and|&)\s+)?(?!(?i:of)\b)"
+    # (what it lies between is no side: "lies between the wheat on one side and ...")
+    r"(?P<a>[A-Za-z](?:(?!\s(?i:between)\s)[^,;.:!?])*?)\s+(?i:on one side)\s*,?\s+"
+    r"(?P<and>(?i:and|&)\s+)?(?!(?i:of)\b)"
     r"(?P<b>[A-Za-z][^,;.:!?]*?)\s+(?i:on the other)(?:\s+(?i:side|one))?\b"
 )
 # "imperator carots & danvers carots, danvers one east": one of two fields said to be on
@@ -31,6 +38,8 @@ _ONE_ON_A_SIDE = re.compile(
     # (not "plum ones to the west": the sides said with "to the" are read as placements)
     r"\b(?P<name>[A-Za-z][\w'-]*) (?i:one|block|field|plot) (?:(?i:is) )?"
     r"(?P<side>(?i:north|south|east|west))\b(?!\s+(?i:of|side|end|half|field|block|plot)\b)"
+    # (not "one with rows north-south and one east-west": a pair of sides is its rows' way)
+    r"(?!\s*[-–—/]\s*(?i:north|south|east|west)\b)"
 )
 
 
@@ -55,6 +64,14 @@ _A_PLOT_ALONE = re.compile(
     r"(?i:vineyard|orchard|field|plot|block|garden|grove|plantation|patch|bed)\s*$"
 )
 
+# "Two plantations divided by a wire fence, bananas on one side and oranges on the other":
+# two plots counted, then what is on each side (their members)
+_TWO_PLOTS_ALONE = re.compile(
+    r"^\s*(?i:two|2|both|a pair of)\s+(?:[A-Za-z][\w'-]*\s+){0,2}?"
+    r"(?i:vineyards|orchards|fields|plots|blocks|gardens|groves|plantations|patches|beds|"
+    r"strips|paddocks)(?:\s+(?i:side by side|next to each other|beside each other))?\s*$"
+)
+
 
 # "Agria potatoes furthest north, then a strip of onions, and carrots at the southern
 # end": a walk from the field said to be furthest one way, the other way
@@ -72,9 +89,16 @@ def _between_sides(match: re.Match[str]) -> str:
     (the fields' names) when the sentence has placed the field between them already
     ("potatoes between 2 onion fields, sturon on one side red baron on the other")."""
     sentence = re.split(r"[.;!?]", match.string[: match.start()])[-1]
+    if _TWO_PLOTS_ALONE.search(sentence) and match.group("and"):
+        # "Two plantations ..., bananas on one side and oranges on the other": the two
+        return f": {match.group('a')} and {match.group('b')}"
     if _A_PLOT_ALONE.search(sentence) and match.group("and"):
         # "vineyard w chardonay on one side & pinot noire on the other": its two halves
         return f" with {match.group('a')} and {match.group('b')}"
+    if re.search(r"\b(?i:between)\s*$", sentence):
+        # "Our potato ground lies between the wheat on one side and the carrots on the
+        # other": the two sides are what it lies between
+        return f" {match.group('a')} and {match.group('b')}"
     if re.search(r"\b(?i:between)\b", sentence):
         return f", {match.group('a')} and {match.group('b')}"
     if not match.group("and"):
@@ -134,6 +158,95 @@ _FURTHER_PAST = re.compile(
     r"\b(?i:further|farther)\s+(?P<side>(?i:north|south|east|west))\s*,?\s+(?i:past|beyond)\s+"
     r"(?P<thing>(?i:the|our|my)\s+[A-Za-z][\w'-]*)"
 )
+
+
+# "carry on north past it and you hit our winter wheat": what a walk that way past a field
+# reaches lies on that side of it
+_WALKED_PAST = re.compile(
+    r"\b(?i:carry on|keep going|keep on|go on|go|walk|continue|head|drive)\s+"
+    r"(?P<side>(?i:north|south|east|west))(?i:wards)?\s+(?i:past|beyond)\s+"
+    r"(?P<it>(?i:it|them|that one|that|the\s+[A-Za-z][\w'-]*))\s*,?\s+(?i:and)\s+"
+    r"(?i:you|you'll|you will|we|you'd)\s+(?i:hit|reach|come to|get to|find|see|come across|"
+    r"arrive at|run into|end up in|end up at)\s+"
+    r"(?P<field>[A-Za-z][^.;:!?,]*?)(?=\s*(?:[.;:!?,]|$))"
+)
+
+
+# "the west half is split between a potato field to the north and an onion field to the
+# south": each part in its corner of that half
+_HALF_SPLIT = re.compile(
+    r"\b(?i:the)\s+(?P<half>(?i:north|south|east|west))(?i:ern)?\s+(?i:half|side|end)"
+    r"(?:\s+(?i:of the farm|of it))?\s+(?:(?i:is|was)\s+)?(?i:split|divided|shared|cut)\s+"
+    r"(?i:between|into)\s+(?P<a>[A-Za-z][^.;:!?,]*?)\s+(?i:to the|on the|in the)\s+"
+    r"(?P<sa>(?i:north|south|east|west))(?:\s+(?i:side|end))?\s*,?\s+(?i:and|&)\s+"
+    r"(?P<b>[A-Za-z][^.;:!?,]*?)\s+(?i:to the|on the|in the)\s+"
+    r"(?P<sb>(?i:north|south|east|west))(?:\s+(?i:side|end))?\b"
+)
+_NORTH_SOUTH = frozenset({"north", "south"})
+
+
+def _half_split(match: re.Match[str]) -> str:
+    half, a, b = (match.group(k).lower() for k in ("half", "sa", "sb"))
+    if _OPPOSITE.get(a) != b or (half in _NORTH_SOUTH) == (a in _NORTH_SOUTH):
+        return match.group(0)
+
+    def corner(side: str) -> str:
+        return f"{side} {half}" if side in _NORTH_SOUTH else f"{half} {side}"
+
+    return f"{match.group('a')} in the {corner(a)} and {match.group('b')} in the {corner(b)}"
+
+
+def place_split_halves(text: str) -> str:
+    """``text`` with "the west half is split between a potato field to the north and an
+    onion field to the south" written "a potato field in the north west and an onion field
+    in the south west" (read before the sides of the farm are: the half is no field)."""
+    return _HALF_SPLIT.sub(_half_split, text)
+
+
+# "north: vines. south: fruit trees. in between: potatoes.": compass sides as labels
+_COMPASS_LABEL = re.compile(
+    r"(?:^|(?<=[.;!?]\s))(?P<place>(?i:north|south|east|west|in between|between|in the middle|"
+    r"middle|centre|center))\s*:\s*(?P<field>[A-Za-z][^.;:!?]*?)\s*(?P<end>[.;!?]|$)"
+)
+_LABEL_PLACES = {
+    "in between": "in between",
+    "between": "in between",
+    "in the middle": "in the middle",
+    "middle": "in the middle",
+    "centre": "in the middle",
+    "center": "in the middle",
+}
+
+
+def _compass_labels(text: str) -> str:
+    """ "north: vines. south: fruit trees. in between: potatoes." written "vines in the
+    north. fruit trees in the south. potatoes in between." (two or more compass labels)."""
+    labels = [m.group("place").lower() for m in _COMPASS_LABEL.finditer(text)]
+    if sum(1 for label in labels if label in _OPPOSITE) < 2:
+        return text
+
+    def placed(match: re.Match[str]) -> str:
+        place = match.group("place").lower()
+        where = _LABEL_PLACES.get(place, f"in the {place}")
+        return f"{match.group('field')} {where}{match.group('end')}"
+
+    return _COMPASS_LABEL.sub(placed, text)
+
+
+# "Two wheat fields, one either side of the farmhouse, east and west": which side each is on
+_EITHER_SIDE_NAMED = re.compile(
+    r"\b(?P<one>(?i:one|1))\s+(?:(?i:on)\s+)?(?i:either|each)\s+(?i:side)\s+(?i:of)\s+"
+    r"(?P<thing>(?i:the|our|my|a)\s+[A-Za-z][\w'-]*)\s*,?\s+(?:(?i:to the|on the)\s+)?"
+    r"(?P<a>(?i:north|south|east|west))\s+(?i:and|&)\s+(?:(?i:the)\s+)?"
+    r"(?P<b>(?i:north|south|east|west))\b(?:\s+(?i:sides?))?"
+)
+
+
+def _either_side_named(match: re.Match[str]) -> str:
+    a, b = match.group("a").lower(), match.group("b").lower()
+    if _OPPOSITE.get(a) != b:
+        return match.group(0)
+    return f"{match.group('one')} {a} of {match.group('thing')} and one {b} of it"
 
 
 _FURTHER_OPENING_PAST = re.compile(
@@ -254,6 +367,11 @@ def place_sides(text: str) -> str:
     # "...; further north again, past the lane, there's wheat": further on than the field
     # before, the lane passed on the way
     text = _FURTHER_OPENING_PAST.sub(r"\g<further>,", text)
+    text = _compass_labels(_EITHER_SIDE_NAMED.sub(_either_side_named, text))
+    # "carry on north past it and you hit our winter wheat": the wheat north of it
+    text = _WALKED_PAST.sub(
+        lambda m: f"{m.group('field')} {m.group('side').lower()} of {m.group('it')}", text
+    )
     # "Valencia oranges further south, past the house": on that side of what is passed
     text = _FURTHER_PAST.sub(lambda m: f"{m.group('side')} of {m.group('thing')}", text)
     # "Left: corn. Middle: spuds. Right: cabbages.": the parts of the view as labels

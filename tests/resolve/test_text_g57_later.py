@@ -1,0 +1,200 @@
+"""Text of blind set g57 (issue 8) fixed after it moved in: a spacing said bare after a
+crop in a list of spacings ("maize on 75 cm"); a plural heading before counted plots; row
+directions given one to each plot; a block's own measures after a colon; measures "per
+plot" of the crop a sentence is about; a plot that separates two others; a farm's area
+shared out ("25 of them", "the rest"); "between X on one side and Y on the other"; a
+centre of scenery with fields around it; "the middle strip" of a listed row; the middle
+said after a row word; a row ordered past bracketed looks."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import pytest
+
+from agrirecipe import generate
+from agrirecipe.recipe import SceneRecipe
+
+#: The fixture crop_relations' answer (tests/resolve/conftest.py).
+NamedRelations = set[tuple[str, str, tuple[str, ...]]]
+
+
+def recipe(prompt: str) -> SceneRecipe:
+    return generate(prompt, resolver="hybrid").recipe
+
+
+def test_a_bare_spacing_after_a_crop_in_a_list_of_row_spacings() -> None:
+    scene = recipe(
+        "Robot navigation course with three strips of 12 rows each: potatoes on 90 cm rows, "
+        "maize on 75 cm, wheat on 15 cm."
+    )
+    assert [f.crop for f in scene.fields] == ["Potato", "Maize", "Wheat"]
+    assert [f.agronomy.row_spacing_m for f in scene.fields] == pytest.approx([0.9, 0.75, 0.15])
+    assert [f.row_count for f in scene.fields] == [12, 12, 12]
+    assert all("row_spacing" in f.stated for f in scene.fields)
+
+
+def test_a_plural_heading_before_counted_plots_of_a_crop() -> None:
+    scene = recipe(
+        "Seeding-rate strips for the NDVI camera: three wheat plots of 10 m x 2 m at 100, 150 "
+        "and 200 plants/m²."
+    )
+    assert [f.crop for f in scene.fields] == ["Wheat"] * 3
+    assert [f.plants_per_ha for f in scene.fields] == pytest.approx(
+        [1_000_000, 1_500_000, 2_000_000], rel=0.01
+    )
+    assert all(sorted(f.geometry.size_m) == [2.0, 10.0] for f in scene.fields)
+    # ("seeding rate" is what the trial varies, not a misspelt "seedling")
+    assert all("stage" not in f.stated for f in scene.fields)
+
+
+def test_row_directions_given_one_to_each_plot() -> None:
+    scene = recipe(
+        "Three corn plots with 30 in rows, one with rows north-south, one east-west and one NE-SW."
+    )
+    assert [f.row_bearing_deg for f in scene.fields] == pytest.approx([0, 90, 45])
+    assert [f.agronomy.row_spacing_m for f in scene.fields] == pytest.approx([0.762] * 3)
+
+
+def test_one_plot_with_rows_one_way_and_one_the_other_is_no_placement() -> None:
+    scene = recipe("two vineyards, one with rows north-south and one east-west")
+    assert [f.row_bearing_deg for f in scene.fields] == pytest.approx([0, 90])
+    assert scene.relations == ()
+
+
+def test_a_blocks_measures_after_its_colon_are_its_own(
+    crop_relations: Callable[[str], NamedRelations],
+) -> None:
+    prompt = (
+        "For the vineyard robot we want a Spätburgunder block of 30 rows, 2.5 m row spacing, "
+        "vines every 1.2 m, rows 90 m. Directly south of it, a Chardonnay block: 20 rows at "
+        "2.2 m, vines 1 m apart, also 90 m rows."
+    )
+    pinot, chardonnay = recipe(prompt).fields
+    assert (pinot.variety, chardonnay.variety) == ("Pinot Noir", "Chardonnay")
+    assert (pinot.row_count, chardonnay.row_count) == (30, 20)
+    assert (pinot.agronomy.row_spacing_m, chardonnay.agronomy.row_spacing_m) == (2.5, 2.2)
+    assert (pinot.agronomy.in_row_spacing_m, chardonnay.agronomy.in_row_spacing_m) == (1.2, 1.0)
+    assert (pinot.row_length_m, chardonnay.row_length_m) == pytest.approx((90, 90))
+    assert crop_relations(prompt) == {("south_of", "Grape", ("Grape",))}
+
+
+def test_measures_per_plot_belong_to_the_crop_the_sentence_is_about(
+    crop_relations: Callable[[str], NamedRelations],
+) -> None:
+    prompt = (
+        "Weed-detection dataset: two carrot plots separated by an onion plot. Carrots on 75 cm "
+        "ridges with two rows per ridge, 25 ridges per plot. Onions in single rows 30 cm "
+        "apart, a bulb every 10 cm, 60 rows."
+    )
+    scene = recipe(prompt)
+    assert [f.crop for f in scene.fields] == ["Carrot", "Carrot", "Onion"]
+    assert [f.bed_count for f in scene.fields[:2]] == [25, 25]
+    assert all(f.agronomy.rows_per_bed == 2 for f in scene.fields[:2])
+    onion = scene.fields[2]
+    assert (onion.row_count, onion.agronomy.row_spacing_m) == (60, 0.3)
+    assert onion.agronomy.in_row_spacing_m == pytest.approx(0.1)
+    assert crop_relations(prompt) == {("between", "Onion", ("Carrot", "Carrot"))}
+
+
+@pytest.mark.parametrize(
+    ("prompt", "expected"),
+    [
+        (
+            "two wheat fields separated by a strip of carrots. The wheat is ripe.",
+            {("between", "Carrot", ("Wheat", "Wheat"))},
+        ),
+        # (scenery that separates them is no field: they stand side by side)
+        ("two wheat fields separated by a hedge", {("next_to", "Wheat", ("Wheat",))}),
+    ],
+)
+def test_a_plot_that_separates_two_others_is_between_them(
+    crop_relations: Callable[[str], NamedRelations], prompt: str, expected: NamedRelations
+) -> None:
+    assert crop_relations(prompt) == expected
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "We farm 40 acres: 25 of them in dent corn and the rest in durum.",
+        "We farm 40 acres: 25 of them in dent corn and 15 in durum.",
+    ],
+)
+def test_a_farms_area_shared_out_by_the_number_and_the_rest(prompt: str) -> None:
+    corn, durum = recipe(prompt).fields
+    assert (corn.variety, durum.variety) == ("Dent", "Durum")
+    acre = 4046.8564
+    assert corn.geometry.area_m2 == pytest.approx(25 * acre, rel=0.01)
+    assert durum.geometry.area_m2 == pytest.approx(15 * acre, rel=0.01)
+    assert corn.row_count > 100  # (25 acres of corn: not 25 plants on the whole farm)
+
+
+def test_the_rest_shared_by_several_crops_keeps_no_size() -> None:
+    scene = recipe("A 100-acre farm: 50 acres of wheat, the rest maize and potatoes")
+    assert [f.crop for f in scene.fields] == ["Wheat", "Maize", "Potato"]
+    assert "size" in scene.fields[0].stated
+    assert all("size" not in f.stated for f in scene.fields[1:])
+
+
+def test_between_one_side_and_the_other(
+    crop_relations: Callable[[str], NamedRelations],
+) -> None:
+    prompt = "Our potato ground lies between the wheat on one side and the carrots on the other."
+    assert crop_relations(prompt) == {("between", "Potato", ("Wheat", "Carrot"))}
+
+
+def test_fields_around_scenery_in_the_middle(
+    crop_relations: Callable[[str], NamedRelations],
+) -> None:
+    prompt = (
+        "I want the whole farm: house in the middle, vines to the north, an orange grove to "
+        "the south, tomatoes east and peppers west."
+    )
+    assert [f.crop for f in recipe(prompt).fields] == ["Grape", "Orange", "Tomato", "Pepper"]
+    assert crop_relations(prompt) == {
+        ("north_of", "Grape", ("Orange",)),
+        ("west_of", "Pepper", ("Tomato",)),
+    }
+
+
+def test_a_field_in_the_middle_keeps_the_others_against_it(
+    crop_relations: Callable[[str], NamedRelations],
+) -> None:
+    prompt = "a vineyard in the middle, wheat to the north and maize to the south"
+    relations = crop_relations(prompt)
+    assert ("north_of", "Wheat", ("Grape",)) in relations
+    assert ("south_of", "Maize", ("Grape",)) in relations
+
+
+def test_the_middle_strip_of_a_listed_row_is_its_middle_member(
+    crop_relations: Callable[[str], NamedRelations],
+) -> None:
+    prompt = (
+        "Three strips across my photo, left to right onions, lettuces and carrots, with a man "
+        "hoeing the middle strip and a white van on the track."
+    )
+    assert [f.crop for f in recipe(prompt).fields] == ["Onion", "Lettuce", "Carrot"]
+    assert ("between", "Lettuce", ("Onion", "Carrot")) in crop_relations(prompt)
+    blighted = recipe("three strips: onions, lettuce and carrots, the middle strip has blight")
+    assert [f.health for f in blighted.fields] == ["Healthy", "Ill", "Healthy"]
+
+
+def test_the_middle_said_after_a_row_word_orders_the_row(
+    crop_relations: Callable[[str], NamedRelations],
+) -> None:
+    prompt = "potatos, carrots and onions. 3 fields in a row w/ the potatos in the middle"
+    assert crop_relations(prompt) == {("between", "Potato", ("Carrot", "Onion"))}
+
+
+def test_a_row_is_ordered_past_the_members_bracketed_looks(
+    crop_relations: Callable[[str], NamedRelations],
+) -> None:
+    prompt = (
+        "so on the farm we've got Savoy cabbage (bit of black rot), Red Baron onions (fine) "
+        "and Iceberg lettuce (fine), all in a line north to south"
+    )
+    assert [f.health for f in recipe(prompt).fields] == ["Ill", "Healthy", "Healthy"]
+    relations = crop_relations(prompt)
+    assert ("north_of", "Cabbage", ("Onion",)) in relations
+    assert ("north_of", "Onion", ("Lettuce",)) in relations
