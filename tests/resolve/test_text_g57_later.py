@@ -4,7 +4,8 @@ directions given one to each plot; a block's own measures after a colon; measure
 plot" of the crop a sentence is about; a plot that separates two others; a farm's area
 shared out ("25 of them", "the rest"); "between X on one side and Y on the other"; a
 centre of scenery with fields around it; "the middle strip" of a listed row; the middle
-said after a row word; a row ordered past bracketed looks."""
+said after a row word; a row ordered past bracketed looks; past one of the two hedges a
+field lies between."""
 
 from __future__ import annotations
 
@@ -198,3 +199,20 @@ def test_a_row_is_ordered_past_the_members_bracketed_looks(
     relations = crop_relations(prompt)
     assert ("north_of", "Cabbage", ("Onion",)) in relations
     assert ("north_of", "Onion", ("Lettuce",)) in relations
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "Between the two hedgerows is the strawberry ground, with wheat on the north side of "
+        "the top hedge and a field of onions south of the bottom hedge.",
+        "The strawberry ground lies between the two hedges, with wheat on the north side of "
+        "the top hedge and a field of onions south of the bottom hedge.",
+    ],
+)
+def test_past_one_of_the_two_things_a_field_lies_between_is_past_the_field(
+    crop_relations: Callable[[str], NamedRelations], prompt: str
+) -> None:
+    relations = crop_relations(prompt)
+    assert ("north_of", "Wheat", ("Strawberry",)) in relations
+    assert ("south_of", "Onion", ("Strawberry",)) in relations

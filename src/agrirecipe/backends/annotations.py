@@ -276,9 +276,10 @@ def render_preview(layout: Layout, *, map_size_px: int = 1200) -> Image.Image:
         draw.text((label_x + 4, label_y + 3), plants.field_id, fill=_INK, font=_font(14))
 
     recipe = layout.recipe
+    thinned = any(plants.plants_per_instance > 1 for plants in layout.fields)
     title = (
-        f"{len(layout.fields)} field(s), {layout.plant_count:,} plants, "
-        f"{recipe.environment.season}, seed {recipe.seed}"
+        f"{len(layout.fields)} field(s), {layout.plant_count:,} plants"
+        f"{' drawn' if thinned else ''}, {recipe.environment.season}, seed {recipe.seed}"
     )
     draw.text((margin, 14), title, fill=_INK, font=_font(20))
     _draw_scale_bar(draw, left, top + map_height + 12, span, pixels_per_m)
@@ -361,7 +362,12 @@ def _draw_legend(
         )
         draw.text(
             (x + 34, y + 21),
-            f"{spec.stage}, {spec.season}, {spec.health}, {plants.plant_count:,} plants",
+            f"{spec.stage}, {spec.season}, {spec.health}, {plants.plant_count:,} plants"
+            + (
+                f" drawn, each for {plants.plants_per_instance}"
+                if plants.plants_per_instance > 1
+                else ""
+            ),
             fill=_INK,
             font=_font(14),
         )

@@ -197,6 +197,26 @@ def _separating_plot() -> re.Pattern[str]:
 
 
 @functools.cache
+def _bounded_field() -> tuple[re.Pattern[str], str]:
+    """ "Between the two hedgerows is the strawberry ground": a field said to lie between
+    two things of scenery (and the pattern of a side of one of them)."""
+    things = "|".join(re.escape(w) for w in scenery_words("boundaries", "ground", "trees"))
+    field = r"(?P<field>(?i:the|our|my)\s+[A-Za-z][\w'-]*(?:\s+[A-Za-z][\w'-]*)?)"
+    bounded = re.compile(
+        rf"\b(?i:between)\s+(?i:the)\s+(?i:two)\s+(?i:{things})\s+"
+        rf"(?:(?i:is|lies|sits|runs)\s+)?{field}(?=\s*[,.;:!?]|\s+(?i:with|and)\b)"
+        # ("the strawberry ground lies between the two hedges")
+        rf"|(?:^|(?<=[.;!?]\s)){field.replace('<field>', '<field2>')}\s+"
+        rf"(?i:is|lies|sits|runs)\s+(?i:between)\s+(?i:the)\s+(?i:two)\s+(?i:{things})\b"
+    )
+    side_of = (
+        r"(?:(?i:on|along|at)\s+)?(?:(?i:the)\s+)?(?P<side>(?i:north|south|east|west))"
+        rf"(?:\s+(?i:side))?\s+(?i:of)\s+(?i:the)\s+(?:[\w'-]+\s+)?(?i:{things})\b"
+    )
+    return bounded, side_of
+
+
+@functools.cache
 def _two_either_side() -> re.Pattern[str]:
     """ "Two fields of cereals either side of the farm road": two fields said at once,
     one on each side of a track, ditch or hedge (not "four fields, two either side")."""
@@ -210,6 +230,23 @@ def _two_either_side() -> re.Pattern[str]:
     )
 
 
+def _past_the_bounds(text: str) -> str:
+    """``text`` with "Between the two hedgerows is the strawberry ground, with wheat on
+    the north side of the top hedge and onions south of the bottom hedge" written "...,
+    with wheat north of the strawberry ground and onions south of the strawberry ground":
+    past one of the two things a field lies between is past that field."""
+    bounded, side_of = _bounded_field()
+    found = bounded.search(text)
+    if found is None:
+        return text
+    rest = re.sub(
+        side_of,
+        lambda m: f"{m.group('side').lower()} of {found.group('field') or found.group('field2')}",
+        text[found.end() :],
+    )
+    return text[: found.end()] + rest
+
+
 def place_divided_plots(text: str) -> str:
     """``text`` with "two plots, side by side with a ditch between: ..." written "two
     plots, side by side: ...", and "wheat and maize with a hedge between them" written
@@ -220,6 +257,7 @@ def place_divided_plots(text: str) -> str:
     next to the maize": what divides them is scenery and they touch it on either side;
     so do "two wheat fields either side of the track"."""
     between, separated, named = _dividers()
+    text = _past_the_bounds(text)
     text = separated.sub(" side by side", text)
     # "two carrot plots separated by an onion plot": the plot that parts them is between
     text = _separating_plot().sub(lambda m: f", {m.group('plot')} between them", text)
