@@ -131,6 +131,13 @@ def test_a_farms_area_shared_out_by_the_number_and_the_rest(prompt: str) -> None
     assert corn.row_count > 100  # (25 acres of corn: not 25 plants on the whole farm)
 
 
+def test_of_them_after_a_count_of_plots_is_of_the_plots() -> None:
+    scene = recipe("We have 12 ha: 4 apple blocks, 2 of them Gala")
+    assert [f.variety for f in scene.fields][:2] == ["Gala", "Gala"]
+    assert len(scene.fields) == 4
+    assert all(f.variety != "Gala" for f in scene.fields[2:])
+
+
 def test_the_rest_shared_by_several_crops_keeps_no_size() -> None:
     scene = recipe("A 100-acre farm: 50 acres of wheat, the rest maize and potatoes")
     assert [f.crop for f in scene.fields] == ["Wheat", "Maize", "Potato"]

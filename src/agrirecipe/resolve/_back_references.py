@@ -278,8 +278,10 @@ _ORDER_OF = {**{word: at for at, word in enumerate(ORDINAL_WORDS)}, "the last": 
 
 def named_in_order(kept: Sequence[Mention], mention: Mention) -> Mention | None:
     """The field "the first field" / "the second plot" / "the last block" points at among
-    two or more fields named before, in the order named; None for any other mention."""
-    first = first_word(mention)
+    two or more fields named before, in the order named ("place the second plot east of
+    the first": past the request's verb); None for any other mention."""
+    ordered = sorted(mention.items, key=lambda item: item.start)
+    first = next((i for i in ordered if i.role != "filler"), None)
     if (
         first is None
         or first.role != "reference"

@@ -18,6 +18,7 @@ from typing import Any
 import yaml
 
 from agrirecipe.resolve._geometry import number_words
+from agrirecipe.resolve._key_values import read_key_values
 from agrirecipe.resolve._lexicon import DATA_DIR, Item, plot_nouns_pattern
 from agrirecipe.resolve._pictures import read_pictures
 from agrirecipe.resolve._shares import read_shares
@@ -83,7 +84,8 @@ def expand_casual(prompt: str) -> str:
         return f" {forms[key]} " if forms[key] else " "
 
     lower, lower_forms = _lower_forms()
-    text = read_pictures(prompt)
+    # "crop=lettuce var=Iceberg rows=30 row_spacing=0.35m | ...": settings as words
+    text = read_key_values(read_pictures(prompt))
     # "apples w of the pears", "onions just S of it": a compass letter before "of"
     text = _LETTER_SIDE.sub(lambda m: f"{_LETTER_SIDES[m.group('side').lower()]} of", text)
     # "iceburg lettuce on the W side & savoy cabage on the E side": a compass letter as
@@ -207,7 +209,9 @@ def expand_casual(prompt: str) -> str:
 
 
 _SO_ARE = re.compile(
-    r"(?P<said>\b(?P<copula>(?i:is|are|was|were|looks?|looking))\s+(?P<look>[^,;.:!?]{2,60}?)"
+    # ("Both of our potato fields have late blight, and so does the tomato field")
+    r"(?P<said>\b(?P<copula>(?i:is|are|was|were|looks?|looking|has|have|had|shows?))\s+"
+    r"(?P<look>[^,;.:!?]{2,60}?)"
     r"(?P<joint>\s*,?\s+(?i:and|&)\s+))(?i:so)\s+(?i:is|are|was|were|do|does)\s+"
     r"(?P<subject>(?i:the|our|my|those|these)\s+[^,;.:!?]{2,80}?)(?=\s*(?:[,;.:!?]|$))"
 )

@@ -196,7 +196,15 @@ def fold_listed_member(
         # uncounted plural before the colon is their heading
         return None
     room = (parent.count or 1) - len(parent.refinements)
-    if parent.implied_count and lists_members and clause.mentions and (sub.count or 1) > room:
+    if (
+        parent.implied_count
+        and lists_members
+        and clause.mentions
+        and (sub.count or 1) > room
+        # ("Variety strips ...: Agria, Fontane and Russet Burbank, ..., strips in that order
+        # from west to east": the plots said again, no member more)
+        and not (plots_again(sub) and len(parent.refinements) >= 2)
+    ):
         # "camera plots: Jalapeño, Padrón and California Wonder": as many as listed
         parent.count = len(parent.refinements) + (sub.count or 1)
         room = sub.count or 1

@@ -213,6 +213,8 @@ def colour_lists(items: Sequence[Item]) -> None:
 
 
 #: The plants a colour may be said to hang on ("ripe and orange on the trees").
+#: Words after a colour that say why something is that colour ("orange from the rust").
+_WHY_A_COLOUR = frozenset({"from", "after", "because", "since", "with"})
 _ON_THE_PLANTS = frozenset({"trees", "tree", "plants", "vines", "bushes", "branches"})
 
 
@@ -240,6 +242,8 @@ def colour_after_a_look(items: Sequence[Item]) -> None:
                 or after.role in ("separator", "conjunction")
                 # ("fruit ripe and orange on the trees": where the colour hangs)
                 or (after.role == "filler" and after.norm.split()[-1] in _ON_THE_PLANTS)
+                # ("my boots came out orange from walking through": why it is that colour)
+                or (after.role == "filler" and after.norm in _WHY_A_COLOUR)
             )
         ):
             word.role = "filler"

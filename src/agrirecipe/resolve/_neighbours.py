@@ -48,7 +48,10 @@ _OPENING_NEIGHBOURS = re.compile(
     r"(?:^|(?<=[.;:!?]\s))(?P<count>(?i:two|three|four|2|3|4)\s+)"
     r"(?i:neighbouring|neighboring|adjacent|adjoining|side[- ]by[- ]side)\s+"
     r"(?P<plots>(?i:plots|fields|blocks|strips|beds|patches|paddocks))\b"
-    r"(?P<of>\s+(?i:of)\s+[A-Za-z][\w'’ -]*?)?(?=\s*(?:[,:;.]|$))"
+    r"(?P<of>\s+(?i:of)\s+[A-Za-z][\w'’ -]*?"
+    # ("three adjacent blocks of Jonagored, Fuji and Pink Lady apples": the whole list)
+    r"(?:\s*,\s*[A-Za-z][A-Za-z'’ -]*?)*(?:\s*,?\s+(?i:and|&)\s+[A-Za-z][A-Za-z'’ -]*?)?)?"
+    r"(?=\s*(?:[,:;.]|$))"
 )
 # "Padrón peppers on one bed and Jalapeños on the next": two plots side by side
 _ONE_AND_THE_NEXT = re.compile(

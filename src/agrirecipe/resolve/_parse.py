@@ -152,6 +152,7 @@ from agrirecipe.resolve._relations import read_relations
 from agrirecipe.resolve._restated_lists import drop_restated_lists
 from agrirecipe.resolve._retractions import (
     apply_corrections,
+    correct_placements,
     drop_alternatives,
     drop_corrected_words,
     drop_free_choices,
@@ -159,6 +160,7 @@ from agrirecipe.resolve._retractions import (
 )
 from agrirecipe.resolve._same_spacing import parallel_spacing, same_spacing
 from agrirecipe.resolve._scan import assign_roles
+from agrirecipe.resolve._short_names import name_short_forms
 from agrirecipe.resolve._side_phrases import place_sides, place_split_halves
 from agrirecipe.resolve._sides import (
     place_compass_members,
@@ -279,11 +281,15 @@ class PromptReader(FieldReading):
                 stage="resolve",
                 hint=f"describe the fields you want, e.g. {EXAMPLES}",
             )
-        text = drop_list_numbers(fill_gapped_counts(spread_value_lists(expand_casual(prompt))))
+        text = drop_list_numbers(
+            fill_gapped_counts(spread_value_lists(correct_placements(expand_casual(prompt))))
+        )
 
         def tag(phrase: str) -> list[Item]:
             return self.lexicon.tag(tokenize(phrase))
 
+        # "pinot nero & cabernet, ..., pinot north": a variety named again by its first word
+        text = name_short_forms(text, self._variety_names(), tag)
         text, labels = resolve_labels(end_reciprocals(text, tag), tag)
         text = place_compass_members(open_ordered_lists(text, tag), tag)
         text = place_around_a_centre(text, tag)
@@ -453,6 +459,15 @@ class PromptReader(FieldReading):
             trace=tuple(self.trace),
             resolver=self.strategy,
         )
+
+    def _variety_names(self) -> list[str]:
+        """The hierarchy's variety names and aliases."""
+        return [
+            name
+            for crop in self.context.hierarchy.crops.values()
+            for variety in crop.varieties
+            for name in (variety.name, *variety.aliases)
+        ]
 
     def _note(self, subjects: Iterable[str], detail: str) -> None:
         """Record in the trace what one reading pass did to each of these words."""

@@ -7,6 +7,8 @@
 - *Choices left open*: "some fruit fields pls, whatever fruit u like" is no more fields.
 - *Negations*: "no apples, just pears" asks for no apples; "the kitchen garden's gone"
   for no garden.
+- *Placements corrected*: "peppers b4 the onions... i mean west of them" places the
+  peppers west of the onions (:func:`correct_placements`, on the text).
 
 Each pass removes the mentions it reads from their clauses and returns their texts,
 which the reader lists in its trace. The words are data (``corrections``,
@@ -16,14 +18,36 @@ which the reader lists in its trace. The words are data (``corrections``,
 from __future__ import annotations
 
 import itertools
+import re
 from collections.abc import Sequence
 
 from agrirecipe.resolve._lexicon import Item, reader_words
 from agrirecipe.resolve._mentions import Clause, Mention
 from agrirecipe.resolve._structure import first_word, names_a_variety
 
+_PLACE = (
+    r"(?:before|after|next to|beside|behind|in front of|past|beyond|by|near|"
+    r"(?:just |right |directly )?(?:north|south|east|west)\s+of)"
+)
+#: "peppers b4 the onions (sturon)... i mean west of them": a placement said again in
+#: other words, pointing back at what the first one named.
+_PLACE_CORRECTED = re.compile(
+    rf"\b(?i:{_PLACE})\s+(?P<what>[^.,;:!?()]*?(?:\s*\([^)]*\))?)\s*"
+    r"(?:\.{2,}|…|,|-+|–|—)?\s*(?i:i mean|i meant|or rather|rather|sorry|no)\s*,?\s+"
+    r"(?P<place>(?i:(?:just |right |directly )?(?:north|south|east|west)\s+of|next to|beside|"
+    r"behind|in front of))\s+(?i:them|it|those|that|these)\b"
+)
+
+
+def correct_placements(text: str) -> str:
+    """``text`` with "X b4 the onions... i mean west of them" written "X west of the
+    onions": the placement said last, of what the first one named."""
+    return _PLACE_CORRECTED.sub(lambda m: f"{m.group('place')} {m.group('what')}", text)
+
+
 __all__ = [
     "apply_corrections",
+    "correct_placements",
     "drop_alternatives",
     "drop_corrected_words",
     "drop_free_choices",

@@ -85,6 +85,8 @@ _BARE_SHARE = re.compile(
     + _NUMBER
     + r"\s+(?=(?i:in|under|down to|planted with|planted to|sown to|sown with|of)\s)"
 )
+#: A number of things counted ("4 apple blocks"), once the areas are taken out.
+_COUNTED = re.compile(r"\b\d+(?:\.\d+)?\s+(?:[A-Za-z][\w'-]*\s+){0,2}[A-Za-z][\w'-]*s\b")
 _AN_AREA = re.compile(_NUMBER + r"\s*(?P<unit>(?i:acres?|ha|hectares?))\b")
 #: "the rest in durum": what is left of the whole, given to one crop (not "the rest maize
 #: and potatoes", shared by several, nor "the rest healthy", a look).
@@ -107,7 +109,15 @@ def _the_rest(text: str) -> str:
     unit = (total.group("unit") or total.group("unit2")).lower()
     unit = _UNIT_PLURALS.get(unit, unit)
     head, rest = text[: total.end()], text[total.end() :]
-    rest = _OF_THEM.sub(lambda m: f"{m.group('n')} {unit}", rest)
+    # (not "we have 12 ha: 4 apple blocks, 2 of them Gala": of what was counted since)
+    rest = _OF_THEM.sub(
+        lambda m: (
+            m.group(0)
+            if _COUNTED.search(_AN_AREA.sub("", m.string[: m.start()]))
+            else f"{m.group('n')} {unit}"
+        ),
+        rest,
+    )
     if _AN_AREA.search(rest):
         # (a bare number is an area only once some share was said in the whole's units)
         rest = _BARE_SHARE.sub(

@@ -43,6 +43,27 @@ _ONE_ON_A_SIDE = re.compile(
 )
 
 
+# "pinot nero & cabernet, 1ha each, pinot nero north": a field named again, then the one
+# side said in the whole request
+_NAMED_AGAIN_SIDE = re.compile(
+    r"(?<=,\s)(?P<name>[A-Za-z][\w'-]*(?:\s+[A-Za-z][\w'-]*)?)\s+"
+    r"(?P<side>(?i:north|south|east|west))(?=\s*(?:[.;!?]|$))"
+)
+_A_SIDE = re.compile(r"\b(?i:north|south|east|west)(?:(?i:ern|wards))?\b")
+
+
+def _named_again_on_a_side(text: str) -> str:
+    """``text`` with "..., pinot nero north" written "..., pinot nero north of the other"
+    when the name was said before and that is the only side said."""
+    match = _NAMED_AGAIN_SIDE.search(text)
+    if match is None or len(_A_SIDE.findall(text)) != 1:
+        return text
+    last = match.group("name").split()[-1]
+    if not re.search(rf"(?<![\w-]){re.escape(last)}(?![\w-])", text[: match.start()], re.I):
+        return text
+    return f"{text[: match.end()]} of the other{text[match.end() :]}"
+
+
 _ARE_A_SIDE = re.compile(
     # ("cabernet's north": "is" written "'s")
     r"(?:\b(?P<verb>(?i:are|is))\s+|(?<=[A-Za-z])(?P<s>['’]s)\s+)"
@@ -379,6 +400,7 @@ def place_sides(text: str) -> str:
     if any(m.group("side").lower() in ("left", "right") for m in _SIDE_LABEL.finditer(text)):
         text = _SIDE_LABEL.sub(lambda m: f"{_SIDE_LABELS[m.group('side').lower()]}, ", text)
     text = _ONE_ON_A_SIDE.sub(lambda m: f"{m.group(0)} of the other", text)
+    text = _named_again_on_a_side(text)
     # "durondeau pears and bing cherries, the cherries r east": a side said bare after "are"
     text = _ARE_A_SIDE.sub(
         lambda m: f"{m.group('verb') or m.group('s')} to the {m.group('side')}",

@@ -367,7 +367,13 @@ def drop_trailing_summaries(clauses: Sequence[Clause], mentions: list[Mention]) 
         # they share)
         one = summary.count == 1 and _counted_one(summary)
         if not one and not (
-            summary.plot["plural"] and (summary.implied_count or summary.count == position)
+            summary.plot["plural"]
+            and (
+                summary.implied_count
+                or summary.count == position
+                # ("flint corn & popping corn, separate fields": the fields they are in)
+                or (summary.distinct and summary.count is None)
+            )
         ):
             continue
         options = set(summary.plot["options"])
