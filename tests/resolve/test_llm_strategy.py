@@ -219,6 +219,19 @@ def test_contradictions_and_impossible_requests(
         resolver.resolve_intent(prompt, context)
 
 
+def test_a_measure_the_geometry_leaves_is_no_count_of_fields(
+    resolver: LlmResolver, context: ResolveContext
+) -> None:
+    """ "at 12.5 cm" after a strip (a spacing the geometry patterns leave in the request)
+    is a measure, not 12.5 fields: the plot check reads numbers as the rules do."""
+    intent = resolver.resolve_intent(
+        "A 24-row wheat strip at 12.5 cm sandwiched between two maize strips of 12 rows at "
+        "75 cm, all rows running east-west, for the row-detection algorithm.",
+        context,
+    )
+    assert sorted(f.crop or "" for f in intent.fields) == ["Maize", "Maize", "Wheat"]
+
+
 def test_plants_parts_and_rows(resolver: LlmResolver, context: ResolveContext) -> None:
     """Words about a named field's plants or fruit are not fields; a counted part in a row."""
     assert fields(resolver.resolve_intent("tomato vines in summer", context)) == [

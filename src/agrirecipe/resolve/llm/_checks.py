@@ -50,6 +50,7 @@ def _check_plots(lexicon: Lexicon, request: str, hierarchy: Hierarchy) -> None:
     """
     from agrirecipe.resolve._decompose import MentionBuilder, decompose
     from agrirecipe.resolve._lexicon import tokenize
+    from agrirecipe.resolve._numbers import numbers_that_count_no_fields
     from agrirecipe.resolve._retractions import apply_corrections
     from agrirecipe.resolve._scan import assign_roles
     from agrirecipe.resolve._sizes import read_sizes
@@ -57,6 +58,8 @@ def _check_plots(lexicon: Lexicon, request: str, hierarchy: Hierarchy) -> None:
 
     items = lexicon.tag(tokenize(request))
     assign_roles(items)
+    # ("A wheat strip at 12.5 cm ...": a measure the geometry left in the request, no count)
+    numbers_that_count_no_fields(items)
     builder = MentionBuilder({c.name: c.category for c in hierarchy.crops.values()})
     clauses = decompose(read_sizes(items), builder)
     apply_corrections(clauses)
