@@ -15,11 +15,9 @@ import re
 from collections.abc import Callable, Sequence
 from typing import Any
 
-import yaml
-
 from agrirecipe.resolve._geometry import number_words
 from agrirecipe.resolve._key_values import read_key_values
-from agrirecipe.resolve._lexicon import DATA_DIR, Item, plot_nouns_pattern
+from agrirecipe.resolve._lexicon import Item, load_data, plot_nouns_pattern
 from agrirecipe.resolve._pictures import read_pictures
 from agrirecipe.resolve._shares import read_shares
 from agrirecipe.resolve._shorthand import expand_shorthand
@@ -29,7 +27,7 @@ __all__ = ["count_said_after_crop", "end_reciprocals", "expand_casual"]
 
 @functools.cache
 def _forms() -> tuple[re.Pattern[str], dict[str, str]]:
-    data: dict[str, Any] = yaml.safe_load((DATA_DIR / "casual.yaml").read_text("utf-8"))
+    data: dict[str, Any] = load_data("casual.yaml")
     forms = {str(k).lower(): str(v) for k, v in data["forms"].items()}
     ordered = sorted(forms, key=len, reverse=True)  # "nxt 2" before "nxt"
     alternation = "|".join(re.escape(form).replace(r"\ ", r"\s+") for form in ordered)
@@ -39,7 +37,7 @@ def _forms() -> tuple[re.Pattern[str], dict[str, str]]:
 
 @functools.cache
 def _lower_forms() -> tuple[re.Pattern[str], dict[str, str]]:
-    data: dict[str, Any] = yaml.safe_load((DATA_DIR / "casual.yaml").read_text("utf-8"))
+    data: dict[str, Any] = load_data("casual.yaml")
     forms = {str(k): str(v) for k, v in data.get("lower_forms", {}).items()}
     alternation = "|".join(re.escape(form) for form in sorted(forms, key=len, reverse=True))
     return re.compile(rf"(?<=\s)(?:{alternation})(?=\s)"), forms

@@ -14,9 +14,7 @@ import functools
 import re
 from typing import Any
 
-import yaml
-
-from agrirecipe.resolve._lexicon import DATA_DIR
+from agrirecipe.resolve._lexicon import load_data
 
 __all__ = ["read_key_values"]
 
@@ -31,7 +29,7 @@ _BAR = re.compile(r"\s*\|\s*")
 
 @functools.cache
 def _templates() -> dict[str, str]:
-    data: dict[str, Any] = yaml.safe_load((DATA_DIR / "casual.yaml").read_text("utf-8"))
+    data: dict[str, Any] = load_data("casual.yaml")
     return {
         _key(str(key)): str(words) for words, keys in data["key_values"].items() for key in keys
     }

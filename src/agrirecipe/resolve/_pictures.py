@@ -13,9 +13,7 @@ import functools
 import re
 from typing import Any
 
-import yaml
-
-from agrirecipe.resolve._lexicon import DATA_DIR, vocabulary
+from agrirecipe.resolve._lexicon import load_data, vocabulary
 
 __all__ = ["read_pictures"]
 
@@ -36,14 +34,14 @@ _EMOJI_IN_WORD = re.compile(
 
 @functools.cache
 def _crop_pictures() -> re.Pattern[str]:
-    data: dict[str, Any] = yaml.safe_load((DATA_DIR / "casual.yaml").read_text("utf-8"))
+    data: dict[str, Any] = load_data("casual.yaml")
     # (with the variation selector that asks for the colour form: "🌶️")
     return re.compile(f"[{re.escape(str(data['crop_pictures']))}]\ufe0f?")
 
 
 @functools.cache
 def _picture_crops() -> dict[str, str]:
-    data: dict[str, Any] = yaml.safe_load((DATA_DIR / "casual.yaml").read_text("utf-8"))
+    data: dict[str, Any] = load_data("casual.yaml")
     return {str(k): str(v) for k, v in data["picture_crops"].items()}
 
 
