@@ -3,7 +3,7 @@
 plots said again after a list; "three adjacent blocks of A, B and C"; "rows along 160
 degrees", "row bearing 075", "1 m vine pitch"; "separate fields" after a list; a variety
 named again by its first word; a salad picture and "af"; a placement corrected with "i
-mean"; "and so does the tomato field")."""
+mean"; "and so does the tomato field"; a field at one end of a directed row)."""
 
 from __future__ import annotations
 
@@ -135,3 +135,35 @@ def test_so_does_the_next_field() -> None:
         ("Potato", "Ill"),
         ("Tomato", "Ill"),
     ]
+
+
+def id_relations(prompt: str) -> set[tuple[str, str, tuple[str, ...]]]:
+    return {(r.kind, r.subject, r.objects) for r in recipe(prompt).relations}
+
+
+def test_a_field_at_one_end_of_a_directed_row() -> None:
+    south = id_relations(
+        "Three wheat fields in a line running north to south, with a maize field at the "
+        "southern end."
+    )
+    assert {r for r in south if "maize_field_1" in (r[1], *r[2])} == {
+        ("north_of", "wheat_field_3", ("maize_field_1",))
+    }
+    north = id_relations(
+        "Three wheat fields in a line running north to south, with a maize field at the "
+        "northern end."
+    )
+    assert {r for r in north if "maize_field_1" in (r[1], *r[2])} == {
+        ("north_of", "maize_field_1", ("wheat_field_1",))
+    }
+    east = id_relations(
+        "Potatoes, carrots and onions from west to east, and strawberries at the east end"
+    )
+    assert ("west_of", "onion_field_1", ("strawberry_field_1",)) in east
+    # (scenery at the end places nothing; an end zone on the other axis is no row end)
+    barn = id_relations("Three wheat fields running north to south and a barn at the south end")
+    assert len(barn) == 3
+    across = id_relations(
+        "Three wheat fields running north to south, with a maize field at the east end"
+    )
+    assert not any("maize_field_1" in (r[1], *r[2]) for r in across)

@@ -3,7 +3,9 @@
 "the onions in between them" with the potatoes north and the carrots south of the onions
 puts the potatoes north of the carrots (:func:`complete_orders`); a field said to be
 next to another that zones already place in order is placed by the zones
-(:func:`drop_placed_neighbours`). The prompt reader (``_parse``) asks these once the
+(:func:`drop_placed_neighbours`); "three wheat fields running north to south, with a
+maize field at the southern end" puts the maize past the last wheat field
+(:func:`past_a_row_end`). The prompt reader (``_parse``) asks these once the
 relation words and the zones are read.
 """
 
@@ -16,7 +18,7 @@ from agrirecipe.resolve._intent import RelationIntent
 from agrirecipe.resolve._lexicon import Item
 from agrirecipe.resolve._zones import zone_of
 
-__all__ = ["complete_orders", "drop_placed_neighbours"]
+__all__ = ["complete_orders", "drop_placed_neighbours", "past_a_row_end"]
 
 
 def complete_orders(
@@ -127,6 +129,44 @@ def complete_orders(
                         RelationIntent(kind=kinds[axis], subject=before[0], objects=(after[0],))
                     )
     return completed
+
+
+#: A zone at one end of an axis: the axis, and whether it is the far end of its order.
+_ENDS = {"north": ("ns", False), "south": ("ns", True), "west": ("ew", False), "east": ("ew", True)}
+
+
+def past_a_row_end(
+    relations: Sequence[RelationIntent], fields: Sequence[Sequence[Item]]
+) -> list[RelationIntent]:
+    """'Three wheat fields in a line running north to south, with a maize field at the
+    southern end': the one field given an end of its own, of fields placed in a row on
+    that axis, lies past the row's last field that way."""
+    zones = {index: zone_of(items) for index, items in enumerate(fields)}
+    zoned = [(index, zone) for index, zone in zones.items() if zone is not None]
+    if len(zoned) != 1 or zoned[0][1] not in _ENDS:
+        return []
+    (index, zone) = zoned[0]
+    axis, far = _ENDS[zone]
+    edges: set[tuple[int, int]] = set()
+    for relation in relations:
+        if index in (relation.subject, *relation.objects):
+            return []  # (placed already: the words say where)
+        if relation.kind in ("north_of", "west_of", "south_of", "east_of"):
+            (other,) = relation.objects
+            first = relation.kind in ("north_of", "west_of")
+            pair = (relation.subject, other) if first else (other, relation.subject)
+            if ("ns" if relation.kind in ("north_of", "south_of") else "ew") == axis:
+                edges.add(pair)
+    placed = {i for pair in edges for i in pair}
+    if len(placed) < 2:
+        return []
+    # the row's end that way: the one field with none past it
+    ends = [i for i in placed if not any(pair[0 if far else 1] == i for pair in edges)]
+    if len(ends) != 1:
+        return []
+    kinds: dict[str, RelationKind] = {"ns": "north_of", "ew": "west_of"}
+    high, low = (ends[0], index) if far else (index, ends[0])
+    return [RelationIntent(kind=kinds[axis], subject=high, objects=(low,))]
 
 
 def drop_placed_neighbours(

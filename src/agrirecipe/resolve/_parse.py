@@ -134,7 +134,7 @@ from agrirecipe.resolve._neighbours import (
     place_flanks,
     place_neighbouring_plots,
 )
-from agrirecipe.resolve._orders import complete_orders, drop_placed_neighbours
+from agrirecipe.resolve._orders import complete_orders, drop_placed_neighbours, past_a_row_end
 from agrirecipe.resolve._placed_members import measures_after_a_placed_reference
 from agrirecipe.resolve._placements import predicate_of_the_placed
 from agrirecipe.resolve._plots_of_the_crop import count_the_crop
@@ -407,6 +407,7 @@ class PromptReader(FieldReading):
         relations = drop_placed_neighbours(relations, zoned) + zoned
         relations = relations or lone_side(tokens, claimed, owned)
         relations += complete_orders(relations, owned)
+        relations += past_a_row_end(relations, owned)
         scene_season = self._apply_scene_items(scene_items, fields, hemisphere)
         give_respectively(fields)
         intents = [self._field_intent(f, hemisphere, scene_season) for f in fields]

@@ -131,8 +131,45 @@ def find_zones(tokens: Sequence[Token], claimed: Sequence[bool] = ()) -> list[Zo
         found.append(other)  # "Half the farm is maize, the northern half, and the rest ..."
         sides.add(other.zone)
     if len(sides) < 2 and not (sides and any(m.zone == "middle" for m in found)):
-        return []
+        return _row_end(found, tokens, claimed)
     return sorted(found, key=lambda m: m.first)
+
+
+#: The axis of each compass side, and the row directions of the relation words on it.
+_AXES = {"north": "ns", "south": "ns", "west": "ew", "east": "ew"}
+_ROW_DIRECTIONS = {
+    "ns": ("towards_north", "towards_south"),
+    "ew": ("towards_east", "towards_west"),
+}
+
+
+def _row_end(
+    found: Sequence[ZoneMatch], tokens: Sequence[Token], claimed: Sequence[bool]
+) -> list[ZoneMatch]:
+    """'Three wheat fields in a line running north to south, with a maize field at the
+    southern end': one end zone of its own is a zone when the prompt lays fields out in a
+    row on that axis (past the row's end: :func:`agrirecipe.resolve._orders.past_a_row_end`)."""
+    if len(found) != 1 or found[0].zone not in _AXES:
+        return []
+    match = found[0]
+    if tokens[match.last - 1].norm != "end":
+        return []
+    free = " ".join(
+        t.norm if not (claimed and claimed[i]) and not match.first <= i < match.last else "|"
+        for i, t in enumerate(tokens)
+    )
+    return [match] if _row_direction(_AXES[match.zone]).search(free) else []
+
+
+@functools.cache
+def _row_direction(axis: str) -> re.Pattern[str]:
+    """The relation words that lay fields out in a row on ``axis`` ("north to south")."""
+    trailers = vocabulary()["relation_trailers"]
+    phrases = sorted(
+        (str(p) for d in _ROW_DIRECTIONS[axis] for p in trailers[d]), key=len, reverse=True
+    )
+    alternation = "|".join(re.escape(p) for p in phrases)
+    return re.compile(rf"(?<![a-z0-9])(?:{alternation})(?![a-z0-9])")
 
 
 def _a_far_side(match: ZoneMatch, tokens: Sequence[Token]) -> bool:
