@@ -2,7 +2,9 @@
 
 Runs each file through the evaluation runner with one strategy object (warm: the
 runner's first call is a warm-up), and counts the tokens llama.cpp evaluates
-(``Llama.eval``), the cost that decides the strategy's latency. ``--whole-records``
+(``Llama.eval``), the cost that decides the strategy's latency, and the time of
+one-token evaluations (generated answers) apart from longer ones (the prompt read in
+batches). ``--whole-records``
 asks the whole record instead of the local records (an adapter trained before the
 local records, e.g. the first shipped one, kept under another path). Run it with
 nothing else on the machine; docs/FINETUNE.md keeps the results.
@@ -26,6 +28,8 @@ def main() -> None:
     args = parser.parse_args()
     os.environ.setdefault("HF_HUB_OFFLINE", "1")
 
+    import time
+
     import llama_cpp
     import numpy as np
 
@@ -34,11 +38,17 @@ def main() -> None:
     from agrirecipe.finetune import FinetunedResolver
 
     evaluated = [0]
+    # [calls, seconds] of one-token evals (generation) and of longer ones (prefill)
+    steps = {"generated": [0, 0.0], "prefilled": [0, 0.0]}
     original = llama_cpp.Llama.eval
 
     def counting(self: llama_cpp.Llama, tokens: list[int]) -> None:
         evaluated[0] += len(tokens)
+        started = time.perf_counter()
         original(self, tokens)
+        kind = steps["generated" if len(tokens) == 1 else "prefilled"]
+        kind[0] += len(tokens)
+        kind[1] += time.perf_counter() - started
 
     llama_cpp.Llama.eval = counting  # type: ignore[method-assign]
 
@@ -50,6 +60,8 @@ def main() -> None:
     for path in args.files:
         benchmark = load_benchmark(path)
         evaluated[0] = 0
+        for kind in steps.values():
+            kind[:] = [0, 0.0]
         load = Path("/proc/loadavg").read_text().split()[0]
         run = run_strategy(benchmark, strategy, progress=False)  # type: ignore[arg-type]
         seconds = np.array([s.seconds for s in run.scores if s.seconds is not None])
@@ -63,6 +75,12 @@ def main() -> None:
             f"prompt (1-minute load {load} at the start)",
             flush=True,
         )
+        for name, (tokens, spent) in steps.items():
+            print(
+                f"  {name}: {tokens / count:.1f} tokens a prompt, {1000 * spent / count:.0f} ms a "
+                f"prompt ({1000 * spent / max(tokens, 1):.1f} ms a token)",
+                flush=True,
+            )
     print(f"all: {right}/{total} = {100 * right / total:.1f} %")
 
 

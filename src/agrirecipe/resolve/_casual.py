@@ -17,7 +17,7 @@ from typing import Any
 
 from agrirecipe.resolve._geometry import number_words
 from agrirecipe.resolve._key_values import read_key_values
-from agrirecipe.resolve._lexicon import Item, load_data, plot_nouns_pattern
+from agrirecipe.resolve._lexicon import Item, everyday_words, load_data, plot_nouns_pattern
 from agrirecipe.resolve._pictures import read_pictures
 from agrirecipe.resolve._shares import read_shares
 from agrirecipe.resolve._shorthand import expand_shorthand
@@ -368,7 +368,8 @@ _ROOTSTOCK = re.compile(
     r"(?<![\w.])(?:(?:MM|M|G|B)\.?(?![23]\b)\d{1,3}|(?i:gisela)\s*\d{1,2})(?![\w.²³])"
 )
 _LETTER_SIDES = {"n": "north", "s": "south", "e": "east", "w": "west"}
-_LETTER_SIDE = re.compile(r"(?<=[A-Za-z] )(?P<side>[NSEWnsew]) of\b")
+# ("2 veggie plots, 1 N of the other": "1" for "one")
+_LETTER_SIDE = re.compile(r"(?:(?<=[A-Za-z] )|(?<=\b1 ))(?P<side>[NSEWnsew]) of\b")
 _LETTER_PLACE = re.compile(
     r"(?<=\b[Tt]he )(?P<side>[NSEWnsew])(?= (?i:side|end|half|edge|corner|part)s?\b)"
 )
@@ -570,6 +571,14 @@ def _after_a_list(match: re.Match[str], tag: Callable[[str], Sequence[Item]]) ->
     """Whether the crop a bracketed or comma'd count follows ends a list of crops (or of
     kinds: "cereals n potatoes, 2 fields")."""
     clause = re.split(r"[.;:!?]", match.string[: match.end("words")])[-1]
+    # (a misspelt name not yet read counts: "valenica + hamlin, 2 groves")
+    words = everyday_words()
     return bool(re.search(r"(?:,|\b(?i:and)\b|&|\+|\b(?i:or)\b)", clause)) and (
-        sum(1 for i in tag(clause) if i.has("crop", "variety", "category")) >= 2
+        sum(
+            1
+            for i in tag(clause)
+            if i.has("crop", "variety", "category")
+            or (not i.senses and len(i.norm) >= 5 and i.norm.isalpha() and i.norm not in words)
+        )
+        >= 2
     )

@@ -75,6 +75,8 @@ class FieldDraft:
     plot: dict[str, Any] | None
     group: int | None = None
     sub: Mention | None = None
+    #: Which of its mention's fields this is, and how many the mention stands for.
+    place: tuple[int, int] = (0, 1)
 
 
 class FieldReading:
@@ -97,6 +99,7 @@ class FieldReading:
                     mention.refinements[index] if index < len(mention.refinements) else mention.rest
                 )
                 members.append(self._member(mention, sub))
+                members[-1].place = (index, count)
             if mention.distinct and count > 1:
                 if mention.distinct_crops:
                     _check_distinct(mention, members)
@@ -220,6 +223,16 @@ class FieldReading:
             options = deciduous or options
         if crop is None and len(options) == 1:
             crop = options[0]
+        index, count = member.place
+        said_of_all = [i for i in member.mention.items if i.role == "size"]
+        if (
+            count > 1
+            and len(sizes) == len(said_of_all) == count
+            and len({s.text for s in sizes}) == count
+        ):
+            # "two apple orchards, 100 x 50 m and 60 x 40 m", "Two orange blocks -
+            # conventional 7.2 x 3.8 m and super-high-density 3.7 x 1.2 m": one each, in order
+            sizes = [sizes[index]]
         sizes, rows, fitting = self._planting_grid(sizes, rows, (crop,) if crop else options, text)
         if crop is None and fitting:
             # "a fruit tree block (3.5 m x 1 m)": the crops that grid fits

@@ -373,7 +373,7 @@ class Lexicon:
         letters = len(text.replace(" ", ""))
         if letters < 4 or not self.fuzzy_choices:
             return None
-        if " " not in text and text in everyday_words():
+        if " " not in text and _everyday(text):
             return None  # "train" is a word of its own, not a misspelt "grain"
         # Damerau-Levenshtein counts a swapped pair of letters ("appel", "whaet") as one
         # edit; one edit in five letters is the most a short word may differ by, two in
@@ -480,6 +480,25 @@ def _swapped(said: str, known: str) -> bool:
 
 #: Endings that make a new word of a known one ("blocky", "reddish", "ridged").
 _DERIVING_ENDINGS = frozenset({"y", "ish", "ed", "ing", "er", "ers", "ly"})
+
+
+#: Verb endings of a word the vocabulary holds only in its plain form ("dusted": "dust").
+_VERB_ENDINGS = ("ed", "ing")
+
+
+def _everyday(word: str) -> bool:
+    """Whether ``word`` is an everyday word, or one with a verb ending ("tramlines dusted
+    white" is not a misspelt "rusted"; "spotted": "spot")."""
+    words = everyday_words()
+    if word in words:
+        return True
+    for ending in _VERB_ENDINGS:
+        stem = word.removesuffix(ending)
+        if stem != word and len(stem) >= 4:
+            doubled = len(stem) > 4 and stem[-1] == stem[-2]
+            if stem in words or stem + "e" in words or (doubled and stem[:-1] in words):
+                return True
+    return False
 
 
 @functools.lru_cache(maxsize=1)

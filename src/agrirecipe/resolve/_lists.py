@@ -137,6 +137,8 @@ def spread_value_lists(text: str) -> str:
     # "three wheat plots drilled at 12.5 cm, 25 cm and 37.5 cm": how each is drilled
     text = _DRILLED_LIST.sub(_drilled_each, text)
     text = _SIZES_OF_COUNTED.sub(_one_size_each, text)
+    # "..., each one hectare": "one hectare each" (not the pronoun "each one")
+    text = _EACH_ONE_SIZE.sub(r"\g<size> \g<each>", text)
     # "Half a hectare each of Cos lettuce and Savoy cabbage": the size is each one's
     text = _SIZE_EACH_OF.sub(lambda m: f"{m.group('list')}, {m.group('size')} each", text)
     # "Three different vegetables, each a 20 x 30 m plot with 0.75 m rows": what each
@@ -189,6 +191,12 @@ _SIZES_OF_COUNTED = re.compile(
     r"(?:fields|plots|blocks|strips|orchards|vineyards|paddocks|groves))"
     rf"(?:\s*,\s*|\s+(?:of|at)\s+)(?P<sizes>{_AREA}(?:\s*,\s*{_AREA})*,?\s+(?:and|&)\s+{_AREA})",
     re.IGNORECASE,
+)
+
+
+_EACH_ONE_SIZE = re.compile(
+    r"\b(?P<each>(?i:each))\s+(?P<size>(?i:one|a|an|half an?)\s+"
+    r"(?i:hectares?|ha|acres?|ac)\b)"
 )
 
 

@@ -210,6 +210,15 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
             targets = [in_brackets]
         elif not before or (
             next_link is not None
+            # ("cherry orchard (lapins) rows 4.5m apart, trees every 2.5m, 12 rows + pear
+            # orchard ...": a run of measures goes on for the field it was about)
+            and not (
+                carried is not None
+                and carried[0] == position - 1
+                and _measures_only(clause)
+                and _measures_only(clauses[position - 1])
+                and link_norm(clause) == ","
+            )
             and next_link.role == "conjunction"
             and forward is not None
             and forward.clause == position + 1
@@ -389,3 +398,12 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
         for target in targets if to_each else targets[:1]:
             target.items.extend(geometry)
     return scene
+
+
+def _measures_only(clause: Clause) -> bool:
+    """Whether a clause names no field and says only measures ("12 rows")."""
+    return (
+        not clause.mentions
+        and bool(clause.items)
+        and all(i.role in ("geometry", "size") for i in clause.items)
+    )

@@ -198,6 +198,15 @@ def described_crop(clause: Clause, before: Sequence[Mention]) -> list[Mention]:
         )
         & crops
     ]
+    if not fields:
+        # "fruit trees behind a vegetable patch, the trees pink with blossom": the one
+        # field whose plot may hold those plants
+        fields = [
+            m
+            for m in before
+            if not strong_crops(m) and m.plot is not None and set(m.plot["options"]) & crops
+        ]
+        fields = fields if len(fields) == 1 else []
     if len(fields) >= 2 and _all_the_plants(clause, heads):
         # "Cabernet in the north block, Chardonnay in the south block, and the vines are
         # flowering": the plants of every field of that crop

@@ -15,6 +15,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from agrirecipe.resolve._lexicon import reader_words, vocabulary
+from agrirecipe.resolve._links import link_norm
 from agrirecipe.resolve._mentions import Clause, Mention
 from agrirecipe.resolve._structure import (
     strong_crops,
@@ -52,7 +53,17 @@ def plants_of_no_field_before(clauses: Sequence[Clause], position: int, mention:
         return False
     may_be = set(words[heads[0].norm])
     earlier = [strong_crops(m) for c in clauses[:position] for m in c.mentions]
-    return bool(earlier) and all(crops and not crops & may_be for crops in earlier)
+    if not earlier:
+        # "from north to south: the vines, then the greens, then the cereals": the first
+        # of fields named in order, the next of another crop
+        following = next((c for c in clauses[position + 1 :] if c.items or c.mentions), None)
+        return (
+            following is not None
+            and link_norm(following) == "then"
+            and len(following.mentions) == 1
+            and not strong_crops(following.mentions[0]) & may_be
+        )
+    return all(crops and not crops & may_be for crops in earlier)
 
 
 #: Words that open a place after a word for plants ("the vines on the hill").

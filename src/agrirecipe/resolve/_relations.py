@@ -40,6 +40,7 @@ from agrirecipe.resolve._links import (
     own_mentions,
     relation_mentions,
 )
+from agrirecipe.resolve._measures import sentence_start
 from agrirecipe.resolve._mentions import Clause, Mention
 from agrirecipe.resolve._placements import (
     a_distance,
@@ -569,6 +570,17 @@ def _both_said(clauses: Sequence[Clause], position: int) -> bool:
         and bool(clauses[position - 2].mentions)
     ):
         return True
+    if (
+        # "The Malling Centenary strawberries are west of the Sonata ones, and both lie
+        # east of the Nantes carrots": the two just placed against each other
+        not previous.mentions
+        and previous.link is not None
+        and previous.link.norm == "and"
+        and words[:1] == ["both"]
+        and all(w in _BOTH_VERBS for w in words[1:])
+        and sum(len(c.mentions) for c in clauses[sentence_start(clauses, position) : position]) >= 2
+    ):
+        return True
     return (
         not previous.mentions
         and words[:1] == ["both"]
@@ -577,6 +589,10 @@ def _both_said(clauses: Sequence[Clause], position: int) -> bool:
         and joined.link is not None
         and joined.link.role == "conjunction"
     )
+
+
+#: Verbs "both" may take before a relation word ("and both lie east of the carrots").
+_BOTH_VERBS = frozenset({"lie", "are", "sit", "stand", "run", "go", "grow", "of", "them"})
 
 
 #: Roles of the words that describe the field just named ("Navel oranges, ripe and being

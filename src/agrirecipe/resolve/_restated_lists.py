@@ -29,8 +29,10 @@ def drop_restated_lists(
     if odd or half == 0:
         return mentions
     earlier, later = mentions[:half], mentions[half:]
-    if not _restating_between(clauses, earlier[-1], later[0]):
+    restating = _restating_between(clauses, earlier[-1], later[0])
+    if restating is None:
         return mentions
+    colon = restating == ":"
     if any(m.refinements or m.count not in (None, 1) for m in mentions):
         return mentions
     if not all(_said_as_one(m) for m in later):
@@ -42,19 +44,25 @@ def drop_restated_lists(
     dropped: list[Mention] = []
     for a, b in pairs:
         first, second = mentions[a], mentions[b]
-        kept, other = (second, first) if _narrower(choices[b], choices[a]) else (first, second)
+        # (alike, the one said after a colon, where its measures are: "vines and cherries
+        # for the net: a 1.5 acre vineyard with 3 m rows, ...")
+        if _narrower(choices[b], choices[a]) or (colon and not _narrower(choices[a], choices[b])):
+            kept, other = second, first
+        else:
+            kept, other = first, second
         lend_and_drop(clauses, other, [kept])
         kept.count, kept.quantity, kept.implied_count = 1, None, False
         dropped.append(other)
     return [m for m in mentions if all(m is not d for d in dropped)]
 
 
-def _restating_between(clauses: Sequence[Clause], before: Mention, after: Mention) -> bool:
-    """Whether a restating word opens ``after`` ("..., so like 1 veg field"): after
+def _restating_between(clauses: Sequence[Clause], before: Mention, after: Mention) -> str | None:
+    """The restating word that opens ``after`` ("..., so like 1 veg field"): after
     ``before``'s last head, with nothing but ``after``'s own words and a filler ("like",
-    a comma) between it and ``after``'s head (not "a vine every 1.6 m or so, and ...")."""
+    a comma) between it and ``after``'s head (not "a vine every 1.6 m or so, and ..."); None
+    when there is none."""
     if not before.heads or not after.heads:
-        return False
+        return None
     start = max(h.end for h in before.heads)
     end = min(h.start for h in after.heads)
     items = [i for c in clauses for i in ([c.link] if c.link else []) + c.items]
@@ -69,8 +77,8 @@ def _restating_between(clauses: Sequence[Clause], before: Mention, after: Mentio
                 continue  # "or so", "and so"
             rest = between[at + len(words) :]
             if all(id(i) in own or i.norm in _FILLERS for i in rest):
-                return True
-    return False
+                return phrase
+    return None
 
 
 #: Words before "so" that make it no restating word ("1.6 m or so", "and so on").

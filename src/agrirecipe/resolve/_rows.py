@@ -105,11 +105,19 @@ def _named_again_in_order(
         # (after the colon or dash of the direction's own clause: "west to east: wheat,
         # ...", "from north to south - potatoes, corn, wheat")
         colon = index == position + 1 and link_norm(clause) in OPENING_MARKS
+        if not clause.named and named and link_norm(clause) in _SAID_OF_A_MEMBER:
+            # ("Stripes from top to bottom: Durum wheat that's heading, young Flint corn,
+            # then Savoy cabbages": words about the member before; an empty comma)
+            continue
         if not (listing(clause.link) or colon) or len(clause.named) != 1:
             break
         named.append(clause.named[0])
     fields = fields_of(named, members)
     return fields if len(fields) == len(named) else []
+
+
+#: Links of a clause that says more of the member before it, inside a row's list.
+_SAID_OF_A_MEMBER = frozenset({"that", "which", "who", ","})
 
 
 #: "from west to east": each field of the row lies on this side of the next one.
@@ -136,6 +144,10 @@ def directed_row(
     # the same fields, named again in the order they lie
     again = _named_again_in_order(clauses, position, members)
     if len(again) == len(fields) >= 2 and set(again) == set(fields):
+        fields = again
+    elif len(fields) < 2 and len(again) >= 3:
+        # "Stripes from top to bottom: Durum wheat that's heading, young Flint corn, then
+        # Savoy cabbages": the list after the direction, past words about its members
         fields = again
     if len(fields) < 2:
         # "going west to east: tomatoes first, then the jalapenos, then peppers";

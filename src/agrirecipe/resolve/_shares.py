@@ -1,11 +1,13 @@
 """Parts of a whole said in words (issue 8): "A 100-acre farm: half in wheat, ...",
 "All healthy apart from the onions, which have downy mildew", "one big orchard but 3
 blocks", "the northern half (10 ha) is orchard", "9 plants/m2 in one and 7 plants/m2 in
-the other". :func:`read_shares` writes each as the plainer words the reader takes ("50
-acres in wheat", "the onions, which have downy mildew; the rest healthy", "3 blocks in one
-big orchard", "the northern half is 10 ha of orchard", "one with 9 plants/m2 and the other
-with 7 plants/m2"), in one pass of one regular expression each, before the prompt is split
-into words.
+the other", "20 rows total at 75 x 45 cm: the first 10 rows Savoy, the other 10 rows Red
+Express" (the members' rows). :func:`read_shares` writes each as the plainer words the
+reader takes ("50 acres in wheat", "the onions, which have downy mildew; the rest
+healthy", "3 blocks in one big orchard", "the northern half is 10 ha of orchard", "one
+with 9 plants/m2 and the other with 7 plants/m2", "at 75 x 45 cm: the first 10 rows
+Savoy, ..."), in one pass of one regular expression each, before the prompt is split into
+words.
 """
 
 from __future__ import annotations
@@ -259,6 +261,23 @@ def _split_areas(text: str) -> str:
     return "".join(out) + text[position:]
 
 
+#: "20 rows total at 75 x 45 cm: the first 10 rows Savoy, the other 10 rows Red Express":
+#: a count of rows before a colon, and the rows of the members listed after it.
+_ROW_TOTAL = re.compile(
+    r"\b(?P<n>\d+)\s+(?i:rows)(?:\s+(?i:in total|total|altogether|in all))?"
+    r"(?P<rest>[^.;:!?]*):(?P<members>[^.;!?]*)"
+)
+_MEMBER_ROWS = re.compile(r"\b(\d+)\s+(?i:rows)\b")
+
+
+def _row_total(match: re.Match[str]) -> str:
+    """The heading's words without its count of rows when the members' rows add up to it."""
+    counts = [int(n) for n in _MEMBER_ROWS.findall(match.group("members"))]
+    if len(counts) < 2 or sum(counts) != int(match.group("n")):
+        return match.group(0)
+    return f"{match.group('rest').lstrip(' ,')}:{match.group('members')}"
+
+
 def read_shares(text: str) -> str:
     """``text`` with the parts of a whole said plainly (see the module's words)."""
     # "..., one big orchard but 3 blocks pls": three blocks, in the one orchard
@@ -281,6 +300,9 @@ def read_shares(text: str) -> str:
     text = _IN_ONE_IN_THE_OTHER.sub(r"one with \g<a> and the other with \g<b>", text)
     # "a 1 ha field split into four plots": each plot's share of the area
     text = _split_areas(text)
+    # "20 rows total at 75 x 45 cm: the first 10 rows Savoy, the other 10 rows ...": the
+    # members' rows, not one more field's
+    text = _ROW_TOTAL.sub(_row_total, text)
     # "A 100-acre farm: half in wheat, ...": a share of the farm's size, as an area
     # ("We farm 40 acres: 25 of them in dent corn and the rest in durum": 15 acres)
     return _the_rest(_farm_shares(text))

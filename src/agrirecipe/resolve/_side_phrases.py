@@ -81,8 +81,13 @@ _SIDE_FIELD = re.compile(
 
 # "vineyard", "a big field": a plot named alone, no crop, opening its sentence
 _A_PLOT_ALONE = re.compile(
-    r"^\s*(?:(?i:a|an|the|my|our|one|big|small|little|new|old|single)\s+)*"
-    r"(?i:vineyard|orchard|field|plot|block|garden|grove|plantation|patch|bed)\s*$"
+    # ("pic of the feild by the barn, tomatos on one side and peppers on the other": the
+    # plot a picture is of, placed by scenery)
+    r"^\s*(?:(?i:pic|photo|picture|shot|image|snap)\s+(?i:of)\s+)?"
+    r"(?:(?i:a|an|the|my|our|one|big|small|little|new|old|single)\s+)*"
+    r"(?i:vineyard|orchard|field|feild|plot|block|garden|grove|plantation|patch|bed)"
+    r"(?:\s+(?i:by|near|behind|beside|next to|past|across from)\s+(?i:the|our|my)\s+"
+    r"(?i:barn|house|farmhouse|yard|shed|road|lane|track|gate|river|pond|woods|church))?\s*$"
 )
 
 # "Two plantations divided by a wire fence, bananas on one side and oranges on the other":
@@ -115,7 +120,11 @@ def _between_sides(match: re.Match[str]) -> str:
         return f": {match.group('a')} and {match.group('b')}"
     if _A_PLOT_ALONE.search(sentence) and match.group("and"):
         # "vineyard w chardonay on one side & pinot noire on the other": its two halves
-        return f" with {match.group('a')} and {match.group('b')}"
+        # ("the field, carrots on one side and onions on the other": the same, listed)
+        said_with = re.search(
+            r"\b(?i:with|w)\b", match.group(0)[: match.start("a") - match.start()]
+        )
+        return f"{' with' if said_with else ':'} {match.group('a')} and {match.group('b')}"
     if re.search(r"\b(?i:between)\s*$", sentence):
         # "Our potato ground lies between the wheat on one side and the carrots on the
         # other": the two sides are what it lies between
