@@ -5,7 +5,9 @@ plot" of the crop a sentence is about; a plot that separates two others; a farm'
 shared out ("25 of them", "the rest"); "between X on one side and Y on the other"; a
 centre of scenery with fields around it; "the middle strip" of a listed row; the middle
 said after a row word; a row ordered past bracketed looks; past one of the two hedges a
-field lies between."""
+field lies between; measures after a label ("Tomato plots: 10 rows each, 1.5 m apart.")
+are the labelled plots; "Same again in a second cabbage plot" is the whole planting again;
+a list of row spacings each with its unit ("with 50 cm and 75 cm rows")."""
 
 from __future__ import annotations
 
@@ -223,3 +225,51 @@ def test_past_one_of_the_two_things_a_field_lies_between_is_past_the_field(
     relations = crop_relations(prompt)
     assert ("north_of", "Wheat", ("Strawberry",)) in relations
     assert ("south_of", "Onion", ("Strawberry",)) in relations
+
+
+def test_measures_after_a_label_are_the_labelled_plots() -> None:
+    # (g55-engineering-28: the tomato plots' row spacing went to the strawberry beds too,
+    # and the beds were refused)
+    scene = recipe(
+        "Strawberries sandwiched between two tomato plots. Tomato plots: 10 rows each, 1.5 m "
+        "apart. Strawberry plot: 12 beds, 1.5 m centres, 2 rows per bed."
+    )
+    strawberries, *tomatoes = scene.fields
+    assert [f.crop for f in tomatoes] == ["Tomato", "Tomato"]
+    for tomato in tomatoes:
+        assert tomato.row_count == 10
+        assert tomato.agronomy.row_spacing_m == pytest.approx(1.5)
+    assert strawberries.agronomy.rows_per_bed == 2
+    assert strawberries.agronomy.row_spacing_m == pytest.approx(1.5)
+    assert strawberries.agronomy.bed_row_spacing_m < 1.5
+
+
+def test_the_same_again_is_the_whole_planting() -> None:
+    # (g55-engineering-18: the second plot had only the first one's size)
+    first, second = recipe(
+        "Cabbage transplants at 75 x 45 cm, 12 rows of 40 m, leave a 3 m headland all round. "
+        "Same again in a second cabbage plot right beside the first one."
+    ).fields
+    for field in (first, second):
+        assert field.row_count == 12
+        assert field.row_length_m == pytest.approx(40)
+        assert field.agronomy.row_spacing_m == pytest.approx(0.75)
+        assert field.agronomy.in_row_spacing_m == pytest.approx(0.45)
+        assert field.geometry.headland_m == pytest.approx(3)
+    # (a size said again is still the size)
+    lettuce, cabbage = recipe("a 30 x 40 m lettuce plot and the same again of cabbage").fields
+    assert lettuce.geometry.size_m == cabbage.geometry.size_m == (30.0, 40.0)
+
+
+def test_a_list_of_row_spacings_each_with_its_unit() -> None:
+    # (g54-engineering-78 in part: "50 cm and 75 cm rows" gave both plots 75 cm)
+    narrow, wide = recipe("two corn plots with 50 cm and 75 cm rows").fields
+    assert (narrow.agronomy.row_spacing_m, wide.agronomy.row_spacing_m) == (0.5, 0.75)
+    # (two measures of one field are no list: "at 75 cm and 9 plants/m2")
+    _wheat, maize = recipe(
+        "wheat, 0.5 ha, 12.5 cm drill rows, 150 plants per m2, rows E-W; right next to it 0.5 "
+        "ha of maize at 75 cm and 9 plants/m2, rows in the same direction"
+    ).fields
+    assert maize.agronomy.row_spacing_m == pytest.approx(0.75)
+    spacing = maize.agronomy.row_spacing_m * maize.agronomy.in_row_spacing_m
+    assert 10_000 / spacing == pytest.approx(90_000, rel=0.01)  # plants per hectare

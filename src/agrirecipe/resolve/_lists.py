@@ -34,8 +34,10 @@ def _pattern() -> re.Pattern[str]:
         re.escape(str(w)) for w in sorted(data["leads"], key=lambda w: len(str(w)), reverse=True)
     )
     units = _units()
+    # ("two corn plots with 50 cm and 75 cm rows": each value may say the length unit)
+    each = rf"{_NUMBER}(?:\s*(?:cm|mm|m|in|ft)\b)?"
     return re.compile(
-        rf"\b(?P<lead>{leads})\s+(?P<values>{_NUMBER}(?:\s*,\s*{_NUMBER})*,?\s+(?:and|or|&)\s+"
+        rf"\b(?P<lead>{leads})\s+(?P<values>{each}(?:\s*,\s*{each})*,?\s+(?:and|or|&)\s+"
         rf"{_NUMBER})\s*(?P<unit>{units})(?![\w²])",
         re.IGNORECASE,
     )
@@ -128,6 +130,10 @@ def spread_value_lists(text: str) -> str:
     """``text`` with each list of values of one measure spread into one member per value."""
 
     def spread(match: re.Match[str]) -> str:
+        # (a unit said with a value is the list's own: not "at 75 cm and 9 plants/m2")
+        said = re.findall(r"\b(?:cm|mm|m|in|ft)\b", match.group("values").lower())
+        if any(not match.group("unit").lower().startswith(unit) for unit in said):
+            return match.group(0)
         members = _members(match, _leads()[match.group("lead").lower()])
         return match.group(0) if members is None else ", " + members
 

@@ -47,6 +47,7 @@ from agrirecipe.resolve._measures import (
     fields_of_the_list_headed,
     heads_a_list,
     in_a_sentence_of_measures,
+    labelled_by,
     one_bed_each,
     opens_with_rows,
     parallel_fields,
@@ -340,7 +341,8 @@ def attach_loose(clauses: Sequence[Clause], mentions: Sequence[Mention]) -> list
             if listed_count := fields_of_the_list_headed(clauses, position):
                 # ("three 1.5 m beds: lettuce, onions and carrots": a bed each)
                 geometry = one_bed_each(geometry, listed_count)
-            owner = bracketed_by(clauses, position)
+            # ("Tomato plots: 10 rows each, 1.5 m apart.": each of the plots the label names)
+            owner = bracketed_by(clauses, position) or labelled_by(clauses, position)
             (owner.items if owner is not None else scene).extend(geometry)
             if not any(i.role == "all" for i in scene):
                 scene.extend(i for i in clause.items if i.role == "all")

@@ -17,7 +17,7 @@ from dataclasses import replace
 
 from agrirecipe.resolve._geometry import geometry_nouns
 from agrirecipe.resolve._lexicon import Item
-from agrirecipe.resolve._links import listing
+from agrirecipe.resolve._links import link_norm, listing
 from agrirecipe.resolve._member_refs import said_per_plot
 from agrirecipe.resolve._mentions import Clause, Mention
 from agrirecipe.resolve._shares import HOLDINGS
@@ -32,6 +32,7 @@ __all__ = [
     "fields_of_the_list_headed",
     "heads_a_list",
     "in_a_sentence_of_measures",
+    "labelled_by",
     "one_bed_each",
     "opens_with_rows",
     "parallel_fields",
@@ -399,6 +400,26 @@ def bracketed_by(clauses: Sequence[Clause], position: int) -> Mention | None:
         if clause.link.norm == "(":
             before = clauses[index - 1].mentions
             return before[-1] if before else None
+    return None
+
+
+def labelled_by(clauses: Sequence[Clause], position: int) -> Mention | None:
+    """The field a sentence opens as a label ("Tomato plots: 10 rows each, 1.5 m apart.")
+    when clause ``position`` is one of the measures after its colon, and the sentence
+    names no field after them (else the label heads that list); None otherwise."""
+    for clause in clauses[position:]:
+        if clause.index > position and link_norm(clause) in (".", "!", "?", ";"):
+            break
+        if clause.mentions:
+            return None
+    for index in range(position, 0, -1):
+        clause = clauses[index]
+        if clause.mentions or clause.link is None or clause.link.norm not in (",", ":"):
+            return None
+        if clause.link.norm == ":":
+            label = clauses[index - 1]
+            opens = label.link is None or label.link.norm in (".", "!", "?", ";")
+            return label.mentions[-1] if opens and len(label.mentions) == 1 else None
     return None
 
 

@@ -413,7 +413,8 @@ class PromptReader(FieldReading):
         intents = [self._field_intent(f, hemisphere, scene_season) for f in fields]
         for index in range(1, len(intents)):  # "... & same size of romaine"
             if intents[index].size is None and any(
-                i.role == "same_size" for i in fields[index].items
+                i.role == "same_size" or (i.role == "same_spacing" and "again" in i.norm)
+                for i in fields[index].items
             ):
                 intents[index] = intents[index].model_copy(update={"size": intents[index - 1].size})
             same = [i for i in fields[index].items if i.role == "same_spacing"]

@@ -36,7 +36,7 @@ def _same_keys(word: Item) -> tuple[str, ...]:
     )
     # "6 beds of 200-ft rows, and the same layout of Sonata": the whole planting again
     # ("the Pinot Noir block ... is planted exactly the same way": likewise)
-    if any(w in norm for w in ("layout", "spec", "setup", "set up")) or (
+    if any(w in norm for w in ("layout", "spec", "setup", "set up", "again")) or (
         "way" in norm and not direction
     ):
         return (
