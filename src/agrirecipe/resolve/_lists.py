@@ -19,6 +19,8 @@ from agrirecipe.resolve._lexicon import DATA_DIR
 __all__ = ["fill_gapped_counts", "spread_value_lists"]
 
 _NUMBER = r"\d+(?:[.,]\d+)?"
+#: Length units a value of a list may be said with ("50 cm and 75 cm rows").
+_LENGTH_UNIT = r"(?:cm|mm|m|in|ft)\b"
 
 
 @functools.cache
@@ -35,7 +37,7 @@ def _pattern() -> re.Pattern[str]:
     )
     units = _units()
     # ("two corn plots with 50 cm and 75 cm rows": each value may say the length unit)
-    each = rf"{_NUMBER}(?:\s*(?:cm|mm|m|in|ft)\b)?"
+    each = rf"{_NUMBER}(?:\s*{_LENGTH_UNIT})?"
     return re.compile(
         rf"\b(?P<lead>{leads})\s+(?P<values>{each}(?:\s*,\s*{each})*,?\s+(?:and|or|&)\s+"
         rf"{_NUMBER})\s*(?P<unit>{units})(?![\w²])",
@@ -131,7 +133,7 @@ def spread_value_lists(text: str) -> str:
 
     def spread(match: re.Match[str]) -> str:
         # (a unit said with a value is the list's own: not "at 75 cm and 9 plants/m2")
-        said = re.findall(r"\b(?:cm|mm|m|in|ft)\b", match.group("values").lower())
+        said = re.findall(rf"\b{_LENGTH_UNIT}", match.group("values").lower())
         if any(not match.group("unit").lower().startswith(unit) for unit in said):
             return match.group(0)
         members = _members(match, _leads()[match.group("lead").lower()])
